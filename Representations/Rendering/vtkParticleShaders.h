@@ -1,0 +1,28 @@
+/**
+ * @file   vtkParticleShaders.h
+ * @brief  access to the GLSL sources of Shaders/, with //PR::Include resolved
+ *
+ * Every .glsl file of Shaders/ is embedded at build time (vtk_encode_string). Shared pieces are
+ * included, never pasted: a line `//PR::Include Name` is replaced by the text of Shaders/Name.glsl
+ * (recursively, each file at most once per shader).
+ */
+#ifndef vtkParticleShaders_h
+#define vtkParticleShaders_h
+
+#include <string>
+
+namespace vtkParticleShaders
+{
+/**
+ * The source of Shaders/<name>.glsl with its includes resolved. An unknown name or include is a
+ * programming error: it is reported on stderr and yields a source that fails to compile.
+ */
+std::string Get(const std::string& name);
+
+/**
+ * Resolve the //PR::Include lines of an arbitrary source.
+ */
+std::string ResolveIncludes(const std::string& source);
+}
+
+#endif

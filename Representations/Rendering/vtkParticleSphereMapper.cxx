@@ -1,0 +1,610 @@
+#include "vtkParticleSphereMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkLightingMapPass.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkParticleShaders.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkTransform.h"
+#include "vtkShaderProgram.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+vtkStandardNewMacro(vtkParticleSphereMapper);
+
+//------------------------------------------------------------------------------
+class vtkParticleSphereMapper::vtkInternals
+{
+public:
+  // Sanitised per-particle data, rebuilt when the input or the radius settings change.
+  vtkNew<vtkFloatArray> Radii;     // MC radius, 0 for skipped particles
+  vtkNew<vtkFloatArray> Positions; // float positions, skipped ones moved to a valid point
+  double CenterBounds[6] = { 0, -1, 0, -1, 0, -1 };
+  double MaxRadius = 0.0;
+  vtkIdType NumberOfPoints = 0;
+  vtkMTimeType PrepareTime = 0;
+  vtkPolyData* PreparedInput = nullptr;
+  // the last warning given, so that a warning is said once per input change, not every frame
+  std::string LastWarning;
+  bool AttributesWithDivisor = false;
+};
+
+//------------------------------------------------------------------------------
+vtkParticleSphereMapper::vtkParticleSphereMapper()
+  : Internals(new vtkInternals)
+{
+  this->Internals->Radii->SetName("ParticleRadius");
+  this->Internals->Positions->SetNumberOfComponents(3);
+}
+
+//------------------------------------------------------------------------------
+vtkParticleSphereMapper::~vtkParticleSphereMapper()
+{
+  this->SetRadiusArrayName(nullptr);
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+struct ParticleSummary
+{
+  double Bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double MaxRadius = 0.0;
+  vtkIdType BadRadius = 0;
+  vtkIdType BadPosition = 0;
+  vtkIdType FirstValid = -1;
+};
+}
+
+vtkIdType vtkParticleSphereMapper::PrepareParticles()
+{
+  vtkPolyData* input = this->GetInput();
+  vtkInternals& internals = *this->Internals;
+  vtkIdType numPts = (input && input->GetPoints()) ? input->GetNumberOfPoints() : 0;
+
+  vtkMTimeType inputTime = input ? input->GetMTime() : 0;
+  if (internals.PreparedInput == input && internals.PrepareTime > inputTime &&
+    internals.PrepareTime > this->GetMTime() && internals.NumberOfPoints == numPts)
+  {
+    return numPts;
+  }
+  internals.PreparedInput = input;
+  internals.NumberOfPoints = numPts;
+  internals.PrepareTime = 0;
+
+  std::ostringstream warnings;
+  if (numPts == 0)
+  {
+    warnings << "The input has no points: nothing to draw.";
+    internals.Radii->SetNumberOfTuples(0);
+    internals.Positions->SetNumberOfTuples(0);
+    internals.MaxRadius = 0.0;
+    vtkMath::UninitializeBounds(internals.CenterBounds);
+    this->NumberOfSkippedParticles = 0;
+  }
+  else
+  {
+    // Which radius source?
+    vtkDataArray* radiusArray = nullptr;
+    if (this->RadiusArrayName && this->RadiusArrayName[0])
+    {
+      vtkAbstractArray* abstractArray =
+        input->GetPointData()->GetAbstractArray(this->RadiusArrayName);
+      if (!abstractArray)
+      {
+        warnings << "Radius array '" << this->RadiusArrayName
+                 << "' is not a point array of the input: using the constant radius "
+                 << this->Radius << ". ";
+      }
+      else if (!(radiusArray = vtkDataArray::SafeDownCast(abstractArray)))
+      {
+        warnings << "Radius array '" << this->RadiusArrayName << "' is not numeric ("
+                 << abstractArray->GetClassName() << "): using the constant radius "
+                 << this->Radius << ". ";
+      }
+      else if (radiusArray->GetNumberOfComponents() != 1)
+      {
+        warnings << "Radius array '" << this->RadiusArrayName << "' has "
+                 << radiusArray->GetNumberOfComponents()
+                 << " components, a radius needs exactly 1: using the constant radius "
+                 << this->Radius << ". ";
+        radiusArray = nullptr;
+      }
+    }
+
+    vtkDataArray* points = input->GetPoints()->GetData();
+    internals.Radii->SetNumberOfTuples(numPts);
+    internals.Positions->SetNumberOfTuples(numPts);
+    float* radii = internals.Radii->GetPointer(0);
+    float* positions = internals.Positions->GetPointer(0);
+    const double constantRadius = this->Radius;
+
+    vtkSMPThreadLocal<ParticleSummary> local;
+    vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
+      ParticleSummary& s = local.Local();
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetTuple(i, p);
+        const double r = radiusArray ? radiusArray->GetComponent(i, 0) : constantRadius;
+        const bool goodPosition = std::isfinite(p[0]) && std::isfinite(p[1]) &&
+          std::isfinite(p[2]) && std::abs(p[0]) < 1e37 && std::abs(p[1]) < 1e37 &&
+          std::abs(p[2]) < 1e37;
+        const bool goodRadius = std::isfinite(r) && r > 0.0 && r < 1e37;
+        if (!goodPosition)
+        {
+          ++s.BadPosition;
+        }
+        else if (!goodRadius)
+        {
+          ++s.BadRadius;
+        }
+        if (goodPosition && goodRadius)
+        {
+          radii[i] = static_cast<float>(r);
+          for (int k = 0; k < 3; ++k)
+          {
+            positions[3 * i + k] = static_cast<float>(p[k]);
+            s.Bounds[2 * k] = std::min(s.Bounds[2 * k], p[k]);
+            s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
+          }
+          s.MaxRadius = std::max(s.MaxRadius, r);
+          if (s.FirstValid < 0 || i < s.FirstValid)
+          {
+            s.FirstValid = i;
+          }
+        }
+        else
+        {
+          radii[i] = 0.0f;
+          positions[3 * i] = positions[3 * i + 1] = positions[3 * i + 2] =
+            std::numeric_limits<float>::quiet_NaN(); // placeholder, replaced below
+        }
+      }
+    });
+
+    ParticleSummary total;
+    for (const ParticleSummary& s : local)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        total.Bounds[2 * k] = std::min(total.Bounds[2 * k], s.Bounds[2 * k]);
+        total.Bounds[2 * k + 1] = std::max(total.Bounds[2 * k + 1], s.Bounds[2 * k + 1]);
+      }
+      total.MaxRadius = std::max(total.MaxRadius, s.MaxRadius);
+      total.BadRadius += s.BadRadius;
+      total.BadPosition += s.BadPosition;
+      if (s.FirstValid >= 0 && (total.FirstValid < 0 || s.FirstValid < total.FirstValid))
+      {
+        total.FirstValid = s.FirstValid;
+      }
+    }
+
+    // Skipped particles get the position of a valid one (radius 0 keeps them invisible), so that
+    // no NaN reaches the GPU and the VBO's automatic shift/scale sees only real coordinates.
+    const vtkIdType skipped = total.BadRadius + total.BadPosition;
+    if (skipped > 0)
+    {
+      float fill[3] = { 0.0f, 0.0f, 0.0f };
+      if (total.FirstValid >= 0)
+      {
+        std::copy(positions + 3 * total.FirstValid, positions + 3 * total.FirstValid + 3, fill);
+      }
+      vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          if (radii[i] == 0.0f)
+          {
+            std::copy(fill, fill + 3, positions + 3 * i);
+          }
+        }
+      });
+    }
+    if (total.BadPosition > 0)
+    {
+      warnings << total.BadPosition << " of " << numPts
+               << " particles have a NaN or infinite position and are not drawn. ";
+    }
+    if (total.BadRadius > 0)
+    {
+      warnings << total.BadRadius << " of " << numPts
+               << " particles have a zero, negative, NaN or infinite radius and are not drawn. ";
+    }
+    this->NumberOfSkippedParticles = skipped;
+    internals.MaxRadius = total.MaxRadius;
+    if (total.FirstValid >= 0)
+    {
+      std::copy(total.Bounds, total.Bounds + 6, internals.CenterBounds);
+    }
+    else
+    {
+      vtkMath::UninitializeBounds(internals.CenterBounds);
+    }
+  }
+
+  const std::string warning = warnings.str();
+  if (!warning.empty() && warning != internals.LastWarning)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  internals.LastWarning = warning;
+  // a real modification stamp, later than the input's and the mapper's
+  vtkTimeStamp stamp;
+  stamp.Modified();
+  internals.PrepareTime = stamp.GetMTime();
+  return numPts;
+}
+
+//------------------------------------------------------------------------------
+double* vtkParticleSphereMapper::GetBounds()
+{
+  vtkPolyData* input = this->GetInput();
+  if (!input)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  if (!this->Static)
+  {
+    this->Update();
+  }
+  this->PrepareParticles();
+  const vtkInternals& internals = *this->Internals;
+  if (!vtkMath::AreBoundsInitialized(internals.CenterBounds))
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  const double grow = internals.MaxRadius * std::abs(this->RadiusScaleFactor);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Bounds[2 * k] = internals.CenterBounds[2 * k] - grow;
+    this->Bounds[2 * k + 1] = internals.CenterBounds[2 * k + 1] + grow;
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+vtkFloatArray* vtkParticleSphereMapper::GetParticleRadii()
+{
+  this->PrepareParticles();
+  return this->Internals->Radii;
+}
+
+//------------------------------------------------------------------------------
+double vtkParticleSphereMapper::GetRadiusScaleVC(vtkActor* actor) const
+{
+  double scale = 1.0;
+  if (actor && !actor->GetIsIdentity())
+  {
+    const double det = actor->GetMatrix()->Determinant();
+    scale = std::cbrt(std::abs(det));
+  }
+  return this->RadiusScaleFactor * scale;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+{
+  vtkPolyData* input = this->GetInput();
+  if (!input)
+  {
+    vtkErrorMacro(<< "No input.");
+    return;
+  }
+  if (!this->Static && this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (this->PrepareParticles() == 0)
+  {
+    return; // warned once in PrepareParticles
+  }
+  this->Superclass::RenderPiece(ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::GetShaderTemplate(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer*, vtkActor*)
+{
+  shaders[vtkShader::Vertex]->SetSource(vtkParticleShaders::Get("ParticleSphereVS"));
+  shaders[vtkShader::Fragment]->SetSource(vtkParticleShaders::Get("ParticleSphereFS"));
+  shaders[vtkShader::Geometry]->SetSource("");
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+
+  // Ids for the hardware selector: one instance per particle, so the particle index is
+  // gl_InstanceID (not gl_VertexID / gl_PrimitiveID as for polygons).
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkShaderProgram::Substitute(
+    vs, "vertexIDVSOutput = gl_VertexID;", "vertexIDVSOutput = gl_InstanceID;", true);
+  vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "particleIdVSOutput", true);
+  // Includes added by the replacements and render passes.
+  shaders[vtkShader::Vertex]->SetSource(vtkParticleShaders::ResolveIncludes(vs));
+  shaders[vtkShader::Fragment]->SetSource(vtkParticleShaders::ResolveIncludes(fs));
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderPositionVC(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+  // The templates compute the view-coordinate positions themselves.
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderNormal(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+  // The normal is the ray-cast sphere normal, computed in the fragment template.
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderCoincidentOffset(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+  // Ray-cast spheres write exact depths; coincident-topology offsets do not apply.
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderDepth(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+  // gl_FragDepth is always written by the fragment template.
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderTCoord(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+  // Particles have no texture coordinates.
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderEdges(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+  // Particles have no edges.
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+
+  vtkInformation* info = actor->GetPropertyKeys();
+  if (info && info->Has(vtkLightingMapPass::RENDER_NORMALS()))
+  {
+    vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl",
+      "  vec3 n = (normalVCVSOutput + 1.0) * 0.5;\n"
+      "  gl_FragData[0] = vec4(n.x, n.y, n.z, 1.0);");
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    return;
+  }
+
+  int complexity = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity;
+  const int count = this->PrimitiveInfo[this->LastBoundBO].LastLightCount;
+  if (count == 0)
+  {
+    complexity = 0;
+  }
+
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
+    std::string(static_cast<vtkOpenGLRenderer*>(ren)->GetLightingUniforms()) +
+      "\n//PR::Include Lighting\n");
+
+  std::ostringstream impl;
+  if (info && info->Has(vtkLightingMapPass::RENDER_LUMINANCE()))
+  {
+    impl << "  diffuseColor = vec3(1.0);\n  specularColor = vec3(1.0);\n";
+  }
+  if (complexity == 0)
+  {
+    impl << "  vec3 prSurfaceColor = ambientColor + diffuseColor;\n";
+  }
+  else
+  {
+    impl << "  vec3 diffuse = vec3(0.0);\n"
+            "  vec3 specular = vec3(0.0);\n";
+    for (int i = 0; i < count; ++i)
+    {
+      if (complexity == 1)
+      {
+        impl << "  prHeadlight(normalVCVSOutput, lightColor" << i
+             << ", specularPower, diffuse, specular);\n";
+      }
+      else if (complexity == 2)
+      {
+        impl << "  prSceneLight(normalVCVSOutput, prViewDirVC, vertexVC.xyz, lightColor" << i
+             << ", lightDirectionVC" << i
+             << ", 0, vec3(0.0), vec3(1.0, 0.0, 0.0), 180.0, 1.0, specularPower, diffuse, "
+                "specular);\n";
+      }
+      else
+      {
+        impl << "  prSceneLight(normalVCVSOutput, prViewDirVC, vertexVC.xyz, lightColor" << i
+             << ", lightDirectionVC" << i << ", lightPositional" << i << ", lightPositionVC" << i
+             << ", lightAttenuation" << i << ", lightConeAngle" << i << ", lightExponent" << i
+             << ", specularPower, diffuse, specular);\n";
+      }
+    }
+    impl << "  vec3 prSurfaceColor = ambientColor + diffuse * diffuseColor + specular * "
+            "specularColor;\n";
+  }
+  impl << "  float prAmbientOcclusion = 1.0;\n"
+          "  vec3 prAmbientLight = vec3(0.0);\n"
+          "  //PR::AmbientOcclusion::Impl\n"
+          "  gl_FragData[0] = vec4(prAmbientOcclusion * prSurfaceColor + prAmbientLight, "
+          "opacity);\n"
+          "  //PR::Shading::Impl\n"
+          "  //VTK::Light::Impl\n";
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", impl.str(), false);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetCameraShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  // MCVCMatrix with the VBO shift/scale folded in, cameraParallel, ...
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, actor);
+
+  vtkShaderProgram* program = cellBO.Program;
+  vtkOpenGLCamera* cam = static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera());
+  vtkMatrix4x4* wcdc;
+  vtkMatrix4x4* wcvc;
+  vtkMatrix3x3* norms;
+  vtkMatrix4x4* vcdc;
+  cam->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc);
+  program->SetUniformMatrix("VCDCMatrix", vcdc);
+  vtkNew<vtkMatrix4x4> dcvc;
+  vtkMatrix4x4::Invert(vcdc, dcvc);
+  program->SetUniformMatrix("DCVCMatrix", dcvc);
+  program->SetUniformi("cameraParallel", cam->GetParallelProjection());
+  program->SetUniformf("radiusScaleVC", static_cast<float>(this->GetRadiusScaleVC(actor)));
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  // Per-instance attributes (divisor 1). The superclass adds attributes only when its index
+  // buffer is non-empty, which ours never is: the draw call is instanced, not indexed.
+  if (this->VBOs->GetMTime() > cellBO.AttributeUpdateTime ||
+    cellBO.ShaderSourceTime > cellBO.AttributeUpdateTime ||
+    cellBO.VAO->GetMTime() > cellBO.AttributeUpdateTime)
+  {
+    cellBO.VAO->Bind();
+    for (const char* name : { "vertexMC", "radiusMC", "scalarColor" })
+    {
+      vtkOpenGLVertexBufferObject* vbo = this->VBOs->GetVBO(name);
+      if (vbo && cellBO.Program->IsAttributeUsed(name))
+      {
+        if (!cellBO.VAO->AddAttributeArrayWithDivisor(cellBO.Program, vbo, name, 0,
+              vbo->GetStride(), vbo->GetDataType(), vbo->GetNumberOfComponents(),
+              vbo->GetDataType() == VTK_UNSIGNED_CHAR, 1, false))
+        {
+          vtkErrorMacro(<< "Error setting '" << name << "' in the shader VAO.");
+        }
+      }
+    }
+    cellBO.AttributeUpdateTime.Modified();
+  }
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  return this->Superclass::GetNeedToRebuildBufferObjects(ren, act) ||
+    this->VBOBuildTime < this->Internals->PrepareTime;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType numPts = this->PrepareParticles();
+
+  // Scalars through the lookup table, as every vtkMapper does (sets this->Colors).
+  this->MapScalars(1.0);
+  vtkUnsignedCharArray* colors = this->Colors;
+  if (colors && colors->GetNumberOfTuples() != numPts)
+  {
+    colors = nullptr; // cell scalars do not colour particles
+  }
+
+  this->VBOs->CacheDataArray("vertexMC", internals.Positions, ren, VTK_FLOAT);
+  vtkOpenGLVertexBufferObject* posVBO = this->VBOs->GetVBO("vertexMC");
+  if (posVBO)
+  {
+    posVBO->SetCoordShiftAndScaleMethod(
+      static_cast<vtkOpenGLVertexBufferObject::ShiftScaleMethod>(this->ShiftScaleMethod));
+    posVBO->SetProp3D(act);
+    posVBO->SetCamera(ren->GetActiveCamera());
+  }
+  this->VBOs->CacheDataArray("radiusMC", internals.Radii, ren, VTK_FLOAT);
+  this->VBOs->CacheDataArray("scalarColor", colors, ren, VTK_UNSIGNED_CHAR);
+  this->VBOs->BuildAllVBOs(ren);
+
+  posVBO = this->VBOs->GetVBO("vertexMC");
+  this->VBOShiftScale->Identity();
+  if (posVBO && posVBO->GetCoordShiftAndScaleEnabled())
+  {
+    std::vector<double> const& shift = posVBO->GetShift();
+    std::vector<double> const& scale = posVBO->GetScale();
+    this->VBOInverseTransform->Identity();
+    this->VBOInverseTransform->Translate(shift[0], shift[1], shift[2]);
+    this->VBOInverseTransform->Scale(1.0 / scale[0], 1.0 / scale[1], 1.0 / scale[2]);
+    this->VBOInverseTransform->GetTranspose(this->VBOShiftScale);
+  }
+
+  // No index buffers: one instanced draw of all particles.
+  for (int i = PrimitiveStart; i < PrimitiveEnd; ++i)
+  {
+    this->Primitives[i].IBO->IndexCount = 0;
+  }
+  this->VBOBuildTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
+{
+  const vtkIdType numPts = this->VBOs->GetNumberOfTuples("vertexMC");
+  if (numPts <= 0)
+  {
+    return;
+  }
+  // the triangle helper: the superclass lights triangles whatever the normals are
+  vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTris];
+  this->UpdateShaders(cellBO, ren, actor);
+  if (!cellBO.Program)
+  {
+    return;
+  }
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(numPts));
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RadiusArrayName: " << (this->RadiusArrayName ? this->RadiusArrayName : "(none)")
+     << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
+  os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
+}

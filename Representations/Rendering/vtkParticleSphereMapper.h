@@ -1,0 +1,174 @@
+/**
+ * @class   vtkParticleSphereMapper
+ * @brief   draws every point of a vtkPolyData as an exactly ray-cast, lit sphere
+ *
+ * vtkParticleSphereMapper is the sphere imposter core of ParticleRendering. Every point of the
+ * input (cells are ignored) becomes a sphere whose
+ * - radius is taken from a one-component point array (RadiusArrayName, any numeric type) or is
+ *   the constant Radius, multiplied by RadiusScaleFactor and by the actor's scale;
+ * - colour comes from the scalars through the lookup table (the usual vtkMapper colouring:
+ *   ScalarVisibility, ScalarMode, ColorByArrayComponent, ...) or from the actor's property;
+ * - shading is VTK's Phong model with the renderer's lights (headlight, light kit, positional
+ *   and spot lights) and the property's ambient/diffuse/specular material, see
+ *   Shaders/Lighting.glsl. For parallel projection the view vector is the true (0,0,1); VTK's
+ *   polygon shader uses the perspective formula in both cases.
+ *
+ * Geometry: one camera-facing quad per particle, drawn instanced (a 4-vertex triangle strip per
+ * instance, per-instance centre/radius/colour attributes, no geometry shader). In perspective the
+ * quad is the square around the sphere's silhouette circle, so the projected quad covers the
+ * projected sphere exactly also far off-axis (Shaders/SphereImposter.glsl). The fragment shader
+ * intersects the fragment's ray with the sphere in coordinates relative to the sphere centre
+ * (Shaders/RaySphere.glsl), which stays exact in single precision with the camera 1e7 radii away,
+ * and writes the true depth of the hit to gl_FragDepth, so spheres intersect each other and any
+ * other VTK geometry correctly.
+ *
+ * Visible surface rule: the first intersection in front of the eye and between the near and far
+ * planes. With the eye inside a sphere (or the near plane cutting one) the inner side of its back
+ * surface is shown, lit with the normal facing the viewer; nothing of a sphere is drawn when both
+ * intersections are clipped.
+ *
+ * Bad input never crashes and never draws garbage; each case gets one warning per input change:
+ * - no points: nothing is drawn;
+ * - RadiusArrayName names a missing array, a non-numeric array or an array with more than one
+ *   component: the constant Radius is used for every particle;
+ * - radius <= 0, NaN or Inf, or a position with NaN/Inf: that particle is skipped;
+ * - the fragment stage discards any NaN/Inf colour, so no NaN or Inf reaches the framebuffer.
+ *
+ * Hooks for render passes and subclasses (see the two shader templates): the vertex stage has
+ * //PR::Sphere::Dec and //PR::Sphere::Impl (per-sphere work, e.g. per-sphere AO fetches); the
+ * fragment stage has //PR::Sphere::Dec, //PR::AmbientOcclusion::Impl (set prAmbientOcclusion and
+ * prAmbientLight) and //PR::Shading::Impl (replace the opaque result, e.g. with a transparent
+ * emission-absorption model). vtkOpenGLRenderPass::PreReplaceShaderValues /
+ * PostReplaceShaderValues see these tags like VTK's own.
+ *
+ * Picking: the hardware selector's point and cell ids are the particle (point) index.
+ * Clipping planes clip whole particles by their centre.
+ *
+ * @sa vtkOpenGLSphereMapper vtkParticleReferenceRenderer
+ */
+#ifndef vtkParticleSphereMapper_h
+#define vtkParticleSphereMapper_h
+
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkParticleRenderingModule.h" // for export macro
+
+#include <string> // for std::string
+
+class vtkFloatArray;
+
+class VTKPARTICLERENDERING_EXPORT vtkParticleSphereMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkParticleSphereMapper* New();
+  vtkTypeMacro(vtkParticleSphereMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Name of a one-component numeric point array holding the particle radii. When empty (the
+   * default), or when the array is missing or unusable (a warning says which), every particle
+   * has the constant Radius.
+   */
+  vtkSetStringMacro(RadiusArrayName);
+  vtkGetStringMacro(RadiusArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Constant radius used when no radius array is in use. Default 0.5.
+   */
+  vtkSetMacro(Radius, double);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Factor applied to every radius (array or constant). Default 1. Changing it does not re-upload
+   * the particles.
+   */
+  vtkSetMacro(RadiusScaleFactor, double);
+  vtkGetMacro(RadiusScaleFactor, double);
+  ///@}
+
+  /**
+   * Number of particles skipped at the last upload because of an invalid radius or position.
+   */
+  vtkGetMacro(NumberOfSkippedParticles, vtkIdType);
+
+  /**
+   * Bounds of the spheres (centres grown by the largest radius), ignoring skipped particles.
+   */
+  using Superclass::GetBounds;
+  double* GetBounds() override;
+
+  /**
+   * Spheres are drawn for every point, whatever the cells are.
+   */
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * The radius of every particle as used for drawing (before RadiusScaleFactor and the actor's
+   * scale), 0 for skipped particles. Valid after the mapper has prepared its input (a render or
+   * GetBounds()). Used by the reference renderer and by passes that need the radii.
+   */
+  vtkFloatArray* GetParticleRadii();
+
+  /**
+   * The radius scale from model to view coordinates applied on the GPU: RadiusScaleFactor times
+   * the actor's scale (the cube root of the determinant of its matrix).
+   */
+  double GetRadiusScaleVC(vtkActor* actor) const;
+
+protected:
+  vtkParticleSphereMapper();
+  ~vtkParticleSphereMapper() override;
+
+  // shader assembly
+  void GetShaderTemplate(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderPositionVC(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderNormal(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderLight(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderCoincidentOffset(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderDepth(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderTCoord(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderEdges(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+
+  // uniforms and attributes
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  // buffers and drawing
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Validate the input: radii, skipped particles, bounds, warnings. Cached on the input's and the
+   * mapper's modification times. Returns the number of points of the input.
+   */
+  vtkIdType PrepareParticles();
+
+  char* RadiusArrayName = nullptr;
+  double Radius = 0.5;
+  double RadiusScaleFactor = 1.0;
+  vtkIdType NumberOfSkippedParticles = 0;
+
+private:
+  vtkParticleSphereMapper(const vtkParticleSphereMapper&) = delete;
+  void operator=(const vtkParticleSphereMapper&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif

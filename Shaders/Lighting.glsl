@@ -1,0 +1,46 @@
+//=========================================================================
+// Lighting.glsl -- VTK's Phong light model (vtkOpenGLPolyDataMapper, VTK 9.2)
+// as functions. The light uniforms are the ones vtkOpenGLRenderer sets
+// (lightColorN = diffuse colour * intensity, lightDirectionVCN = direction the
+// light travels, in view coordinates). vtkParticleReferenceRenderer evaluates
+// the same formulas in double precision.
+//
+// n: unit surface normal (VC); v: unit vector from the surface point towards
+// the eye (VC); p: surface point (VC).
+//=========================================================================
+
+// Light complexity 1: a single headlight, L = V = H = +z.
+void prHeadlight(vec3 n, vec3 lightColor, float specularPower, inout vec3 diffuse,
+  inout vec3 specular)
+{
+  float df = max(0.000001, n.z);
+  diffuse += df * lightColor;
+  specular += pow(df, specularPower) * lightColor;
+}
+
+// Light complexities 2 (directional) and 3 (positional and spot lights).
+void prSceneLight(vec3 n, vec3 v, vec3 p, vec3 lightColor, vec3 lightDirectionVC,
+  int positional, vec3 positionVC, vec3 attenuationCoefficients, float coneAngle,
+  float exponent, float specularPower, inout vec3 diffuse, inout vec3 specular)
+{
+  float attenuation = 1.0;
+  vec3 l = lightDirectionVC;
+  if (positional != 0)
+  {
+    l = p - positionVC;
+    float distanceVC = length(l);
+    l = l / distanceVC;
+    attenuation = 1.0 /
+      (attenuationCoefficients.x + attenuationCoefficients.y * distanceVC +
+        attenuationCoefficients.z * distanceVC * distanceVC);
+    if (coneAngle < 90.0)
+    {
+      float coneDot = dot(l, lightDirectionVC);
+      attenuation = coneDot >= cos(radians(coneAngle)) ? attenuation * pow(coneDot, exponent) : 0.0;
+    }
+  }
+  float df = max(0.0, attenuation * dot(n, -l));
+  diffuse += df * lightColor;
+  float sf = sign(df) * attenuation * pow(max(0.0, dot(reflect(l, n), v)), specularPower);
+  specular += sf * lightColor;
+}

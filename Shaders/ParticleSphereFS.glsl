@@ -1,0 +1,99 @@
+//VTK::System::Dec
+//=========================================================================
+// ParticleSphereFS.glsl -- fragment stage of vtkParticleSphereMapper: ray-cast
+// sphere with exact depth, lit with VTK's lights and material.
+//
+// Visible surface: the first ray/sphere intersection that lies in front of the
+// eye and between the near and far planes. From outside that is the front
+// surface; with the eye inside a sphere (or the near plane cutting it) it is the
+// inner side of the back surface, shaded with the normal facing the viewer.
+//
+// Hooks (//PR:: tags) for ParticleRendering passes and subclasses:
+//   //PR::Sphere::Dec            declarations (uniforms, samplers, functions)
+//   //PR::AmbientOcclusion::Impl  set prAmbientOcclusion (visibility in [0,1],
+//                                 multiplies the lit colour) and prAmbientLight
+//                                 (radiance added after occlusion)
+//   //PR::Shading::Impl           replace the opaque result gl_FragData[0]
+//                                 (e.g. an emission-absorption model); the ray
+//                                 (prRayS, prRayD), both hits (prT0, prT1), the
+//                                 centre and radius are in scope
+//=========================================================================
+uniform int PrimitiveIDOffset;
+uniform mat4 VCDCMatrix;
+uniform int cameraParallel;
+
+flat in vec4 centerRadiusVCVSOutput;
+in vec3 offsetVCVSOutput;
+flat in int particleIdVSOutput;
+
+//VTK::CustomUniforms::Dec
+//VTK::Color::Dec
+//VTK::Normal::Dec
+//VTK::Light::Dec
+//VTK::TMap::Dec
+//VTK::Picking::Dec
+//VTK::DepthPeeling::Dec
+//VTK::Clip::Dec
+//VTK::Output::Dec
+//VTK::Coincident::Dec
+//VTK::ValuePass::Dec
+
+//PR::Include RaySphere
+//PR::Sphere::Dec
+
+void main()
+{
+  vec3 centerVC = centerRadiusVCVSOutput.xyz;
+  float radiusVC = centerRadiusVCVSOutput.w;
+
+  // the fragment's ray, as a point relative to the centre and a unit direction
+  vec3 prRayS = offsetVCVSOutput;
+  vec3 prRayD = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(centerVC + prRayS);
+  float prT0;
+  float prT1;
+  if (!prIntersectSphere(prRayS, prRayD, radiusVC, prT0, prT1))
+  {
+    discard;
+  }
+  // first visible intersection
+  vec3 hitRel = prRayS + prT0 * prRayD;
+  float depth;
+  bool inside = false;
+  if (!prDepthOfPointVC(centerVC + hitRel, VCDCMatrix, depth))
+  {
+    hitRel = prRayS + prT1 * prRayD;
+    inside = true;
+    if (!prDepthOfPointVC(centerVC + hitRel, VCDCMatrix, depth))
+    {
+      discard;
+    }
+  }
+  gl_FragDepth = depth;
+  vec4 vertexVC = vec4(centerVC + hitRel, 1.0);
+  vec3 normalVCVSOutput = (inside ? -hitRel : hitRel) / radiusVC;
+  vec3 prViewDirVC = -prRayD;
+
+  //VTK::PositionVC::Impl
+  //VTK::UniformFlow::Impl
+  //VTK::Depth::Impl
+  //VTK::DepthPeeling::PreColor
+  //VTK::Clip::Impl
+  //VTK::ValuePass::Impl
+  //VTK::Color::Impl
+  //VTK::Normal::Impl
+  //VTK::Light::Impl
+  //VTK::TCoord::Impl
+
+  if (gl_FragData[0].a <= 0.0)
+  {
+    discard;
+  }
+  // no NaN or Inf may reach the framebuffer
+  if (any(isnan(gl_FragData[0])) || any(isinf(gl_FragData[0])))
+  {
+    discard;
+  }
+  //VTK::DepthPeeling::Impl
+  //VTK::Picking::Impl
+  //VTK::Coincident::Impl
+}

@@ -1,0 +1,59 @@
+//VTK::System::Dec
+//=========================================================================
+// ParticleSphereVS.glsl -- vertex stage of vtkParticleSphereMapper.
+// One instance per particle, four vertices per instance (a triangle strip).
+// Per-instance attributes: vertexMC (centre), radiusMC, scalarColor.
+// The //VTK:: tags are filled by vtkOpenGLPolyDataMapper and by render passes,
+// the //PR:: tags are hooks for ParticleRendering passes and subclasses:
+//   //PR::Sphere::Dec / //PR::Sphere::Impl  per-sphere work in the vertex stage
+//   (e.g. per-sphere ambient-occlusion fetches); centerVC and radiusVC are set.
+//=========================================================================
+in vec4 vertexMC;
+in float radiusMC;
+
+// MC->VC radius factor: user scale factor times the actor's scale
+uniform float radiusScaleVC;
+uniform mat4 MCVCMatrix;
+uniform mat4 VCDCMatrix;
+uniform mat4 DCVCMatrix;
+uniform int cameraParallel;
+
+//VTK::CustomUniforms::Dec
+//VTK::Color::Dec
+//VTK::Clip::Dec
+//VTK::Picking::Dec
+//VTK::ValuePass::Dec
+
+flat out vec4 centerRadiusVCVSOutput;
+out vec3 offsetVCVSOutput;
+flat out int particleIdVSOutput;
+
+//PR::Include SphereImposter
+//PR::Sphere::Dec
+
+void main()
+{
+  //VTK::CustomBegin::Impl
+  //VTK::Color::Impl
+  //VTK::Clip::Impl
+  //VTK::ValuePass::Impl
+  //VTK::Picking::Impl
+
+  particleIdVSOutput = gl_InstanceID;
+  vec4 centerH = MCVCMatrix * vertexMC;
+  vec3 centerVC = centerH.xyz / centerH.w;
+  float radiusVC = radiusMC * radiusScaleVC;
+  centerRadiusVCVSOutput = vec4(centerVC, radiusVC);
+  if (!prSphereIsDrawable(centerVC, radiusVC))
+  {
+    // invalid particle (radius <= 0, NaN or Inf): a degenerate quad outside the
+    // clip volume produces no fragment
+    offsetVCVSOutput = vec3(0.0);
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
+  prSphereQuad(centerVC, radiusVC, gl_VertexID, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
+    gl_Position, offsetVCVSOutput);
+  //PR::Sphere::Impl
+  //VTK::CustomEnd::Impl
+}

@@ -1,0 +1,48 @@
+//=========================================================================
+// RaySphere.glsl -- ray/sphere intersection shared by every particle mapper.
+//
+// The ray is described relative to the sphere centre: s is a point of the ray
+// relative to the centre (|s| is of the order of the radius, never of the eye
+// distance) and d is the unit ray direction. Working relative to the centre is
+// what keeps a camera 1e7 radii away exact in single precision: the classic
+// form |o - c|^2 - r^2 cancels catastrophically there.
+//
+// On a hit, t0 <= t1 are the entry and exit parameters along d measured from s,
+// so the hit points relative to the centre are s + t0*d and s + t1*d.
+//=========================================================================
+bool prIntersectSphere(vec3 s, vec3 d, float r, out float t0, out float t1)
+{
+  float b = dot(s, d);
+  // closest approach of the ray to the centre; |q| <= |s| so no cancellation
+  vec3 q = s - b * d;
+  float h2 = r * r - dot(q, q);
+  t0 = 0.0;
+  t1 = 0.0;
+  if (!(h2 >= 0.0)) // also rejects NaN
+  {
+    return false;
+  }
+  float h = sqrt(h2);
+  t0 = -b - h;
+  t1 = -b + h;
+  return true;
+}
+
+// Depth-buffer value and visibility of a view-coordinate point. A point is
+// visible when it lies in front of the eye and between the near and far planes.
+bool prDepthOfPointVC(vec3 pVC, mat4 vcdc, out float depth)
+{
+  vec4 clip = vcdc * vec4(pVC, 1.0);
+  depth = 0.0;
+  if (!(clip.w > 0.0))
+  {
+    return false;
+  }
+  float ndcZ = clip.z / clip.w;
+  if (!(ndcZ >= -1.0 && ndcZ <= 1.0))
+  {
+    return false;
+  }
+  depth = (gl_DepthRange.diff * ndcZ + gl_DepthRange.near + gl_DepthRange.far) * 0.5;
+  return true;
+}
