@@ -1,0 +1,337 @@
+#!/usr/bin/env python3
+"""Regenerate the LAMMPS molecular-dynamics test data sets of ParticleRendering.
+
+Runs LAMMPS (Debian package ``lammps``, binary ``lmp``) on the input scripts
+next to this file (``in.<scene>``), parses the text dumps it writes and
+converts them to VTK XML PolyData (``.vtp``) files:
+
+=================  =====================================================
+scene              output files
+=================  =====================================================
+``lj_droplets``    ``lj_droplets.vtp`` (last frame) and the time series
+                   ``lj_droplets_t0.vtp`` ... ``lj_droplets_t4.vtp``
+                   (``lj_droplets_t4.vtp`` is identical to
+                   ``lj_droplets.vtp``)
+``lj_film``        ``lj_film.vtp``
+``fcc_block``      ``fcc_block.vtp``
+=================  =====================================================
+
+Every ``.vtp`` file holds one vertex cell per point and these point arrays:
+
+* ``type``     int32   LAMMPS atom type (1 or 2)
+* ``id``       int32   LAMMPS atom id (points are sorted by id)
+* ``velocity`` float32 3 components, LJ units (sigma/tau)
+* ``speed``    float32 magnitude of ``velocity``
+* ``radius``   float32 rendering radius in sigma (the LJ length unit),
+                       derived from the type, see ``TYPE_RADIUS``:
+                       type 1 -> 0.5, type 2 -> 0.4
+
+Points are float32 positions in sigma (wrapped into the periodic box, as
+written by LAMMPS). Field data: ``TimeValue`` (float64, LJ time tau =
+timestep * 0.005 of the run that wrote the frame) and ``BoxBounds`` (float64,
+xmin xmax ymin ymax zmin zmax of the simulation box).
+
+The files are written by vtkXMLPolyDataWriter in appended binary format with
+zlib compression, UInt32 headers and Int32 ids.
+
+All LJ interactions are identical (epsilon = sigma = 1, cut-off 2.5 sigma);
+the atom type is only a label. The radius convention "half the LJ diameter"
+(0.5 sigma) for type 1 is the contact radius of touching atoms; type 2 is
+drawn smaller (0.4 sigma) so that the two types are easy to tell apart.
+
+Runs are reproducible: velocity seeds are fixed in the input scripts (and
+``velocity ... loop geom`` / ``set type/fraction`` do not depend on the
+number of MPI ranks). Bit-for-bit identical trajectories additionally need
+the same LAMMPS build and the same number of MPI ranks (``--np``, default 2,
+which is what the committed files were made with).
+
+Usage::
+
+    /usr/bin/python3 Testing/Data/Generators/make_lammps_data.py \\
+        [--out DIR] [--scene NAME ...] [--np N] [--lmp PATH] [--keep DIR]
+
+Only numpy and VTK (``vtkmodules``, e.g. Debian ``python3-paraview``) are
+needed; LAMMPS scratch files go to a temporary directory.
+"""
+
+import argparse
+import glob
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO_DATA = os.path.normpath(os.path.join(HERE, ".."))  # Testing/Data
+
+#: Rendering radius per LAMMPS atom type, in sigma (LJ length unit).
+TYPE_RADIUS = {1: 0.5, 2: 0.4}
+
+#: LJ time step used by all input scripts (for the TimeValue field data).
+TIMESTEP = 0.005
+
+#: scene name -> (LAMMPS input script, dump file glob relative to the run dir)
+SCENES = {
+    "lj_droplets": ("in.lj_droplets", "lj_droplets.*.dump"),
+    "lj_film": ("in.lj_film", "lj_film.dump"),
+    "fcc_block": ("in.fcc_block", "fcc_block.dump"),
+}
+
+
+# --------------------------------------------------------------------------- LAMMPS
+def find_lammps(explicit=None):
+    if explicit:
+        return explicit
+    for name in ("lmp", "lmp_serial", "lmp_stable", "lmp_mpi"):
+        path = shutil.which(name)
+        if path:
+            return path
+    sys.exit("error: no LAMMPS executable (lmp) found on PATH; install the 'lammps' package "
+             "or pass --lmp")
+
+
+def lammps_command(lmp, script, run_dir, scene, np_ranks):
+    cmd = [lmp, "-in", script, "-var", "outdir", run_dir,
+           "-log", os.path.join(run_dir, "log." + scene), "-screen", "none", "-nocite"]
+    if np_ranks > 1:
+        mpirun = shutil.which("mpirun") or shutil.which("mpiexec")
+        if mpirun is None:
+            return None
+        pre = [mpirun]
+        if hasattr(os, "geteuid") and os.geteuid() == 0:
+            pre.append("--allow-run-as-root")  # Open MPI refuses to run as root otherwise
+        pre += ["-np", str(np_ranks)]
+        cmd = pre + cmd
+    return cmd
+
+
+def run_lammps(lmp, scene, run_dir, np_ranks):
+    script = os.path.join(HERE, SCENES[scene][0])
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    attempts = [np_ranks] if np_ranks == 1 else [np_ranks, 1]
+    for n in attempts:
+        cmd = lammps_command(lmp, script, run_dir, scene, n)
+        if cmd is None:
+            print("  mpirun not found, running serially", flush=True)
+            continue
+        print("  $ " + " ".join(cmd), flush=True)
+        t0 = time.perf_counter()
+        proc = subprocess.run(cmd, cwd=run_dir, env=env,
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        dt = time.perf_counter() - t0
+        if proc.returncode == 0:
+            print("  LAMMPS %s: %.1f s on %d rank(s)" % (scene, dt, n), flush=True)
+            return dt, n
+        print(proc.stdout[-3000:], file=sys.stderr)
+        log = os.path.join(run_dir, "log." + scene)
+        if os.path.exists(log):
+            with open(log) as f:
+                print("".join(f.readlines()[-30:]), file=sys.stderr)
+        if n > 1:
+            print("  warning: LAMMPS with %d MPI ranks failed (rc=%d), retrying serially; the "
+                  "trajectory will differ from the committed data" % (n, proc.returncode),
+                  file=sys.stderr, flush=True)
+    sys.exit("error: LAMMPS failed for scene %s" % scene)
+
+
+# --------------------------------------------------------------------------- dumps
+def read_dump(path):
+    """Read a single-frame LAMMPS text dump ('dump custom' / 'write_dump custom').
+
+    Returns (timestep, box_bounds[3x2], {column name: numpy array}).
+    """
+    with open(path) as f:
+        timestep = natoms = None
+        box = []
+        columns = None
+        while columns is None:
+            line = f.readline()
+            if not line:
+                raise ValueError("%s: no ITEM: ATOMS section" % path)
+            if line.startswith("ITEM: TIMESTEP"):
+                timestep = int(f.readline())
+            elif line.startswith("ITEM: NUMBER OF ATOMS"):
+                natoms = int(f.readline())
+            elif line.startswith("ITEM: BOX BOUNDS"):
+                if "xy" in line.split()[3:]:
+                    raise ValueError("%s: triclinic boxes are not supported" % path)
+                box = [[float(v) for v in f.readline().split()[:2]] for _ in range(3)]
+            elif line.startswith("ITEM: ATOMS"):
+                columns = line.split()[2:]
+        data = np.loadtxt(f, dtype=np.float64, max_rows=natoms, ndmin=2)
+    if data.shape != (natoms, len(columns)):
+        raise ValueError("%s: expected %d x %d values, got %s"
+                         % (path, natoms, len(columns), data.shape))
+    cols = {name: data[:, i] for i, name in enumerate(columns)}
+    for required in ("id", "type", "x", "y", "z", "vx", "vy", "vz"):
+        if required not in cols:
+            raise ValueError("%s: column %r missing" % (path, required))
+    return timestep, np.array(box, dtype=np.float64), cols
+
+
+# --------------------------------------------------------------------------- VTK
+def _vtk_array(values, name):
+    arr = numpy_support.numpy_to_vtk(np.ascontiguousarray(values), deep=1)
+    arr.SetName(name)
+    return arr
+
+
+def dump_to_polydata(timestep, box, cols):
+    order = np.argsort(cols["id"], kind="stable")
+    n = order.size
+    ids = cols["id"][order].astype(np.int32)
+    types = cols["type"][order].astype(np.int32)
+    pos = np.column_stack([cols[c][order] for c in ("x", "y", "z")]).astype(np.float32)
+    vel = np.column_stack([cols[c][order] for c in ("vx", "vy", "vz")]).astype(np.float32)
+    speed = np.sqrt(np.einsum("ij,ij->i", vel.astype(np.float64), vel.astype(np.float64)))
+    speed = speed.astype(np.float32)
+    unknown = set(np.unique(types).tolist()) - set(TYPE_RADIUS)
+    if unknown:
+        raise ValueError("no radius defined for atom type(s) %s" % sorted(unknown))
+    lut = np.zeros(max(TYPE_RADIUS) + 1, dtype=np.float32)
+    for t, r in TYPE_RADIUS.items():
+        lut[t] = r
+    radius = lut[types]
+
+    pd = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(_vtk_array(pos, "Points"))
+    pd.SetPoints(points)
+
+    verts = vtkCellArray()
+    offsets = numpy_support.numpy_to_vtkIdTypeArray(
+        np.arange(n + 1, dtype=numpy_support.ID_TYPE_CODE), deep=1)
+    conn = numpy_support.numpy_to_vtkIdTypeArray(
+        np.arange(n, dtype=numpy_support.ID_TYPE_CODE), deep=1)
+    verts.SetData(offsets, conn)
+    pd.SetVerts(verts)
+
+    pdata = pd.GetPointData()
+    for name, values in (("type", types), ("id", ids), ("velocity", vel),
+                         ("radius", radius), ("speed", speed)):
+        pdata.AddArray(_vtk_array(values, name))
+    pdata.SetScalars(pdata.GetArray("type"))
+
+    fd = pd.GetFieldData()
+    tv = vtkDoubleArray()
+    tv.SetName("TimeValue")
+    tv.InsertNextValue(timestep * TIMESTEP)
+    fd.AddArray(tv)
+    fd.AddArray(_vtk_array(box.reshape(1, 6), "BoxBounds"))
+    return pd
+
+
+def write_vtp(pd, path):
+    w = vtkXMLPolyDataWriter()
+    w.SetFileName(path)
+    w.SetInputData(pd)
+    w.SetDataModeToAppended()
+    w.EncodeAppendedDataOff()  # raw binary, not base64
+    w.SetCompressorTypeToZLib()
+    w.SetCompressionLevel(9)
+    w.SetBlockSize(1 << 20)
+    w.SetHeaderTypeToUInt32()
+    w.SetIdTypeToInt32()
+    if not w.Write():
+        raise RuntimeError("writing %s failed" % path)
+
+
+def describe(path):
+    r = vtkXMLPolyDataReader()
+    r.SetFileName(path)
+    r.Update()
+    pd = r.GetOutput()
+    pdata = pd.GetPointData()
+    names = [pdata.GetArrayName(i) for i in range(pdata.GetNumberOfArrays())]
+    b = pd.GetBounds()
+    return ("%-22s %7d atoms %7d verts %8.1f kB  bounds (%.1f..%.1f, %.1f..%.1f, %.1f..%.1f)"
+            "  arrays %s" % (os.path.basename(path), pd.GetNumberOfPoints(),
+                             pd.GetNumberOfVerts(), os.path.getsize(path) / 1024.0,
+                             *b, ",".join(names)))
+
+
+# --------------------------------------------------------------------------- main
+def convert(scene, run_dir, out_dir):
+    pattern = SCENES[scene][1]
+    dumps = glob.glob(os.path.join(run_dir, pattern))
+    if not dumps:
+        sys.exit("error: LAMMPS wrote no dump matching %s" % pattern)
+
+    def step_of(p):
+        m = re.search(r"\.(\d+)\.dump$", p)
+        return int(m.group(1)) if m else 0
+
+    dumps.sort(key=step_of)
+    written = []
+    if len(dumps) > 1:  # time series (lj_droplets)
+        for i, d in enumerate(dumps):
+            pd = dump_to_polydata(*read_dump(d))
+            path = os.path.join(out_dir, "%s_t%d.vtp" % (scene, i))
+            write_vtp(pd, path)
+            written.append(path)
+    last = dump_to_polydata(*read_dump(dumps[-1]))
+    path = os.path.join(out_dir, scene + ".vtp")
+    write_vtp(last, path)
+    written.append(path)
+    return written
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out", default=REPO_DATA,
+                    help="output directory for the .vtp files (default: Testing/Data)")
+    ap.add_argument("--scene", action="append", choices=sorted(SCENES) + ["all"],
+                    help="scene to generate (repeatable; default: all)")
+    ap.add_argument("--np", type=int, default=2, dest="np_ranks",
+                    help="MPI ranks for LAMMPS (default 2; 1 = serial, no mpirun). If the MPI "
+                         "run fails the scene is rerun serially.")
+    ap.add_argument("--lmp", help="LAMMPS executable (default: lmp on PATH)")
+    ap.add_argument("--keep", metavar="DIR",
+                    help="keep the LAMMPS scratch files (logs, dumps) in DIR instead of a "
+                         "temporary directory")
+    args = ap.parse_args(argv)
+
+    scenes = args.scene or ["all"]
+    scenes = list(SCENES) if "all" in scenes else list(dict.fromkeys(scenes))
+    lmp = find_lammps(args.lmp)
+    os.makedirs(args.out, exist_ok=True)
+
+    total = 0.0
+    written = []
+    for scene in scenes:
+        print("[%s]" % scene, flush=True)
+        if args.keep:
+            run_dir = os.path.abspath(os.path.join(args.keep, scene))
+            os.makedirs(run_dir, exist_ok=True)
+            for old in glob.glob(os.path.join(run_dir, "*.dump")):
+                os.remove(old)
+            dt, _ = run_lammps(lmp, scene, run_dir, args.np_ranks)
+            written += convert(scene, run_dir, args.out)
+        else:
+            with tempfile.TemporaryDirectory(prefix="pr_lammps_%s_" % scene) as run_dir:
+                dt, _ = run_lammps(lmp, scene, run_dir, args.np_ranks)
+                written += convert(scene, run_dir, args.out)
+        total += dt
+
+    print("LAMMPS total: %.1f s" % total)
+    print("wrote:")
+    size = 0
+    for path in written:
+        print("  " + describe(path))
+        size += os.path.getsize(path)
+    print("total size: %.2f MB" % (size / 1e6))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
