@@ -13,6 +13,7 @@
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
@@ -24,6 +25,7 @@
 #include "vtkProperty.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
 #include "vtkTransform.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnsignedCharArray.h"
@@ -51,7 +53,8 @@ public:
   vtkPolyData* PreparedInput = nullptr;
   // the last warning given, so that a warning is said once per input change, not every frame
   std::string LastWarning;
-  bool AttributesWithDivisor = false;
+  // GPU timer query around the draw call (CollectTimings)
+  vtkOpenGLRenderTimer DrawTimer;
 };
 
 //------------------------------------------------------------------------------
@@ -537,6 +540,7 @@ bool vtkParticleSphereMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vt
 void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
 {
   vtkInternals& internals = *this->Internals;
+  const double start = vtkTimerLog::GetUniversalTime();
   const vtkIdType numPts = this->PrepareParticles();
 
   // Scalars through the lookup table, as every vtkMapper does (sets this->Colors).
@@ -578,6 +582,11 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     this->Primitives[i].IBO->IndexCount = 0;
   }
   this->VBOBuildTime.Modified();
+  if (this->CollectTimings)
+  {
+    glFinish(); // the upload is complete when the GPU has the buffers
+  }
+  this->LastUploadSeconds = vtkTimerLog::GetUniversalTime() - start;
 }
 
 //------------------------------------------------------------------------------
@@ -595,7 +604,34 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
   {
     return;
   }
+  if (this->CollectTimings)
+  {
+    this->Internals->DrawTimer.Reset();
+    this->Internals->DrawTimer.Start();
+  }
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(numPts));
+  if (this->CollectTimings)
+  {
+    this->Internals->DrawTimer.Stop();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkParticleSphereMapper::GetLastDrawGPUSeconds()
+{
+  vtkOpenGLRenderTimer& timer = this->Internals->DrawTimer;
+  if (!timer.Stopped())
+  {
+    return 0.0;
+  }
+  return timer.GetElapsedSeconds();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internals->DrawTimer.ReleaseGraphicsResources();
+  this->Superclass::ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
@@ -607,4 +643,5 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
   os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
+  os << indent << "CollectTimings: " << this->CollectTimings << "\n";
 }

@@ -95,6 +95,22 @@ public:
    */
   vtkGetMacro(NumberOfSkippedParticles, vtkIdType);
 
+  ///@{
+  /**
+   * Per-stage timings for benchmarks (off by default; costs a GPU timer query per frame when on).
+   * GetLastUploadSeconds(): CPU wall time of the last particle upload (validation + VBO build).
+   * GetLastDrawGPUSeconds(): GPU time of the last sphere draw call, from a timer query; blocks
+   * until the GPU has finished that draw.
+   */
+  vtkSetMacro(CollectTimings, bool);
+  vtkGetMacro(CollectTimings, bool);
+  vtkBooleanMacro(CollectTimings, bool);
+  vtkGetMacro(LastUploadSeconds, double);
+  double GetLastDrawGPUSeconds();
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
   /**
    * Bounds of the spheres (centres grown by the largest radius), ignoring skipped particles.
    */
@@ -162,6 +178,8 @@ protected:
   double Radius = 0.5;
   double RadiusScaleFactor = 1.0;
   vtkIdType NumberOfSkippedParticles = 0;
+  bool CollectTimings = false;
+  double LastUploadSeconds = 0.0;
 
 private:
   vtkParticleSphereMapper(const vtkParticleSphereMapper&) = delete;

@@ -1,0 +1,77 @@
+"""Render the bundled LAMMPS samples with the Particles representation (pvpython).
+
+usage: pvpython render_samples.py --plugin ParticleRendering.so --data Testing/Data --out DIR
+Writes DIR/<scene>.png for every sample found and prints the paths.
+"""
+import argparse
+import os
+import sys
+
+from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, LoadPlugin, Render,
+                             SaveScreenshot, Show, XMLPolyDataReader, Delete)
+
+SCENES = [
+    # file, colour array, camera (position, focal point offset from centre, view up), title
+    ("lj_droplets.vtp", "type", (1.0, -1.6, 0.9)),
+    ("lj_film.vtp", "speed", (1.0, -1.8, 0.6)),
+    ("fcc_block.vtp", "type", (1.2, -1.5, 1.0)),
+]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--size", default="1200x900")
+    args = parser.parse_args()
+    width, height = (int(v) for v in args.size.split("x"))
+
+    LoadPlugin(args.plugin, remote=False, ns=globals())
+    os.makedirs(args.out, exist_ok=True)
+    written = []
+    for name, color, direction in SCENES:
+        path = os.path.join(args.data, name)
+        if not os.path.exists(path):
+            print("missing sample %s, skipped" % path, file=sys.stderr)
+            continue
+        reader = XMLPolyDataReader(FileName=[path])
+        view = CreateView("RenderView")
+        view.ViewSize = [width, height]
+        view.OrientationAxesVisibility = 0
+        view.Background = [0.12, 0.12, 0.16]
+        try:
+            view.UseColorPaletteForBackground = 0
+        except AttributeError:
+            pass
+        display = Show(reader, view)
+        display.Representation = "Particles"
+        display.UseRadiusArray = 1
+        display.RadiusArray = ["POINTS", "radius"]
+        display.Specular = 0.3
+        ColorBy(display, ("POINTS", color))
+        lut = GetColorTransferFunction(color)
+        lut.ApplyPreset("Jet" if color == "speed" else "Set1" if False else "Cool to Warm", True)
+        display.RescaleTransferFunctionToDataRange(True, False)
+        view.ResetCamera()
+        camera = view.GetActiveCamera()
+        focal = camera.GetFocalPoint()
+        distance = camera.GetDistance()
+        norm = sum(d * d for d in direction) ** 0.5
+        camera.SetPosition(*[f + 1.2 * distance * d / norm for f, d in zip(focal, direction)])
+        camera.SetViewUp(0, 0, 1)
+        view.ResetCamera()
+        Render(view)
+        png = os.path.join(args.out, os.path.splitext(name)[0] + ".png")
+        SaveScreenshot(png, view, ImageResolution=[width, height])
+        written.append(png)
+        Delete(view)
+        del view
+    print("Rendered %d sample image(s):" % len(written))
+    for png in written:
+        print("  " + os.path.abspath(png))
+    return 0 if written else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

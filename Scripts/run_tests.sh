@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# README command 2: install what is needed, build, and run the whole CTest suite headless
+# (Xvfb + Mesa llvmpipe). Extra arguments go to ctest (e.g. -R Python, -L cxx).
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+"$top/Scripts/install_dependencies.sh"
+"$top/Scripts/build.sh"
+build=${BUILD_DIR:-$top/build}
+cd "$build"
+"$top/Scripts/with_xvfb.sh" ctest --output-on-failure --timeout 900 "$@"
