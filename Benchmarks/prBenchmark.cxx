@@ -10,7 +10,7 @@
 //
 // usage: prBenchmark --data particles.vtp [--mapper particle|vtksphere|pointgaussian ...]
 //                    [--frames 10] [--size 1024x768] [--csv out.csv] [--label text]
-//                    [--radius-array radius] [--color-array speed]
+//                    [--radius-array radius] [--color-array speed] [--screenshot DIR]
 // The CSV gets one row per mapper (header written when the file is new).
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -28,6 +28,8 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
+#include "vtkPNGWriter.h"
+#include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <algorithm>
@@ -51,6 +53,7 @@ struct Options
   std::string Label;
   std::string RadiusArray = "radius";
   std::string ColorArray = "speed";
+  std::string ScreenshotDir;
 };
 
 struct Result
@@ -100,6 +103,8 @@ bool Parse(int argc, char* argv[], Options& o)
       o.RadiusArray = next();
     else if (a == "--color-array")
       o.ColorArray = next();
+    else if (a == "--screenshot")
+      o.ScreenshotDir = next();
     else
     {
       std::cerr << "unknown argument " << a << "\n";
@@ -207,6 +212,19 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o, vtkLook
     }
   }
   timer.ReleaseGraphicsResources();
+  if (!o.ScreenshotDir.empty())
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    const std::string file = o.ScreenshotDir + "/" + o.Label + (o.Label.empty() ? "" : "_") +
+      std::to_string(data->GetNumberOfPoints()) + "_" + kind + ".png";
+    writer->SetFileName(file.c_str());
+    writer->Write();
+  }
   renderer->RemoveAllViewProps();
   mapper->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);

@@ -32,13 +32,15 @@ bool prIntersectSphere(vec3 s, vec3 d, float r, out float t0, out float t1)
 // visible when it lies in front of the eye and between the near and far planes.
 bool prDepthOfPointVC(vec3 pVC, mat4 vcdc, out float depth)
 {
-  vec4 clip = vcdc * vec4(pVC, 1.0);
+  // only the z and w rows of the projection are needed (GLSL matrices are column-major)
+  float clipZ = vcdc[0][2] * pVC.x + vcdc[1][2] * pVC.y + vcdc[2][2] * pVC.z + vcdc[3][2];
+  float clipW = vcdc[0][3] * pVC.x + vcdc[1][3] * pVC.y + vcdc[2][3] * pVC.z + vcdc[3][3];
   depth = 0.0;
-  if (!(clip.w > 0.0))
+  if (!(clipW > 0.0))
   {
     return false;
   }
-  float ndcZ = clip.z / clip.w;
+  float ndcZ = clipZ / clipW;
   if (!(ndcZ >= -1.0 && ndcZ <= 1.0))
   {
     return false;

@@ -31,8 +31,20 @@ written by LAMMPS). Field data: ``TimeValue`` (float64, LJ time tau =
 timestep * 0.005 of the run that wrote the frame) and ``BoxBounds`` (float64,
 xmin xmax ymin ymax zmin zmax of the simulation box).
 
-The files are written by vtkXMLPolyDataWriter in appended binary format with
-zlib compression, UInt32 headers and Int32 ids.
+To keep the committed files small, positions are rounded to multiples of
+2^-10 sigma (~0.001 sigma) and velocities/speeds to multiples of 2^-8
+sigma/tau (~0.004) before the float32 conversion; the zeroed low mantissa
+bits compress much better. ``--no-quantize`` writes full float32 precision.
+
+The files are written by vtkXMLPolyDataWriter with zlib compression (level 9),
+UInt32 block headers and Int32 vertex connectivity/offsets, in *inline binary*
+(base64) data mode, NOT in appended mode: Debian 12's libexpat
+(2.5.0-1+deb12uN) carries the backported "reparse deferral" change of expat
+2.6, which breaks VTK <= 9.3's reading of ``<AppendedData>`` sections
+(https://gitlab.kitware.com/vtk/vtk/-/issues/19258); the reader of the Debian
+ParaView 5.11 / VTK 9.2 packages then fails with "not well-formed (invalid
+token)" on any appended file larger than one parser buffer. Inline base64 data
+is plain, valid XML and is read correctly everywhere.
 
 All LJ interactions are identical (epsilon = sigma = 1, cut-off 2.5 sigma);
 the atom type is only a label. The radius convention "half the LJ diameter"
@@ -49,6 +61,7 @@ Usage::
 
     /usr/bin/python3 Testing/Data/Generators/make_lammps_data.py \\
         [--out DIR] [--scene NAME ...] [--np N] [--lmp PATH] [--keep DIR]
+        [--no-quantize] [--dumps DIR]
 
 Only numpy and VTK (``vtkmodules``, e.g. Debian ``python3-paraview``) are
 needed; LAMMPS scratch files go to a temporary directory.
@@ -67,7 +80,7 @@ import time
 import numpy as np
 
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints, vtkTypeInt32Array
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
@@ -79,6 +92,10 @@ TYPE_RADIUS = {1: 0.5, 2: 0.4}
 
 #: LJ time step used by all input scripts (for the TimeValue field data).
 TIMESTEP = 0.005
+
+#: Rounding quanta (see module docstring); None disables the rounding.
+POS_QUANTUM = 2.0 ** -10
+VEL_QUANTUM = 2.0 ** -8
 
 #: scene name -> (LAMMPS input script, dump file glob relative to the run dir)
 SCENES = {
@@ -186,15 +203,28 @@ def _vtk_array(values, name):
     return arr
 
 
-def dump_to_polydata(timestep, box, cols):
+def _round(values, quantum):
+    if quantum:
+        values = np.round(values / quantum) * quantum
+    return values.astype(np.float32)
+
+
+def _int32_array(values):
+    arr = vtkTypeInt32Array()
+    arr.DeepCopy(numpy_support.numpy_to_vtk(np.ascontiguousarray(values, dtype=np.int32)))
+    return arr
+
+
+def dump_to_polydata(timestep, box, cols, quantize=True):
     order = np.argsort(cols["id"], kind="stable")
     n = order.size
     ids = cols["id"][order].astype(np.int32)
     types = cols["type"][order].astype(np.int32)
-    pos = np.column_stack([cols[c][order] for c in ("x", "y", "z")]).astype(np.float32)
-    vel = np.column_stack([cols[c][order] for c in ("vx", "vy", "vz")]).astype(np.float32)
-    speed = np.sqrt(np.einsum("ij,ij->i", vel.astype(np.float64), vel.astype(np.float64)))
-    speed = speed.astype(np.float32)
+    pq, vq = (POS_QUANTUM, VEL_QUANTUM) if quantize else (None, None)
+    pos = _round(np.column_stack([cols[c][order] for c in ("x", "y", "z")]), pq)
+    vel = _round(np.column_stack([cols[c][order] for c in ("vx", "vy", "vz")]), vq)
+    v64 = vel.astype(np.float64)
+    speed = _round(np.sqrt(np.einsum("ij,ij->i", v64, v64)), vq)
     unknown = set(np.unique(types).tolist()) - set(TYPE_RADIUS)
     if unknown:
         raise ValueError("no radius defined for atom type(s) %s" % sorted(unknown))
@@ -208,12 +238,9 @@ def dump_to_polydata(timestep, box, cols):
     points.SetData(_vtk_array(pos, "Points"))
     pd.SetPoints(points)
 
+    # one vertex cell per point; 32-bit storage keeps the file small
     verts = vtkCellArray()
-    offsets = numpy_support.numpy_to_vtkIdTypeArray(
-        np.arange(n + 1, dtype=numpy_support.ID_TYPE_CODE), deep=1)
-    conn = numpy_support.numpy_to_vtkIdTypeArray(
-        np.arange(n, dtype=numpy_support.ID_TYPE_CODE), deep=1)
-    verts.SetData(offsets, conn)
+    verts.SetData(_int32_array(np.arange(n + 1)), _int32_array(np.arange(n)))
     pd.SetVerts(verts)
 
     pdata = pd.GetPointData()
@@ -235,11 +262,11 @@ def write_vtp(pd, path):
     w = vtkXMLPolyDataWriter()
     w.SetFileName(path)
     w.SetInputData(pd)
-    w.SetDataModeToAppended()
-    w.EncodeAppendedDataOff()  # raw binary, not base64
+    # Inline base64 instead of appended raw data: see the module docstring (expat bug).
+    w.SetDataModeToBinary()
     w.SetCompressorTypeToZLib()
     w.SetCompressionLevel(9)
-    w.SetBlockSize(1 << 20)
+    w.SetBlockSize(1 << 16)
     w.SetHeaderTypeToUInt32()
     w.SetIdTypeToInt32()
     if not w.Write():
@@ -261,7 +288,7 @@ def describe(path):
 
 
 # --------------------------------------------------------------------------- main
-def convert(scene, run_dir, out_dir):
+def convert(scene, run_dir, out_dir, quantize=True):
     pattern = SCENES[scene][1]
     dumps = glob.glob(os.path.join(run_dir, pattern))
     if not dumps:
@@ -275,11 +302,11 @@ def convert(scene, run_dir, out_dir):
     written = []
     if len(dumps) > 1:  # time series (lj_droplets)
         for i, d in enumerate(dumps):
-            pd = dump_to_polydata(*read_dump(d))
+            pd = dump_to_polydata(*read_dump(d), quantize=quantize)
             path = os.path.join(out_dir, "%s_t%d.vtp" % (scene, i))
             write_vtp(pd, path)
             written.append(path)
-    last = dump_to_polydata(*read_dump(dumps[-1]))
+    last = dump_to_polydata(*read_dump(dumps[-1]), quantize=quantize)
     path = os.path.join(out_dir, scene + ".vtp")
     write_vtp(last, path)
     written.append(path)
@@ -299,28 +326,35 @@ def main(argv=None):
     ap.add_argument("--keep", metavar="DIR",
                     help="keep the LAMMPS scratch files (logs, dumps) in DIR instead of a "
                          "temporary directory")
+    ap.add_argument("--dumps", metavar="DIR",
+                    help="do not run LAMMPS; convert the dumps of an earlier --keep DIR run")
+    ap.add_argument("--no-quantize", dest="quantize", action="store_false",
+                    help="write full float32 precision (larger files)")
     args = ap.parse_args(argv)
 
     scenes = args.scene or ["all"]
     scenes = list(SCENES) if "all" in scenes else list(dict.fromkeys(scenes))
-    lmp = find_lammps(args.lmp)
+    lmp = None if args.dumps else find_lammps(args.lmp)
     os.makedirs(args.out, exist_ok=True)
 
     total = 0.0
     written = []
     for scene in scenes:
         print("[%s]" % scene, flush=True)
-        if args.keep:
+        if args.dumps:
+            dt = 0.0
+            written += convert(scene, os.path.join(args.dumps, scene), args.out, args.quantize)
+        elif args.keep:
             run_dir = os.path.abspath(os.path.join(args.keep, scene))
             os.makedirs(run_dir, exist_ok=True)
             for old in glob.glob(os.path.join(run_dir, "*.dump")):
                 os.remove(old)
             dt, _ = run_lammps(lmp, scene, run_dir, args.np_ranks)
-            written += convert(scene, run_dir, args.out)
+            written += convert(scene, run_dir, args.out, args.quantize)
         else:
             with tempfile.TemporaryDirectory(prefix="pr_lammps_%s_" % scene) as run_dir:
                 dt, _ = run_lammps(lmp, scene, run_dir, args.np_ranks)
-                written += convert(scene, run_dir, args.out)
+                written += convert(scene, run_dir, args.out, args.quantize)
         total += dt
 
     print("LAMMPS total: %.1f s" % total)
