@@ -1,0 +1,83 @@
+"""vtkParticleSphereMapper from plain VTK Python (no ParaView): the LAMMPS droplets coloured by
+atom type, radii from the 'radius' array, a light kit. Baseline-image test; a missing baseline
+fails.
+
+usage: python3 TestVTKPythonSphereMapper.py --data DIR --baseline PNG --temp DIR
+"""
+import argparse
+import os
+import sys
+
+import particlerendering  # ParticleRendering's Python-wrapped VTK module
+from vtkmodules.vtkCommonColor import vtkNamedColors  # noqa: F401 (module load check)
+from vtkmodules.vtkCommonCore import vtkLookupTable
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLightKit, vtkRenderer, vtkRenderWindow
+from vtkmodules.vtkTestingRendering import vtkTesting
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--baseline", required=True)
+    parser.add_argument("--temp", required=True)
+    args = parser.parse_args()
+
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(args.data, "lj_droplets.vtp"))
+
+    lut = vtkLookupTable()
+    lut.SetNumberOfTableValues(2)
+    lut.SetTableValue(0, 0.85, 0.35, 0.2, 1.0)
+    lut.SetTableValue(1, 0.2, 0.55, 0.9, 1.0)
+    lut.SetTableRange(1, 2)
+
+    mapper = particlerendering.vtkParticleSphereMapper()
+    mapper.SetInputConnection(reader.GetOutputPort())
+    mapper.SetRadiusArrayName("radius")
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("type")
+    mapper.SetLookupTable(lut)
+    mapper.UseLookupTableScalarRangeOn()
+
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetSpecular(0.4)
+    actor.GetProperty().SetSpecularPower(25)
+
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0.12, 0.12, 0.16)
+    kit = vtkLightKit()
+    kit.AddLightsToRenderer(renderer)
+    window = vtkRenderWindow()
+    window.SetSize(500, 400)
+    window.SetMultiSamples(0)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    camera = renderer.GetActiveCamera()
+    camera.Elevation(25)
+    camera.Azimuth(30)
+    camera.Zoom(2.2)
+    renderer.ResetCameraClippingRange()
+    window.Render()
+
+    if mapper.GetNumberOfSkippedParticles() != 0:
+        print("FAIL: particles skipped in valid data")
+        return 1
+    if not os.path.exists(args.baseline):
+        print("FAIL: baseline %s does not exist" % args.baseline)
+    testing = vtkTesting()
+    for arg in ("-V", args.baseline, "-T", args.temp):
+        testing.AddArgument(arg)
+    testing.SetRenderWindow(window)
+    result = testing.RegressionTest(0.15)
+    if not os.path.exists(args.baseline) or result != vtkTesting.PASSED:
+        print("FAIL: image differs from the baseline (see %s)" % args.temp)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
