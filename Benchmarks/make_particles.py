@@ -56,7 +56,7 @@ import time
 import numpy as np
 
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints, vtkTypeInt32Array, vtkTypeInt64Array
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 KINDS = ("lattice", "gas", "clustered")
@@ -70,7 +70,7 @@ BACKGROUND = 0.1
 
 
 # --------------------------------------------------------------------------- numpy
-def _lattice(n, rng):
+def _lattice(n, rng, rng_type):
     side = max(1, int(math.ceil(round(n ** (1.0 / 3.0), 9))))
     while side ** 3 < n:  # guard against floating point cube-root errors
         side += 1
@@ -94,15 +94,15 @@ def _cube_side(n):
     return (n / GAS_DENSITY) ** (1.0 / 3.0)
 
 
-def _gas(n, rng):
+def _gas(n, rng, rng_type):
     side = _cube_side(n)
     pos = rng.random((n, 3), dtype=np.float32)
     pos *= np.float32(side)
-    types = np.where(rng.random(n, dtype=np.float32) < 0.2, 2, 1).astype(np.int32)
+    types = np.where(rng_type.random(n, dtype=np.float32) < 0.2, 2, 1).astype(np.int32)
     return pos, types
 
 
-def _clustered(n, rng):
+def _clustered(n, rng, rng_type):
     side = _cube_side(n)
     n_bg = int(round(n * BACKGROUND)) if n > 1 else 0
     n_cl = n - n_bg
@@ -139,53 +139,64 @@ def make_arrays(kind, count, seed=0, radius=0.5):
     count = int(count)
     if count < 1:
         raise ValueError("count must be >= 1")
-    rng = np.random.default_rng(seed)
-    pos, types = {"lattice": _lattice, "gas": _gas, "clustered": _clustered}[kind](count, rng)
-    r = rng.random(count, dtype=np.float32)
+    # independent random streams per kind and per quantity
+    seeds = np.random.SeedSequence([int(seed), KINDS.index(kind)]).spawn(4)
+    rng_pos, rng_type, rng_radius, rng_speed = (np.random.default_rng(s) for s in seeds)
+    make_kind = {"lattice": _lattice, "gas": _gas, "clustered": _clustered}[kind]
+    pos, types = make_kind(count, rng_pos, rng_type)
+    r = rng_radius.random(count, dtype=np.float32)
     r *= np.float32(0.4 * radius)
     r += np.float32(0.6 * radius)
-    speed = np.sqrt(rng.chisquare(3, count)).astype(np.float32)
+    speed = np.sqrt(rng_speed.chisquare(3, count)).astype(np.float32)
     return {"points": pos, "radius": r, "type": types, "speed": speed}
 
 
 # --------------------------------------------------------------------------- VTK
+# All VTK arrays own their memory (numpy data is copied in). Zero-copy
+# numpy_to_vtk(deep=0) arrays are not safe here: vtkCellArray.SetData() may keep
+# only a shallow copy of the wrapper array, which drops the numpy reference and
+# leaves VTK pointing at freed memory (segfaults at 10^7 points).
 def _to_vtk(values, name=None):
-    arr = numpy_support.numpy_to_vtk(values, deep=0)  # keeps a reference to ``values``
+    arr = numpy_support.numpy_to_vtk(np.ascontiguousarray(values), deep=1)
     if name:
         arr.SetName(name)
     return arr
 
 
+def _iota(count, array_type):
+    """VTK-owned integer array 0..count-1, filled through a numpy view."""
+    arr = array_type()
+    arr.SetNumberOfValues(count)
+    view = numpy_support.vtk_to_numpy(arr)
+    view[:] = np.arange(count, dtype=view.dtype)
+    return arr
+
+
 def vertex_cells(n):
     """vtkCellArray with one vertex cell per point, built from numpy (no Python loop)."""
-    dtype = np.int32 if n + 1 < 2 ** 31 else np.int64
-    offsets = np.arange(n + 1, dtype=dtype)
-    conn = offsets[:n]  # a view: connectivity 0..n-1 shares the offsets buffer
+    array_type = vtkTypeInt32Array if n + 1 < 2 ** 31 else vtkTypeInt64Array
     cells = vtkCellArray()
-    if not cells.SetData(_to_vtk(offsets), _to_vtk(conn)):
+    if not cells.SetData(_iota(n + 1, array_type), _iota(n, array_type)):
         raise RuntimeError("vtkCellArray.SetData failed")
     return cells
 
 
 def to_polydata(arrays):
-    pos = np.ascontiguousarray(arrays["points"], dtype=np.float32)
+    """Convert a make_arrays() dict to vtkPolyData (empties the dict to free memory)."""
     pd = vtkPolyData()
     points = vtkPoints()
-    points.SetData(_to_vtk(pos))
+    points.SetData(_to_vtk(arrays.pop("points").astype(np.float32, copy=False)))
     pd.SetPoints(points)
-    pd.SetVerts(vertex_cells(pos.shape[0]))
+    pd.SetVerts(vertex_cells(points.GetNumberOfPoints()))
     pdata = pd.GetPointData()
     for name in ("radius", "type", "speed"):
-        pdata.AddArray(_to_vtk(np.ascontiguousarray(arrays[name]), name))
+        pdata.AddArray(_to_vtk(arrays.pop(name), name))
     pdata.SetActiveScalars("radius")
     return pd
 
 
 def make(kind, count, seed=0, radius=0.5):
-    """Build a ``kind`` particle set with ``count`` points as a vtkPolyData.
-
-    The VTK arrays share memory with the numpy arrays they were made from.
-    """
+    """Build a ``kind`` particle set with ``count`` points as a vtkPolyData."""
     return to_polydata(make_arrays(kind, count, seed, radius))
 
 
