@@ -53,6 +53,8 @@ public:
   vtkPolyData* PreparedInput = nullptr;
   // the last warning given, so that a warning is said once per input change, not every frame
   std::string LastWarning;
+  // the input the buffers were built from
+  vtkPolyData* BuiltInput = nullptr;
   // GPU timer query around the draw call (CollectTimings)
   vtkOpenGLRenderTimer DrawTimer;
 };
@@ -94,7 +96,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
 
   vtkMTimeType inputTime = input ? input->GetMTime() : 0;
   if (internals.PreparedInput == input && internals.PrepareTime > inputTime &&
-    internals.PrepareTime > this->GetMTime() && internals.NumberOfPoints == numPts)
+    internals.PrepareTime > this->GetParticleDataMTime() && internals.NumberOfPoints == numPts)
   {
     return numPts;
   }
@@ -263,6 +265,27 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   stamp.Modified();
   internals.PrepareTime = stamp.GetMTime();
   return numPts;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetRadiusScaleFactor(double factor)
+{
+  if (factor == this->RadiusScaleFactor)
+  {
+    return;
+  }
+  const vtkMTimeType before = this->GetParticleDataMTime();
+  this->RadiusScaleFactor = factor;
+  this->Modified();
+  this->ScaleOnlyMTime = this->GetMTime();
+  this->DataMTimeBeforeScale = before;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkParticleSphereMapper::GetParticleDataMTime()
+{
+  const vtkMTimeType mtime = this->GetMTime();
+  return mtime == this->ScaleOnlyMTime ? this->DataMTimeBeforeScale : mtime;
 }
 
 //------------------------------------------------------------------------------
@@ -530,10 +553,14 @@ void vtkParticleSphereMapper::SetMapperShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleSphereMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+bool vtkParticleSphereMapper::GetNeedToRebuildBufferObjects(vtkRenderer*, vtkActor*)
 {
-  return this->Superclass::GetNeedToRebuildBufferObjects(ren, act) ||
-    this->VBOBuildTime < this->Internals->PrepareTime;
+  // Unlike polygons, the buffers hold nothing that depends on the actor or its property (material
+  // colours are uniforms), so only the input and the mapper's data settings matter.
+  const vtkMTimeType inputTime = this->CurrentInput ? this->CurrentInput->GetMTime() : 0;
+  return this->VBOBuildTime < inputTime || this->VBOBuildTime < this->GetParticleDataMTime() ||
+    this->VBOBuildTime < this->Internals->PrepareTime ||
+    this->Internals->BuiltInput != this->CurrentInput;
 }
 
 //------------------------------------------------------------------------------
@@ -582,6 +609,8 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     this->Primitives[i].IBO->IndexCount = 0;
   }
   this->VBOBuildTime.Modified();
+  internals.BuiltInput = this->CurrentInput;
+  ++this->NumberOfUploads;
   if (this->CollectTimings)
   {
     glFinish(); // the upload is complete when the GPU has the buffers
@@ -644,4 +673,5 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
   os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+  os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
 }

@@ -84,11 +84,18 @@ public:
   ///@{
   /**
    * Factor applied to every radius (array or constant). Default 1. Changing it does not re-upload
-   * the particles.
+   * the particles (it is a uniform).
    */
-  vtkSetMacro(RadiusScaleFactor, double);
+  virtual void SetRadiusScaleFactor(double factor);
   vtkGetMacro(RadiusScaleFactor, double);
   ///@}
+
+  /**
+   * Number of particle uploads (validation + VBO build) so far. Uploads happen when the input, the
+   * radius source or the colour mapping change; never when only the camera, the actor, its
+   * material or RadiusScaleFactor change.
+   */
+  vtkGetMacro(NumberOfUploads, vtkIdType);
 
   /**
    * Number of particles skipped at the last upload because of an invalid radius or position.
@@ -169,6 +176,12 @@ protected:
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
   /**
+   * Modification time of what the uploaded particle buffers depend on: the mapper's MTime (which
+   * includes the lookup table's) except when its last change was RadiusScaleFactor alone.
+   */
+  vtkMTimeType GetParticleDataMTime();
+
+  /**
    * Validate the input: radii, skipped particles, bounds, warnings. Cached on the input's and the
    * mapper's modification times. Returns the number of points of the input.
    */
@@ -177,8 +190,11 @@ protected:
   char* RadiusArrayName = nullptr;
   double Radius = 0.5;
   double RadiusScaleFactor = 1.0;
+  vtkMTimeType ScaleOnlyMTime = 0;
+  vtkMTimeType DataMTimeBeforeScale = 0;
   vtkIdType NumberOfSkippedParticles = 0;
   bool CollectTimings = false;
+  vtkIdType NumberOfUploads = 0;
   double LastUploadSeconds = 0.0;
 
 private:
