@@ -1,15 +1,18 @@
 //VTK::System::Dec
 //=========================================================================
 // ParticleSphereVS.glsl -- vertex stage of vtkParticleSphereMapper.
-// One instance per particle, four vertices per instance (a triangle strip).
-// Per-instance attributes: vertexMC (centre), radiusMC, scalarColor.
+// Vertex pulling: one non-instanced draw of 6 vertices (two triangles) per
+// particle; particle i = gl_VertexID / 6 is fetched from buffer textures that
+// alias the mapper's vertex buffers (centres with VTK's shift/scale, radii,
+// colours). Real GPUs and llvmpipe both run this far better than 4-vertex
+// instances or a geometry shader.
 // The //VTK:: tags are filled by vtkOpenGLPolyDataMapper and by render passes,
 // the //PR:: tags are hooks for ParticleRendering passes and subclasses:
 //   //PR::Sphere::Dec / //PR::Sphere::Impl  per-sphere work in the vertex stage
 //   (e.g. per-sphere ambient-occlusion fetches); centerVC and radiusVC are set.
 //=========================================================================
-in vec4 vertexMC;
-in float radiusMC;
+uniform samplerBuffer prCenters;
+uniform samplerBuffer prRadii;
 
 // MC->VC radius factor: user scale factor times the actor's scale
 uniform float radiusScaleVC;
@@ -31,15 +34,22 @@ flat out int particleIdVSOutput;
 //PR::Include SphereImposter
 //PR::Sphere::Dec
 
+const int prCornerOfVertex[6] = int[6](0, 1, 2, 2, 1, 3);
+
 void main()
 {
+  int particleId = gl_VertexID / 6;
+  int corner = prCornerOfVertex[gl_VertexID - 6 * particleId];
+  vec4 vertexMC = vec4(texelFetch(prCenters, particleId).xyz, 1.0);
+  float radiusMC = texelFetch(prRadii, particleId).r;
+  particleIdVSOutput = particleId;
+
   //VTK::CustomBegin::Impl
   //VTK::Color::Impl
   //VTK::Clip::Impl
   //VTK::ValuePass::Impl
   //VTK::Picking::Impl
 
-  particleIdVSOutput = gl_InstanceID;
   vec4 centerH = MCVCMatrix * vertexMC;
   vec3 centerVC = centerH.xyz / centerH.w;
   float radiusVC = radiusMC * radiusScaleVC;
@@ -52,7 +62,7 @@ void main()
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
   }
-  prSphereQuad(centerVC, radiusVC, gl_VertexID, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
+  prSphereQuad(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
     gl_Position, offsetVCVSOutput);
   //PR::Sphere::Impl
   //VTK::CustomEnd::Impl

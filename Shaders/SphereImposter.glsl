@@ -1,7 +1,6 @@
 //=========================================================================
 // SphereImposter.glsl -- vertex-stage set-up of one camera-facing quad per
-// sphere, drawn as an instanced 4-vertex triangle strip (gl_VertexID 0..3 are
-// the corners, one instance per particle).
+// sphere; corner 0..3 is (-1,-1), (1,-1), (-1,1), (1,1) in the quad's frame.
 //
 // Perspective: the quad lies in the plane of the sphere's silhouette circle
 // (the circle where the tangent cone from the eye touches the sphere), at

@@ -14,6 +14,7 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
@@ -25,6 +26,7 @@
 #include "vtkProperty.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTransform.h"
 #include "vtkShaderProgram.h"
@@ -55,6 +57,13 @@ public:
   std::string LastWarning;
   // the input the buffers were built from
   vtkPolyData* BuiltInput = nullptr;
+  // buffer textures aliasing the vertex buffers (vertex pulling, no copy)
+  vtkNew<vtkTextureObject> CenterTexture;
+  vtkNew<vtkTextureObject> RadiusTexture;
+  vtkNew<vtkTextureObject> ColorTexture;
+  bool HaveColors = false;
+  // particles drawn: all of them, or the GPU's texture-buffer limit
+  vtkIdType DrawCount = 0;
   // GPU timer query around the draw call (CollectTimings)
   vtkOpenGLRenderTimer DrawTimer;
 };
@@ -369,14 +378,26 @@ void vtkParticleSphereMapper::GetShaderTemplate(
 void vtkParticleSphereMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
+  // Scalar colours are fetched per particle in the vertex stage; the superclass then sees no
+  // vertex-stage colour tags and only writes the fragment-stage colour code.
+  if (this->VBOs->GetNumberOfComponents("scalarColor") != 0)
+  {
+    std::string vs = shaders[vtkShader::Vertex]->GetSource();
+    vtkShaderProgram::Substitute(vs, "//VTK::Color::Dec",
+      "uniform samplerBuffer prColors;\nout vec4 vertexColorVSOutput;");
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Color::Impl", "vertexColorVSOutput = texelFetch(prColors, particleId);");
+    shaders[vtkShader::Vertex]->SetSource(vs);
+  }
+
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 
-  // Ids for the hardware selector: one instance per particle, so the particle index is
-  // gl_InstanceID (not gl_VertexID / gl_PrimitiveID as for polygons).
+  // Ids for the hardware selector: the particle index (not gl_VertexID / gl_PrimitiveID as for
+  // polygons).
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(
-    vs, "vertexIDVSOutput = gl_VertexID;", "vertexIDVSOutput = gl_InstanceID;", true);
+    vs, "vertexIDVSOutput = gl_VertexID;", "vertexIDVSOutput = particleId;", true);
   vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "particleIdVSOutput", true);
   // Includes added by the replacements and render passes.
   shaders[vtkShader::Vertex]->SetSource(vtkParticleShaders::ResolveIncludes(vs));
@@ -527,27 +548,17 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
 void vtkParticleSphereMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
-  // Per-instance attributes (divisor 1). The superclass adds attributes only when its index
-  // buffer is non-empty, which ours never is: the draw call is instanced, not indexed.
-  if (this->VBOs->GetMTime() > cellBO.AttributeUpdateTime ||
-    cellBO.ShaderSourceTime > cellBO.AttributeUpdateTime ||
-    cellBO.VAO->GetMTime() > cellBO.AttributeUpdateTime)
+  // No vertex attributes: the particles are pulled from buffer textures, bound here and released
+  // after the draw call.
+  vtkInternals& internals = *this->Internals;
+  internals.CenterTexture->Activate();
+  cellBO.Program->SetUniformi("prCenters", internals.CenterTexture->GetTextureUnit());
+  internals.RadiusTexture->Activate();
+  cellBO.Program->SetUniformi("prRadii", internals.RadiusTexture->GetTextureUnit());
+  if (internals.HaveColors && cellBO.Program->IsUniformUsed("prColors"))
   {
-    cellBO.VAO->Bind();
-    for (const char* name : { "vertexMC", "radiusMC", "scalarColor" })
-    {
-      vtkOpenGLVertexBufferObject* vbo = this->VBOs->GetVBO(name);
-      if (vbo && cellBO.Program->IsAttributeUsed(name))
-      {
-        if (!cellBO.VAO->AddAttributeArrayWithDivisor(cellBO.Program, vbo, name, 0,
-              vbo->GetStride(), vbo->GetDataType(), vbo->GetNumberOfComponents(),
-              vbo->GetDataType() == VTK_UNSIGNED_CHAR, 1, false))
-        {
-          vtkErrorMacro(<< "Error setting '" << name << "' in the shader VAO.");
-        }
-      }
-    }
-    cellBO.AttributeUpdateTime.Modified();
+    internals.ColorTexture->Activate();
+    cellBO.Program->SetUniformi("prColors", internals.ColorTexture->GetTextureUnit());
   }
   this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
 }
@@ -603,7 +614,44 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     this->VBOInverseTransform->GetTranspose(this->VBOShiftScale);
   }
 
-  // No index buffers: one instanced draw of all particles.
+  // Buffer textures over the vertex buffers (vertex pulling). The centres are RGB32F, which
+  // needs OpenGL 4.0 (ParticleRendering's floor is 4.3).
+  vtkOpenGLRenderWindow* context = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  int maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  internals.DrawCount = numPts;
+  if (maxTexels > 0 && numPts > maxTexels)
+  {
+    internals.DrawCount = maxTexels;
+    vtkWarningMacro(<< numPts << " particles exceed this GPU's buffer-texture limit of "
+                    << maxTexels << " elements: only the first " << maxTexels
+                    << " are drawn. Split the data into pieces (e.g. with D3 or several ranks).");
+  }
+  internals.HaveColors = false;
+  vtkOpenGLVertexBufferObject* radiusVBO = this->VBOs->GetVBO("radiusMC");
+  vtkOpenGLVertexBufferObject* colorVBO = this->VBOs->GetVBO("scalarColor");
+  if (numPts > 0 && posVBO && radiusVBO)
+  {
+    const unsigned int n = static_cast<unsigned int>(internals.DrawCount);
+    internals.CenterTexture->SetContext(context);
+    internals.RadiusTexture->SetContext(context);
+    bool ok = internals.CenterTexture->CreateTextureBuffer(n, 3, VTK_FLOAT, posVBO) &&
+      internals.RadiusTexture->CreateTextureBuffer(n, 1, VTK_FLOAT, radiusVBO);
+    if (ok && colorVBO)
+    {
+      internals.ColorTexture->SetContext(context);
+      ok = internals.ColorTexture->CreateTextureBuffer(n, 4, VTK_UNSIGNED_CHAR, colorVBO);
+      internals.HaveColors = ok;
+    }
+    if (!ok)
+    {
+      vtkErrorMacro(<< "Could not create the particle buffer textures (OpenGL 4.0 or "
+                       "ARB_texture_buffer_object_rgb32 is required); nothing is drawn.");
+      internals.DrawCount = 0;
+    }
+  }
+
+  // No index buffers: one draw of 6 vertices per particle.
   for (int i = PrimitiveStart; i < PrimitiveEnd; ++i)
   {
     this->Primitives[i].IBO->IndexCount = 0;
@@ -621,7 +669,8 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
 //------------------------------------------------------------------------------
 void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
 {
-  const vtkIdType numPts = this->VBOs->GetNumberOfTuples("vertexMC");
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType numPts = internals.DrawCount;
   if (numPts <= 0)
   {
     return;
@@ -638,10 +687,17 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
     this->Internals->DrawTimer.Reset();
     this->Internals->DrawTimer.Start();
   }
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(numPts));
+  cellBO.VAO->Bind(); // attribute-less, but a core profile needs a vertex array object bound
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * numPts));
   if (this->CollectTimings)
   {
     this->Internals->DrawTimer.Stop();
+  }
+  internals.CenterTexture->Deactivate();
+  internals.RadiusTexture->Deactivate();
+  if (internals.HaveColors)
+  {
+    internals.ColorTexture->Deactivate();
   }
 }
 
@@ -660,6 +716,10 @@ double vtkParticleSphereMapper::GetLastDrawGPUSeconds()
 void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->DrawTimer.ReleaseGraphicsResources();
+  this->Internals->CenterTexture->ReleaseGraphicsResources(window);
+  this->Internals->RadiusTexture->ReleaseGraphicsResources(window);
+  this->Internals->ColorTexture->ReleaseGraphicsResources(window);
+  this->Internals->DrawCount = 0;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 

@@ -1,0 +1,176 @@
+/**
+ * @class   vtkParticleReferenceRenderer
+ * @brief   double-precision CPU ray caster that renders what vtkParticleSphereMapper should draw
+ *
+ * vtkParticleReferenceRenderer is the ground truth for the GPU sphere core. It renders the spheres
+ * of one actor whose mapper is a vtkParticleSphereMapper, seen through the active camera of a
+ * renderer and lit by that renderer's lights, entirely in double precision on the CPU:
+ *
+ * - Rays: one per pixel, through the pixel centre (x+0.5, y+0.5). The ray is obtained by
+ *   unprojecting the pixel's near- and far-plane points through the inverse of the camera's
+ *   projection matrix, GetProjectionTransformMatrix(aspect, -1, 1), and lives in view coordinates
+ *   (camera->GetModelViewTransformMatrix()), like the GPU's. Perspective rays start at the eye;
+ *   parallel rays start at the plane z_VC = 0 (the plane of the camera position).
+ * - Spheres: the centres are the input points transformed by the actor's matrix and the view
+ *   matrix in double; the radii are the mapper's GetParticleRadii() times GetRadiusScaleVC(actor).
+ *   Skipped particles (radius 0), particles clipped by the mapper's clipping planes (by their
+ *   centre, as on the GPU) and particles with opacity 0 (all their fragments are discarded on the
+ *   GPU) are not drawn.
+ * - Intersection: in the sphere-relative form of Shaders/RaySphere.glsl (closest approach point
+ *   relative to the centre, no cancellation). The visible surface is the first intersection that
+ *   lies in front of the eye and within the near and far planes (tested with the projection
+ *   matrix exactly like the GPU: clip w > 0 and -1 <= z/w <= 1). When the entry point is clipped
+ *   the exit point is used and the normal is flipped towards the viewer. Between spheres the
+ *   nearest visible hit wins; on an exact tie the larger particle id wins (the GPU's depth test is
+ *   GL_LEQUAL and instances are drawn in id order).
+ * - Shading: VTK 9.2's Phong model exactly as the mapper's fragment shader evaluates it
+ *   (Shaders/Lighting.glsl, vtkParticleSphereMapper::ReplaceShaderLight), with the lighting
+ *   complexity and light uniforms derived as vtkOpenGLRenderer::UpdateLights and
+ *   UpdateLightingUniforms do (headlights and camera lights follow the camera when the
+ *   renderer's LightFollowCamera is on; a headlight is assumed when no light is on and
+ *   AutomaticLightCreation is on). Material as vtkOpenGLPolyDataMapper: ambient = Ambient *
+ *   (AmbientColor or scalar rgb), diffuse = Diffuse * (DiffuseColor or scalar rgb), specular =
+ *   Specular * SpecularColor, opacity = Opacity * scalar alpha; scalar colours are the mapper's
+ *   MapScalars(1.0), 8-bit RGBA exactly as uploaded to the GPU. The colour is clamped to [0,1]
+ *   like an 8-bit framebuffer, but not quantised.
+ *
+ * Outputs (all images bottom-up, x fastest, like vtkRenderWindow::GetRGBAPixelData):
+ * - GetColorImage(): 4-component double RGBA in [0,1]; the background colour and
+ *   BackgroundAlpha where no sphere is hit (what vtkOpenGLRenderer clears to), the fragment's
+ *   opacity as alpha on spheres.
+ * - GetDepthImage(): window depth in [0,1] computed as the GPU does (clip = P * hitVC,
+ *   depth = 0.5 * z/w + 0.5), 1 for the background.
+ * - GetViewDepthImage(): distance along the ray from its origin to the hit (eye distance in
+ *   perspective, distance from the camera plane in parallel projection), -1 for the background.
+ * - GetIdImage(): the particle (point) id, -1 for the background.
+ *
+ * Acceleration: a uniform grid over the spheres' bounding boxes in view coordinates, traversed
+ * with a 3D-DDA from the near to the far plane; spheres that would cover very many cells are kept
+ * in a separate list tested by every ray. Image rows are rendered in parallel with vtkSMPTools.
+ * No output value is ever NaN: a non-finite shading result (degenerate lights) is treated like the
+ * GPU's discard (background).
+ *
+ * Not modelled: translucency (opacity < 1 is shaded as an opaque surface), gradient or textured
+ * backgrounds, image-based lighting, user light transforms (VR), off-axis/stereo projections,
+ * render passes (AO, shadows), other props of the renderer.
+ *
+ * @sa vtkParticleSphereMapper vtkParticleImageComparison
+ */
+#ifndef vtkParticleReferenceRenderer_h
+#define vtkParticleReferenceRenderer_h
+
+#include "vtkObject.h"
+#include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkSmartPointer.h"            // for vtkSmartPointer
+
+class vtkActor;
+class vtkIdTypeArray;
+class vtkImageData;
+class vtkRenderer;
+
+class VTKPARTICLERENDERING_EXPORT vtkParticleReferenceRenderer : public vtkObject
+{
+public:
+  static vtkParticleReferenceRenderer* New();
+  vtkTypeMacro(vtkParticleReferenceRenderer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The renderer whose active camera, lights, background and (tiled) viewport size are used.
+   */
+  virtual void SetRenderer(vtkRenderer* renderer);
+  vtkGetObjectMacro(Renderer, vtkRenderer);
+  ///@}
+
+  ///@{
+  /**
+   * The actor to render. Its mapper must be a vtkParticleSphereMapper.
+   */
+  virtual void SetActor(vtkActor* actor);
+  vtkGetObjectMacro(Actor, vtkActor);
+  ///@}
+
+  ///@{
+  /**
+   * Image size in pixels. (0, 0), the default, uses the renderer's tiled viewport size and aspect
+   * ratio (what the GPU uses); otherwise the aspect ratio is width / height.
+   */
+  vtkSetVector2Macro(ImageSize, int);
+  vtkGetVector2Macro(ImageSize, int);
+  ///@}
+
+  /**
+   * Render the images. Returns true on success; on failure (no renderer, no actor, not a
+   * vtkParticleSphereMapper, empty viewport) an error is reported and the images are emptied.
+   */
+  bool Render();
+
+  ///@{
+  /**
+   * Results of the last Render(), see the class description.
+   */
+  vtkImageData* GetColorImage();
+  vtkImageData* GetDepthImage();
+  vtkImageData* GetViewDepthImage();
+  vtkIdTypeArray* GetIdImage();
+  ///@}
+
+  /**
+   * Convert a window-depth image (e.g. a GPU z-buffer, as read by
+   * vtkParticleImageComparison::GrabDepthBuffer) of the size of the last Render() into the
+   * distance along the same pixel rays the reference uses (unprojection in double through the
+   * inverse projection matrix). Pixels at depth 1 (background) get -1. Returns false when the
+   * sizes differ or nothing was rendered yet.
+   */
+  bool WindowDepthToViewDepth(vtkImageData* windowDepth, vtkImageData* viewDepth);
+
+  ///@{
+  /**
+   * Statistics of the last Render(): the lighting complexity (0 unlit, 1 headlight, 2 directional
+   * lights, 3 positional lights) and number of lights used, the number of spheres that could be
+   * drawn, the grid resolution, the number of sphere references in the grid cells, the number of
+   * spheres kept out of the grid as too large, and the wall time of the render (grid build
+   * included) and of the grid build alone.
+   */
+  vtkGetMacro(LightingComplexity, int);
+  vtkGetMacro(LightingCount, int);
+  vtkGetMacro(NumberOfSpheres, vtkIdType);
+  vtkGetVector3Macro(GridResolution, int);
+  vtkGetMacro(NumberOfGridReferences, vtkIdType);
+  vtkGetMacro(NumberOfLargeSpheres, vtkIdType);
+  vtkGetMacro(LastRenderSeconds, double);
+  vtkGetMacro(LastGridBuildSeconds, double);
+  ///@}
+
+protected:
+  vtkParticleReferenceRenderer();
+  ~vtkParticleReferenceRenderer() override;
+
+  vtkRenderer* Renderer = nullptr;
+  vtkActor* Actor = nullptr;
+  int ImageSize[2] = { 0, 0 };
+
+  int LightingComplexity = 0;
+  int LightingCount = 0;
+  vtkIdType NumberOfSpheres = 0;
+  int GridResolution[3] = { 0, 0, 0 };
+  vtkIdType NumberOfGridReferences = 0;
+  vtkIdType NumberOfLargeSpheres = 0;
+  double LastRenderSeconds = 0.0;
+  double LastGridBuildSeconds = 0.0;
+
+  vtkSmartPointer<vtkImageData> ColorImage;
+  vtkSmartPointer<vtkImageData> DepthImage;
+  vtkSmartPointer<vtkImageData> ViewDepthImage;
+  vtkSmartPointer<vtkIdTypeArray> IdImage;
+
+private:
+  vtkParticleReferenceRenderer(const vtkParticleReferenceRenderer&) = delete;
+  void operator=(const vtkParticleReferenceRenderer&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif
