@@ -1,8 +1,8 @@
 //VTK::System::Dec
 //=========================================================================
 // ParticleSphereVS.glsl -- vertex stage of vtkParticleSphereMapper.
-// Vertex pulling: one non-instanced draw of 6 vertices (two triangles) per
-// particle; particle i = gl_VertexID / 6 is fetched from buffer textures that
+// Vertex pulling: one non-instanced draw of 3 vertices (one triangle) per
+// particle; particle i = gl_VertexID / 3 is fetched from buffer textures that
 // alias the mapper's vertex buffers (centres with VTK's shift/scale, radii,
 // colours). Real GPUs and llvmpipe both run this far better than 4-vertex
 // instances or a geometry shader.
@@ -34,12 +34,10 @@ flat out int particleIdVSOutput;
 //PR::Include SphereImposter
 //PR::Sphere::Dec
 
-const int prCornerOfVertex[6] = int[6](0, 1, 2, 2, 1, 3);
-
 void main()
 {
-  int particleId = gl_VertexID / 6;
-  int corner = prCornerOfVertex[gl_VertexID - 6 * particleId];
+  int particleId = gl_VertexID / 3;
+  int corner = gl_VertexID - 3 * particleId;
   vec4 vertexMC = vec4(texelFetch(prCenters, particleId).xyz, 1.0);
   float radiusMC = texelFetch(prRadii, particleId).r;
   particleIdVSOutput = particleId;
@@ -56,13 +54,13 @@ void main()
   centerRadiusVCVSOutput = vec4(centerVC, radiusVC);
   if (!prSphereIsDrawable(centerVC, radiusVC))
   {
-    // invalid particle (radius <= 0, NaN or Inf): a degenerate quad outside the
+    // invalid particle (radius <= 0, NaN or Inf): a degenerate triangle outside the
     // clip volume produces no fragment
     offsetVCVSOutput = vec3(0.0);
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
   }
-  prSphereQuad(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
+  prSphereBillboard(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
     gl_Position, offsetVCVSOutput);
   //PR::Sphere::Impl
   //VTK::CustomEnd::Impl

@@ -1,20 +1,22 @@
 //=========================================================================
-// SphereImposter.glsl -- vertex-stage set-up of one camera-facing quad per
-// sphere; corner 0..3 is (-1,-1), (1,-1), (-1,1), (1,1) in the quad's frame.
+// SphereImposter.glsl -- vertex-stage set-up of one camera-facing triangle per
+// sphere (corner 0..2). One triangle, not a quad: half the vertices and half
+// the triangle set-ups per sphere, for 30% more (cheaply discarded) fragments;
+// with millions of few-pixel spheres the per-triangle cost dominates.
 //
-// Perspective: the quad lies in the plane of the sphere's silhouette circle
-// (the circle where the tangent cone from the eye touches the sphere), at
-// distance r^2/d in front of the centre, with half-size r*sqrt(1-(r/d)^2): the
-// circle is inscribed in the quad, so the projected quad covers the projected
-// sphere exactly (no clipped silhouettes off-axis, unlike a quad through the
-// centre). Parallel: a quad of half-size r through the centre.
-// Eye inside (or within 1% of) the sphere: a full-viewport quad whose corners
-// are the near-plane corners.
-// The quad's clip-space z is set to 0: coverage does not depend on it and the
-// fragment stage writes the real depth, so the near plane never cuts a quad.
+// Perspective: the triangle is the equilateral triangle circumscribing the
+// sphere's silhouette circle (where the tangent cone from the eye touches the
+// sphere), in that circle's plane at distance r^2/d in front of the centre; the
+// circle's radius is r*sqrt(1-(r/d)^2). The projected triangle therefore covers
+// the projected sphere exactly, also far off-axis, where a billboard through
+// the centre clips the silhouette. Parallel: circumscribing a circle of radius
+// r through the centre. Eye inside (or within 1% of) the sphere: a triangle
+// covering the whole viewport, its points on the near plane.
+// The clip-space z is set to 0: coverage does not depend on it and the
+// fragment stage writes the real depth, so the near plane never cuts it.
 //
-// Outputs: clip position, and the quad point relative to the sphere centre in
-// view coordinates (interpolated perspective-correctly, it is a point of the
+// Outputs: clip position, and the triangle point relative to the sphere centre
+// in view coordinates (interpolated perspective-correctly, it is a point of the
 // fragment's ray relative to the centre -- see RaySphere.glsl).
 //=========================================================================
 bool prSphereIsDrawable(vec3 centerVC, float radiusVC)
@@ -22,10 +24,16 @@ bool prSphereIsDrawable(vec3 centerVC, float radiusVC)
   return radiusVC > 0.0 && !isinf(radiusVC) && !any(isnan(centerVC)) && !any(isinf(centerVC));
 }
 
-void prSphereQuad(vec3 centerVC, float radiusVC, int corner, bool parallel, mat4 vcdc,
+// corners of the equilateral triangle circumscribing the unit circle
+const vec2 prTriangleCorners[3] = vec2[3](vec2(0.0, 2.0), vec2(-1.7320508, -1.0), vec2(1.7320508, -1.0));
+// corners of a triangle covering the viewport [-1,1]^2
+const vec2 prViewportCorners[3] = vec2[3](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+
+void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel, mat4 vcdc,
   mat4 dcvc, out vec4 positionDC, out vec3 offsetVC)
 {
-  vec2 c = vec2((corner & 1) != 0 ? 1.0 : -1.0, (corner & 2) != 0 ? 1.0 : -1.0);
+  // 1.0001: a margin of 1e-4 radii against rounding at the silhouette
+  vec2 c = 1.0001 * prTriangleCorners[corner];
   if (parallel)
   {
     offsetVC = vec3(radiusVC * c, 0.0);
@@ -37,9 +45,10 @@ void prSphereQuad(vec3 centerVC, float radiusVC, int corner, bool parallel, mat4
     if (dist <= 1.01 * radiusVC)
     {
       // eye inside or at the surface: cover the viewport, rays start at the near plane
-      vec4 nearVC = dcvc * vec4(c, -1.0, 1.0);
+      vec2 v = prViewportCorners[corner];
+      vec4 nearVC = dcvc * vec4(v, -1.0, 1.0);
       offsetVC = nearVC.xyz / nearVC.w - centerVC;
-      positionDC = vec4(c, 0.0, 1.0);
+      positionDC = vec4(v, 0.0, 1.0);
       return;
     }
     vec3 dir = centerVC / dist;
@@ -47,8 +56,8 @@ void prSphereQuad(vec3 centerVC, float radiusVC, int corner, bool parallel, mat4
     vec3 u = normalize(cross(dir, helper));
     vec3 v = cross(u, dir);
     float rr = radiusVC / dist;
-    float halfSize = radiusVC * sqrt(max(0.0, 1.0 - rr * rr));
-    offsetVC = -dir * (radiusVC * rr) + halfSize * (c.x * u + c.y * v);
+    float silhouetteRadius = radiusVC * sqrt(max(0.0, 1.0 - rr * rr));
+    offsetVC = -dir * (radiusVC * rr) + silhouetteRadius * (c.x * u + c.y * v);
     positionDC = vcdc * vec4(centerVC + offsetVC, 1.0);
   }
   positionDC.z = 0.0;

@@ -651,7 +651,7 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     }
   }
 
-  // No index buffers: one draw of 6 vertices per particle.
+  // No index buffers: one draw of 3 vertices (one triangle) per particle.
   for (int i = PrimitiveStart; i < PrimitiveEnd; ++i)
   {
     this->Primitives[i].IBO->IndexCount = 0;
@@ -688,7 +688,7 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
     this->Internals->DrawTimer.Start();
   }
   cellBO.VAO->Bind(); // attribute-less, but a core profile needs a vertex array object bound
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * numPts));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * numPts));
   if (this->CollectTimings)
   {
     this->Internals->DrawTimer.Stop();

@@ -1,0 +1,1072 @@
+#include "vtkParticleReferenceRenderer.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkParticleReferenceRenderer);
+vtkCxxSetObjectMacro(vtkParticleReferenceRenderer, Renderer, vtkRenderer);
+vtkCxxSetObjectMacro(vtkParticleReferenceRenderer, Actor, vtkActor);
+
+namespace
+{
+//------------------------------------------------------------------------------
+// small double-precision vector helpers
+inline double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline bool NormalizeInPlace(double v[3])
+{
+  const double len = std::sqrt(Dot(v, v));
+  if (!(len > 0.0) || !std::isfinite(len))
+  {
+    return false;
+  }
+  v[0] /= len;
+  v[1] /= len;
+  v[2] /= len;
+  return true;
+}
+
+// p' = M * (p, w) for a row-major 4x4 matrix (VTK convention, column vectors)
+inline void MultiplyPoint(const double m[16], const double p[4], double out[4])
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    out[i] = m[4 * i] * p[0] + m[4 * i + 1] * p[1] + m[4 * i + 2] * p[2] + m[4 * i + 3] * p[3];
+  }
+}
+
+//------------------------------------------------------------------------------
+// The camera as the rays see it: projection, its inverse, image size.
+struct RayCamera
+{
+  double P[16];
+  double PInv[16];
+  bool Parallel = false;
+  int Width = 0;
+  int Height = 0;
+
+  // Ray of the point (px, py) in pixel units (pixel centres at +0.5): origin o and unit direction
+  // d in view coordinates, and the ray parameters of the near and far planes.
+  void PixelRay(double px, double py, double o[3], double d[3], double& tNear, double& tFar) const
+  {
+    const double x = 2.0 * px / this->Width - 1.0;
+    const double y = 2.0 * py / this->Height - 1.0;
+    double nearPt[3];
+    double farPt[3];
+    this->Unproject(x, y, -1.0, nearPt);
+    this->Unproject(x, y, 1.0, farPt);
+    if (this->Parallel)
+    {
+      // for an affine inverse the direction is the third column (no cancellation between the
+      // near and far points, which may both be far from the origin)
+      d[0] = this->PInv[2];
+      d[1] = this->PInv[6];
+      d[2] = this->PInv[10];
+      NormalizeInPlace(d);
+      if (farPt[0] * d[0] + farPt[1] * d[1] + farPt[2] * d[2] <
+        nearPt[0] * d[0] + nearPt[1] * d[1] + nearPt[2] * d[2])
+      {
+        d[0] = -d[0];
+        d[1] = -d[1];
+        d[2] = -d[2];
+      }
+      // origin: the point of the ray in the plane z_VC = 0
+      const double s = (std::abs(d[2]) > 0.0) ? -nearPt[2] / d[2] : 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        o[k] = nearPt[k] + s * d[k];
+      }
+    }
+    else
+    {
+      o[0] = o[1] = o[2] = 0.0;
+      d[0] = nearPt[0];
+      d[1] = nearPt[1];
+      d[2] = nearPt[2];
+      NormalizeInPlace(d);
+    }
+    double rel[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      rel[k] = nearPt[k] - o[k];
+    }
+    tNear = Dot(rel, d);
+    for (int k = 0; k < 3; ++k)
+    {
+      rel[k] = farPt[k] - o[k];
+    }
+    tFar = Dot(rel, d);
+  }
+
+  void Unproject(double x, double y, double z, double out[3]) const
+  {
+    const double ndc[4] = { x, y, z, 1.0 };
+    double h[4];
+    MultiplyPoint(this->PInv, ndc, h);
+    const double w = (h[3] != 0.0) ? h[3] : 1e-300;
+    out[0] = h[0] / w;
+    out[1] = h[1] / w;
+    out[2] = h[2] / w;
+  }
+
+  // The GPU's visibility rule and window depth of a view-coordinate point.
+  bool Depth(const double p[3], double& depth) const
+  {
+    const double* P = this->P;
+    const double clipZ = P[8] * p[0] + P[9] * p[1] + P[10] * p[2] + P[11];
+    const double clipW = P[12] * p[0] + P[13] * p[1] + P[14] * p[2] + P[15];
+    if (!(clipW > 0.0))
+    {
+      return false;
+    }
+    const double ndcZ = clipZ / clipW;
+    if (!(ndcZ >= -1.0 && ndcZ <= 1.0))
+    {
+      return false;
+    }
+    depth = 0.5 * ndcZ + 0.5;
+    return true;
+  }
+};
+
+//------------------------------------------------------------------------------
+struct SphereVC
+{
+  double C[3];
+  double R;
+};
+
+// A hit along a ray
+struct Hit
+{
+  double T = std::numeric_limits<double>::infinity();
+  double Depth = 1.0;
+  double Rel[3] = { 0, 0, 0 }; // hit point relative to the centre
+  vtkIdType Index = -1;        // index into the sphere list
+  bool Inside = false;
+};
+
+// Intersect the ray (o, d) with a sphere in the sphere-relative form of RaySphere.glsl and keep
+// the first visible intersection if it is nearer than best (ties: larger index, as the GPU's
+// GL_LEQUAL depth test with instances drawn in id order).
+inline void IntersectSphere(const RayCamera& cam, const double o[3], const double d[3],
+  const SphereVC& s, vtkIdType index, Hit& best)
+{
+  const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
+  const double tc = Dot(oc, d);
+  // closest approach point of the ray, relative to the centre
+  const double q[3] = { tc * d[0] - oc[0], tc * d[1] - oc[1], tc * d[2] - oc[2] };
+  const double h2 = s.R * s.R - Dot(q, q);
+  if (!(h2 >= 0.0))
+  {
+    return;
+  }
+  const double h = std::sqrt(h2);
+  for (int side = 0; side < 2; ++side)
+  {
+    const double sign = side == 0 ? -1.0 : 1.0;
+    const double t = tc + sign * h;
+    if (t > best.T || (t == best.T && index < best.Index))
+    {
+      return; // the exit is even further
+    }
+    const double rel[3] = { q[0] + sign * h * d[0], q[1] + sign * h * d[1], q[2] + sign * h * d[2] };
+    const double p[3] = { s.C[0] + rel[0], s.C[1] + rel[1], s.C[2] + rel[2] };
+    double depth;
+    if (cam.Depth(p, depth))
+    {
+      best.T = t;
+      best.Depth = depth;
+      std::copy(rel, rel + 3, best.Rel);
+      best.Index = index;
+      best.Inside = side == 1;
+      return;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Uniform grid over the spheres' bounding boxes, 3D-DDA traversal.
+class SphereGrid
+{
+public:
+  void Build(const std::vector<SphereVC>& spheres)
+  {
+    this->Cells.clear();
+    this->References.clear();
+    this->Large.clear();
+    this->N[0] = this->N[1] = this->N[2] = 0;
+    const size_t count = spheres.size();
+    if (count == 0)
+    {
+      return;
+    }
+    double meanRadius = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Lo[k] = std::numeric_limits<double>::infinity();
+      this->Hi[k] = -std::numeric_limits<double>::infinity();
+    }
+    for (const SphereVC& s : spheres)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Lo[k] = std::min(this->Lo[k], s.C[k] - s.R);
+        this->Hi[k] = std::max(this->Hi[k], s.C[k] + s.R);
+      }
+      meanRadius += s.R;
+    }
+    meanRadius /= static_cast<double>(count);
+    double extent[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      // a little margin so that no rounding puts a box outside the grid
+      const double margin = 1e-9 * (this->Hi[k] - this->Lo[k]) + 1e-12 * std::abs(this->Lo[k]) +
+        1e-12 * std::abs(this->Hi[k]);
+      this->Lo[k] -= margin;
+      this->Hi[k] += margin;
+      extent[k] = std::max(this->Hi[k] - this->Lo[k], 1e-300);
+    }
+    // about two cells per sphere, but cells no smaller than a sphere radius
+    const double volume = extent[0] * extent[1] * extent[2];
+    double cell = std::max(std::cbrt(volume / (2.0 * count)), meanRadius);
+    const double maxCells = std::min(16.0 * count + 64.0, 16777216.0);
+    for (;;)
+    {
+      double total = 1.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        this->N[k] = static_cast<int>(std::min(std::ceil(extent[k] / cell), 4096.0));
+        this->N[k] = std::max(this->N[k], 1);
+        total *= this->N[k];
+      }
+      if (total <= maxCells)
+      {
+        break;
+      }
+      cell *= 1.25;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->CellSize[k] = extent[k] / this->N[k];
+    }
+
+    // counting sort of the sphere references by cell; spheres over too many cells go to Large
+    const size_t numCells = static_cast<size_t>(this->N[0]) * this->N[1] * this->N[2];
+    const double largeCells = std::max(512.0, 0.05 * numCells);
+    std::vector<int> range(6 * count);
+    std::vector<std::uint64_t> start(numCells + 1, 0);
+    for (size_t i = 0; i < count; ++i)
+    {
+      int* r = &range[6 * i];
+      double cells = 1.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        r[2 * k] = this->CellIndex(spheres[i].C[k] - spheres[i].R, k);
+        r[2 * k + 1] = this->CellIndex(spheres[i].C[k] + spheres[i].R, k);
+        cells *= r[2 * k + 1] - r[2 * k] + 1;
+      }
+      if (cells > largeCells && numCells > 1)
+      {
+        r[0] = -1; // marker
+        this->Large.push_back(static_cast<std::uint32_t>(i));
+        continue;
+      }
+      for (int kk = r[4]; kk <= r[5]; ++kk)
+      {
+        for (int jj = r[2]; jj <= r[3]; ++jj)
+        {
+          for (int ii = r[0]; ii <= r[1]; ++ii)
+          {
+            ++start[this->Flat(ii, jj, kk) + 1];
+          }
+        }
+      }
+    }
+    for (size_t c = 0; c < numCells; ++c)
+    {
+      start[c + 1] += start[c];
+    }
+    this->References.resize(start[numCells]);
+    std::vector<std::uint64_t> fill(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < count; ++i)
+    {
+      const int* r = &range[6 * i];
+      if (r[0] < 0)
+      {
+        continue;
+      }
+      for (int kk = r[4]; kk <= r[5]; ++kk)
+      {
+        for (int jj = r[2]; jj <= r[3]; ++jj)
+        {
+          for (int ii = r[0]; ii <= r[1]; ++ii)
+          {
+            this->References[fill[this->Flat(ii, jj, kk)]++] = static_cast<std::uint32_t>(i);
+          }
+        }
+      }
+    }
+    this->Cells = std::move(start);
+  }
+
+  // Nearest visible hit along the ray between tMin and tMax.
+  void Trace(const RayCamera& cam, const std::vector<SphereVC>& spheres, const double o[3],
+    const double d[3], double tMin, double tMax, Hit& best) const
+  {
+    for (std::uint32_t i : this->Large)
+    {
+      IntersectSphere(cam, o, d, spheres[i], i, best);
+    }
+    if (this->Cells.empty())
+    {
+      return;
+    }
+    // clip the ray to the grid box
+    double t0 = tMin;
+    double t1 = tMax;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (d[k] != 0.0)
+      {
+        double a = (this->Lo[k] - o[k]) / d[k];
+        double b = (this->Hi[k] - o[k]) / d[k];
+        if (a > b)
+        {
+          std::swap(a, b);
+        }
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+      }
+      else if (o[k] < this->Lo[k] || o[k] > this->Hi[k])
+      {
+        return;
+      }
+    }
+    if (!(t0 <= t1))
+    {
+      return;
+    }
+    int cell[3];
+    int step[3];
+    double tNext[3];
+    double tDelta[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      cell[k] = this->CellIndex(o[k] + t0 * d[k], k);
+      if (d[k] > 0.0)
+      {
+        step[k] = 1;
+        tNext[k] = (this->Lo[k] + (cell[k] + 1) * this->CellSize[k] - o[k]) / d[k];
+        tDelta[k] = this->CellSize[k] / d[k];
+      }
+      else if (d[k] < 0.0)
+      {
+        step[k] = -1;
+        tNext[k] = (this->Lo[k] + cell[k] * this->CellSize[k] - o[k]) / d[k];
+        tDelta[k] = -this->CellSize[k] / d[k];
+      }
+      else
+      {
+        step[k] = 0;
+        tNext[k] = std::numeric_limits<double>::infinity();
+        tDelta[k] = std::numeric_limits<double>::infinity();
+      }
+    }
+    for (;;)
+    {
+      const size_t c = this->Flat(cell[0], cell[1], cell[2]);
+      for (std::uint64_t r = this->Cells[c]; r < this->Cells[c + 1]; ++r)
+      {
+        const std::uint32_t i = this->References[r];
+        IntersectSphere(cam, o, d, spheres[i], i, best);
+      }
+      const int axis = (tNext[0] < tNext[1]) ? (tNext[0] < tNext[2] ? 0 : 2)
+                                             : (tNext[1] < tNext[2] ? 1 : 2);
+      const double cellExit = tNext[axis];
+      // a hit inside this cell cannot be beaten by spheres of later cells; the margin covers
+      // the rounding of the cell boundaries
+      if (best.T <= cellExit - 1e-12 * std::abs(cellExit) || cellExit > t1)
+      {
+        return;
+      }
+      cell[axis] += step[axis];
+      if (cell[axis] < 0 || cell[axis] >= this->N[axis])
+      {
+        return;
+      }
+      tNext[axis] += tDelta[axis];
+    }
+  }
+
+  const int* GetResolution() const { return this->N; }
+  size_t GetNumberOfReferences() const { return this->References.size(); }
+  size_t GetNumberOfLarge() const { return this->Large.size(); }
+
+private:
+  int CellIndex(double x, int k) const
+  {
+    const double f = (x - this->Lo[k]) / this->CellSize[k];
+    if (!(f >= 0.0))
+    {
+      return 0;
+    }
+    return static_cast<int>(std::min(f, static_cast<double>(this->N[k] - 1)));
+  }
+  size_t Flat(int i, int j, int k) const
+  {
+    return static_cast<size_t>(i) +
+      static_cast<size_t>(this->N[0]) * (static_cast<size_t>(j) + static_cast<size_t>(this->N[1]) * k);
+  }
+
+  double Lo[3] = { 0, 0, 0 };
+  double Hi[3] = { 0, 0, 0 };
+  double CellSize[3] = { 1, 1, 1 };
+  int N[3] = { 0, 0, 0 };
+  std::vector<std::uint64_t> Cells; // reference range of each cell (size cells + 1)
+  std::vector<std::uint32_t> References;
+  std::vector<std::uint32_t> Large;
+};
+
+//------------------------------------------------------------------------------
+// A light as the fragment shader sees it (uniform values in double).
+struct LightVC
+{
+  double Color[3] = { 0, 0, 0 };
+  double Direction[3] = { 0, 0, -1 };
+  bool Positional = false;
+  double Position[3] = { 0, 0, 0 };
+  double Attenuation[3] = { 1, 0, 0 };
+  double ConeAngle = 180.0;
+  double Exponent = 1.0;
+};
+
+// Lighting.glsl, prSceneLight
+void SceneLight(const double n[3], const double v[3], const double p[3], const LightVC& light,
+  bool usePositional, double specularPower, double diffuse[3], double specular[3])
+{
+  double attenuation = 1.0;
+  double l[3] = { light.Direction[0], light.Direction[1], light.Direction[2] };
+  if (usePositional && light.Positional)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      l[k] = p[k] - light.Position[k];
+    }
+    const double distance = std::sqrt(Dot(l, l));
+    for (double& c : l)
+    {
+      c /= distance;
+    }
+    attenuation = 1.0 /
+      (light.Attenuation[0] + light.Attenuation[1] * distance +
+        light.Attenuation[2] * distance * distance);
+    if (light.ConeAngle < 90.0)
+    {
+      const double coneDot = Dot(l, light.Direction);
+      attenuation = coneDot >= std::cos(vtkMath::RadiansFromDegrees(light.ConeAngle))
+        ? attenuation * std::pow(coneDot, light.Exponent)
+        : 0.0;
+    }
+  }
+  const double minusL[3] = { -l[0], -l[1], -l[2] };
+  const double df = std::max(0.0, attenuation * Dot(n, minusL));
+  const double nl = Dot(n, l);
+  const double r[3] = { l[0] - 2.0 * nl * n[0], l[1] - 2.0 * nl * n[1], l[2] - 2.0 * nl * n[2] };
+  const double signDf = df > 0.0 ? 1.0 : (df < 0.0 ? -1.0 : 0.0);
+  const double sf =
+    signDf * attenuation * std::pow(std::max(0.0, Dot(r, v)), specularPower);
+  for (int k = 0; k < 3; ++k)
+  {
+    diffuse[k] += df * light.Color[k];
+    specular[k] += sf * light.Color[k];
+  }
+}
+
+// new image data of the given size and components
+vtkSmartPointer<vtkImageData> NewImage(int w, int h, int components, const char* name)
+{
+  vtkSmartPointer<vtkImageData> image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(name);
+  values->SetNumberOfComponents(components);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkParticleReferenceRenderer::vtkInternals
+{
+public:
+  RayCamera Camera;
+  bool HaveCamera = false;
+  SphereGrid Grid;
+};
+
+//------------------------------------------------------------------------------
+vtkParticleReferenceRenderer::vtkParticleReferenceRenderer()
+  : Internals(new vtkInternals)
+{
+  this->ColorImage = NewImage(0, 0, 4, "Color");
+  this->DepthImage = NewImage(0, 0, 1, "Depth");
+  this->ViewDepthImage = NewImage(0, 0, 1, "ViewDepth");
+  this->IdImage = vtkSmartPointer<vtkIdTypeArray>::New();
+  this->IdImage->SetName("ParticleId");
+}
+
+//------------------------------------------------------------------------------
+vtkParticleReferenceRenderer::~vtkParticleReferenceRenderer()
+{
+  this->SetRenderer(nullptr);
+  this->SetActor(nullptr);
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkParticleReferenceRenderer::GetColorImage()
+{
+  return this->ColorImage;
+}
+
+vtkImageData* vtkParticleReferenceRenderer::GetDepthImage()
+{
+  return this->DepthImage;
+}
+
+vtkImageData* vtkParticleReferenceRenderer::GetViewDepthImage()
+{
+  return this->ViewDepthImage;
+}
+
+vtkIdTypeArray* vtkParticleReferenceRenderer::GetIdImage()
+{
+  return this->IdImage;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleReferenceRenderer::Render()
+{
+  const double startTime = vtkTimerLog::GetUniversalTime();
+  vtkInternals& internals = *this->Internals;
+  internals.HaveCamera = false;
+  auto fail = [this](const char* why) {
+    vtkErrorMacro(<< why);
+    this->ColorImage = NewImage(0, 0, 4, "Color");
+    this->DepthImage = NewImage(0, 0, 1, "Depth");
+    this->ViewDepthImage = NewImage(0, 0, 1, "ViewDepth");
+    this->IdImage->SetNumberOfTuples(0);
+    return false;
+  };
+  if (!this->Renderer)
+  {
+    return fail("No renderer.");
+  }
+  if (!this->Actor)
+  {
+    return fail("No actor.");
+  }
+  vtkParticleSphereMapper* mapper = vtkParticleSphereMapper::SafeDownCast(this->Actor->GetMapper());
+  if (!mapper)
+  {
+    return fail("The actor's mapper is not a vtkParticleSphereMapper.");
+  }
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+
+  // image size and aspect ratio, as vtkOpenGLCamera::GetKeyMatrices
+  int width = this->ImageSize[0];
+  int height = this->ImageSize[1];
+  double aspect;
+  if (width > 0 && height > 0)
+  {
+    aspect = static_cast<double>(width) / height;
+  }
+  else
+  {
+    int x0, y0;
+    this->Renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+    if (width <= 0 || height <= 0)
+    {
+      return fail("The renderer's viewport is empty (no render window?): set ImageSize.");
+    }
+    aspect = this->Renderer->GetTiledAspectRatio();
+  }
+
+  // matrices (VTK: row-major, column vectors)
+  RayCamera& cam = internals.Camera;
+  cam.Width = width;
+  cam.Height = height;
+  cam.Parallel = camera->GetParallelProjection() != 0;
+  vtkMatrix4x4* projection = camera->GetProjectionTransformMatrix(aspect, -1, 1);
+  vtkMatrix4x4::DeepCopy(cam.P, projection);
+  vtkMatrix4x4::Invert(cam.P, cam.PInv);
+  internals.HaveCamera = true;
+  double viewMatrix[16];
+  vtkMatrix4x4::DeepCopy(viewMatrix, camera->GetModelViewTransformMatrix());
+  double mcvc[16];
+  vtkMatrix4x4::Multiply4x4(viewMatrix, &this->Actor->GetMatrix()->Element[0][0], mcvc);
+  // normal matrix of the view transform (inverse transpose of its 3x3 part)
+  double viewInverse[16];
+  vtkMatrix4x4::Invert(viewMatrix, viewInverse);
+
+  // ---- spheres in view coordinates
+  vtkPolyData* input = mapper->GetInput();
+  vtkFloatArray* radii = mapper->GetParticleRadii(); // validates the input
+  const vtkIdType numPts =
+    (input && input->GetPoints()) ? input->GetNumberOfPoints() : static_cast<vtkIdType>(0);
+  const double radiusScale = mapper->GetRadiusScaleVC(this->Actor);
+  vtkProperty* property = this->Actor->GetProperty();
+
+  vtkUnsignedCharArray* colors = numPts > 0 ? mapper->MapScalars(1.0) : nullptr;
+  if (colors && (colors->GetNumberOfTuples() != numPts || colors->GetNumberOfComponents() != 4))
+  {
+    colors = nullptr; // cell scalars do not colour particles (as on the GPU)
+  }
+  const double opacity = property->GetOpacity();
+
+  std::vector<double> planes;
+  for (int i = 0; i < mapper->GetNumberOfClippingPlanes(); ++i)
+  {
+    double eq[4];
+    mapper->GetClippingPlaneInDataCoords(this->Actor->GetMatrix(), i, eq);
+    planes.insert(planes.end(), eq, eq + 4);
+  }
+
+  std::vector<SphereVC> spheres;
+  std::vector<vtkIdType> ids;
+  if (numPts > 0 && radii && radii->GetNumberOfTuples() == numPts && opacity > 0.0)
+  {
+    spheres.reserve(numPts);
+    ids.reserve(numPts);
+    vtkPoints* points = input->GetPoints();
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      const double r = radii->GetValue(i) * radiusScale;
+      if (!(r > 0.0) || !std::isfinite(r))
+      {
+        continue; // skipped particle
+      }
+      if (colors && colors->GetValue(4 * i + 3) == 0)
+      {
+        continue; // opacity 0: every fragment is discarded
+      }
+      double p[4] = { 0, 0, 0, 1 };
+      points->GetPoint(i, p);
+      bool clipped = false;
+      for (size_t k = 0; k < planes.size(); k += 4)
+      {
+        clipped |= planes[k] * p[0] + planes[k + 1] * p[1] + planes[k + 2] * p[2] + planes[k + 3] <
+          0.0;
+      }
+      if (clipped)
+      {
+        continue;
+      }
+      double c[4];
+      MultiplyPoint(mcvc, p, c);
+      SphereVC s;
+      for (int k = 0; k < 3; ++k)
+      {
+        s.C[k] = c[k] / c[3];
+      }
+      s.R = r;
+      if (!std::isfinite(s.C[0]) || !std::isfinite(s.C[1]) || !std::isfinite(s.C[2]))
+      {
+        continue;
+      }
+      spheres.push_back(s);
+      ids.push_back(i);
+    }
+  }
+  if (spheres.size() > std::numeric_limits<std::uint32_t>::max())
+  {
+    return fail("Too many particles for the reference renderer.");
+  }
+  this->NumberOfSpheres = static_cast<vtkIdType>(spheres.size());
+
+  const double gridStart = vtkTimerLog::GetUniversalTime();
+  internals.Grid.Build(spheres);
+  this->LastGridBuildSeconds = vtkTimerLog::GetUniversalTime() - gridStart;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->GridResolution[k] = internals.Grid.GetResolution()[k];
+  }
+  this->NumberOfGridReferences = static_cast<vtkIdType>(internals.Grid.GetNumberOfReferences());
+  this->NumberOfLargeSpheres = static_cast<vtkIdType>(internals.Grid.GetNumberOfLarge());
+
+  // ---- lights, as vtkOpenGLRenderer::UpdateLights / UpdateLightingUniforms
+  std::vector<LightVC> lights;
+  int complexity = 0;
+  {
+    vtkLightCollection* collection = this->Renderer->GetLights();
+    vtkLight* first = nullptr;
+    int count = 0;
+    vtkCollectionSimpleIterator it;
+    collection->InitTraversal(it);
+    while (vtkLight* light = collection->GetNextLight(it))
+    {
+      first = first ? first : light;
+      if (light->GetSwitch())
+      {
+        ++count;
+        complexity = std::max(complexity, 1);
+      }
+      if (complexity == 1 && (count > 1 || light->GetLightType() != VTK_LIGHT_TYPE_HEADLIGHT))
+      {
+        complexity = 2;
+      }
+      if (complexity < 3 && light->GetPositional())
+      {
+        complexity = 3;
+      }
+    }
+    const bool followCamera = this->Renderer->GetLightFollowCamera() != 0;
+    vtkMatrix4x4* cameraLightMatrix = camera->GetCameraLightTransformMatrix();
+    auto addLight = [&](vtkLight* light, bool isCreatedHeadlight) {
+      LightVC l;
+      double color[3] = { 1, 1, 1 };
+      double intensity = 1.0;
+      if (light)
+      {
+        light->GetDiffuseColor(color);
+        intensity = light->GetIntensity();
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        l.Color[k] = color[k] * intensity;
+      }
+      // transformed position and focal point at render time
+      double pos[4] = { 0, 0, 0, 1 };
+      double focal[4] = { 0, 0, -1, 1 };
+      const bool headlight = isCreatedHeadlight || light->LightTypeIsHeadlight();
+      vtkMatrix4x4* lightMatrix = light ? light->GetTransformMatrix() : nullptr;
+      if (followCamera && headlight)
+      {
+        camera->GetPosition(pos);
+        camera->GetFocalPoint(focal);
+      }
+      else if (light)
+      {
+        light->GetPosition(pos);
+        light->GetFocalPoint(focal);
+      }
+      if (followCamera && light && light->LightTypeIsCameraLight())
+      {
+        lightMatrix = cameraLightMatrix;
+      }
+      if (lightMatrix)
+      {
+        double tp[4];
+        double tf[4];
+        lightMatrix->MultiplyPoint(pos, tp);
+        lightMatrix->MultiplyPoint(focal, tf);
+        for (int k = 0; k < 3; ++k)
+        {
+          pos[k] = tp[k] / tp[3];
+          focal[k] = tf[k] / tf[3];
+        }
+      }
+      double dir[3] = { focal[0] - pos[0], focal[1] - pos[1], focal[2] - pos[2] };
+      NormalizeInPlace(dir);
+      // normal transform: inverse transpose of the view matrix
+      for (int i = 0; i < 3; ++i)
+      {
+        l.Direction[i] = viewInverse[i] * dir[0] + viewInverse[4 + i] * dir[1] +
+          viewInverse[8 + i] * dir[2];
+      }
+      NormalizeInPlace(l.Direction);
+      double posVC[4];
+      MultiplyPoint(viewMatrix, pos, posVC);
+      for (int k = 0; k < 3; ++k)
+      {
+        l.Position[k] = posVC[k] / posVC[3];
+      }
+      if (light)
+      {
+        l.Positional = light->GetPositional() != 0;
+        light->GetAttenuationValues(l.Attenuation);
+        l.ConeAngle = light->GetConeAngle();
+        l.Exponent = light->GetExponent();
+      }
+      lights.push_back(l);
+    };
+    if (count == 0 && this->Renderer->GetAutomaticLightCreation())
+    {
+      // the renderer creates a headlight and adds it at the end of the collection
+      complexity = (!first || first->LightTypeIsHeadlight()) ? 1 : 2;
+      addLight(nullptr, true);
+    }
+    else
+    {
+      collection->InitTraversal(it);
+      while (vtkLight* light = collection->GetNextLight(it))
+      {
+        if (light->GetSwitch())
+        {
+          addLight(light, false);
+        }
+      }
+    }
+  }
+  // lighting off, or the representation of unlit points (vtkOpenGLPolyDataMapper's rules)
+  bool needLighting = true;
+  if (property->GetRepresentation() == VTK_POINTS)
+  {
+    const bool haveNormals = input && input->GetPointData()->GetNormals() != nullptr;
+    needLighting = (property->GetInterpolation() != VTK_FLAT && haveNormals) ||
+      property->GetRenderPointsAsSpheres();
+  }
+  if (!property->GetLighting() || !needLighting || lights.empty())
+  {
+    complexity = 0;
+  }
+  this->LightingComplexity = complexity;
+  this->LightingCount = complexity > 0 ? static_cast<int>(lights.size()) : 0;
+
+  // ---- material
+  double ambientK = property->GetAmbient();
+  double diffuseK = property->GetDiffuse();
+  double ambientColor[3];
+  double diffuseColor[3];
+  double specularColor[3];
+  property->GetAmbientColor(ambientColor);
+  property->GetDiffuseColor(diffuseColor);
+  property->GetSpecularColor(specularColor);
+  const double specularK = property->GetSpecular();
+  for (double& c : specularColor)
+  {
+    c *= specularK;
+  }
+  const double specularPower = property->GetSpecularPower();
+  double background[3];
+  this->Renderer->GetBackground(background);
+  const double backgroundAlpha = this->Renderer->GetBackgroundAlpha();
+
+  // ---- outputs
+  this->ColorImage = NewImage(width, height, 4, "Color");
+  this->DepthImage = NewImage(width, height, 1, "Depth");
+  this->ViewDepthImage = NewImage(width, height, 1, "ViewDepth");
+  this->IdImage->SetNumberOfComponents(1);
+  this->IdImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  double* colorOut =
+    vtkDoubleArray::SafeDownCast(this->ColorImage->GetPointData()->GetScalars())->GetPointer(0);
+  double* depthOut =
+    vtkDoubleArray::SafeDownCast(this->DepthImage->GetPointData()->GetScalars())->GetPointer(0);
+  double* viewDepthOut =
+    vtkDoubleArray::SafeDownCast(this->ViewDepthImage->GetPointData()->GetScalars())->GetPointer(0);
+  vtkIdType* idOut = this->IdImage->GetPointer(0);
+
+  const SphereGrid& grid = internals.Grid;
+  const unsigned char* rgba = colors ? colors->GetPointer(0) : nullptr;
+  vtkSMPTools::For(0, height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
+    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const size_t pixel = static_cast<size_t>(y) * width + x;
+        double o[3];
+        double d[3];
+        double tNear;
+        double tFar;
+        cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+        Hit hit;
+        const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
+        const double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
+        grid.Trace(cam, spheres, o, d, tMin, tMax, hit);
+
+        double rgbaOut[4] = { background[0], background[1], background[2], backgroundAlpha };
+        double depth = 1.0;
+        double viewDepth = -1.0;
+        vtkIdType id = -1;
+        if (hit.Index >= 0)
+        {
+          const SphereVC& s = spheres[hit.Index];
+          const vtkIdType pid = ids[hit.Index];
+          double n[3];
+          for (int k = 0; k < 3; ++k)
+          {
+            n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
+          }
+          const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
+          const double v[3] = { -d[0], -d[1], -d[2] };
+          double amb[3];
+          double dif[3];
+          double alpha = opacity;
+          if (rgba)
+          {
+            const unsigned char* c = rgba + 4 * pid;
+            for (int k = 0; k < 3; ++k)
+            {
+              amb[k] = ambientK * (c[k] / 255.0);
+              dif[k] = diffuseK * (c[k] / 255.0);
+            }
+            alpha *= c[3] / 255.0;
+          }
+          else
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              amb[k] = ambientK * ambientColor[k];
+              dif[k] = diffuseK * diffuseColor[k];
+            }
+          }
+          double color[3];
+          if (complexity == 0)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              color[k] = amb[k] + dif[k];
+            }
+          }
+          else
+          {
+            double diffuse[3] = { 0, 0, 0 };
+            double specular[3] = { 0, 0, 0 };
+            for (const LightVC& light : lights)
+            {
+              if (complexity == 1)
+              {
+                // Lighting.glsl, prHeadlight
+                const double df = std::max(0.000001, n[2]);
+                const double sf = std::pow(df, specularPower);
+                for (int k = 0; k < 3; ++k)
+                {
+                  diffuse[k] += df * light.Color[k];
+                  specular[k] += sf * light.Color[k];
+                }
+              }
+              else
+              {
+                SceneLight(n, v, p, light, complexity == 3, specularPower, diffuse, specular);
+              }
+            }
+            for (int k = 0; k < 3; ++k)
+            {
+              color[k] = amb[k] + diffuse[k] * dif[k] + specular[k] * specularColor[k];
+            }
+          }
+          const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
+            std::isfinite(color[2]) && std::isfinite(alpha);
+          if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
+            }
+            rgbaOut[3] = std::min(1.0, std::max(0.0, alpha));
+            depth = hit.Depth;
+            viewDepth = hit.T;
+            id = pid;
+          }
+        }
+        std::copy(rgbaOut, rgbaOut + 4, colorOut + 4 * pixel);
+        depthOut[pixel] = depth;
+        viewDepthOut[pixel] = viewDepth;
+        idOut[pixel] = id;
+      }
+    }
+  });
+
+  this->LastRenderSeconds = vtkTimerLog::GetUniversalTime() - startTime;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleReferenceRenderer::WindowDepthToViewDepth(
+  vtkImageData* windowDepth, vtkImageData* viewDepth)
+{
+  const vtkInternals& internals = *this->Internals;
+  if (!internals.HaveCamera || !windowDepth || !viewDepth)
+  {
+    vtkErrorMacro(<< "Nothing rendered yet, or no image.");
+    return false;
+  }
+  const RayCamera& cam = internals.Camera;
+  int dims[3];
+  windowDepth->GetDimensions(dims);
+  vtkDataArray* in = windowDepth->GetPointData()->GetScalars();
+  if (dims[0] != cam.Width || dims[1] != cam.Height || !in || in->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro(<< "The depth image is not a one-component " << cam.Width << "x" << cam.Height
+                  << " image.");
+    return false;
+  }
+  vtkSmartPointer<vtkImageData> out = NewImage(cam.Width, cam.Height, 1, "ViewDepth");
+  double* values = vtkDoubleArray::SafeDownCast(out->GetPointData()->GetScalars())->GetPointer(0);
+  vtkSMPTools::For(0, cam.Height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
+    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+    {
+      for (int x = 0; x < cam.Width; ++x)
+      {
+        const vtkIdType pixel = y * cam.Width + x;
+        const double depth = in->GetComponent(pixel, 0);
+        if (!(depth < 1.0) || !(depth >= 0.0))
+        {
+          values[pixel] = -1.0;
+          continue;
+        }
+        double o[3];
+        double d[3];
+        double tNear;
+        double tFar;
+        cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+        double p[3];
+        cam.Unproject(2.0 * (x + 0.5) / cam.Width - 1.0, 2.0 * (y + 0.5) / cam.Height - 1.0,
+          2.0 * depth - 1.0, p);
+        const double rel[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
+        const double t = Dot(rel, d);
+        values[pixel] = std::isfinite(t) ? t : -1.0;
+      }
+    }
+  });
+  viewDepth->ShallowCopy(out);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Renderer: " << this->Renderer << "\n";
+  os << indent << "Actor: " << this->Actor << "\n";
+  os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
+  os << indent << "LightingComplexity: " << this->LightingComplexity << "\n";
+  os << indent << "LightingCount: " << this->LightingCount << "\n";
+  os << indent << "NumberOfSpheres: " << this->NumberOfSpheres << "\n";
+  os << indent << "GridResolution: " << this->GridResolution[0] << " " << this->GridResolution[1]
+     << " " << this->GridResolution[2] << "\n";
+  os << indent << "NumberOfGridReferences: " << this->NumberOfGridReferences << "\n";
+  os << indent << "NumberOfLargeSpheres: " << this->NumberOfLargeSpheres << "\n";
+  os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
+  os << indent << "LastGridBuildSeconds: " << this->LastGridBuildSeconds << "\n";
+}
