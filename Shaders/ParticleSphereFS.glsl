@@ -21,8 +21,10 @@
 uniform int PrimitiveIDOffset;
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
+uniform mat4 MCVCMatrix;
 
 flat in vec4 centerRadiusVCVSOutput;
+flat in vec3 centerOffsetVCVSOutput;
 in vec3 offsetVCVSOutput;
 flat in int particleIdVSOutput;
 
@@ -55,15 +57,17 @@ void main()
   {
     discard;
   }
-  // first visible intersection
+  // first visible intersection; the depth is computed from the MC->VC translation and the
+  // small rest of the point separately (exact ordering with the camera far away)
+  vec3 translationVC = MCVCMatrix[3].xyz;
   vec3 hitRel = prRayS + prT0 * prRayD;
   float depth;
   bool inside = false;
-  if (!prDepthOfPointVC(centerVC + hitRel, VCDCMatrix, depth))
+  if (!prDepthOfSplitPointVC(translationVC, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
   {
     hitRel = prRayS + prT1 * prRayD;
     inside = true;
-    if (!prDepthOfPointVC(centerVC + hitRel, VCDCMatrix, depth))
+    if (!prDepthOfSplitPointVC(translationVC, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
     {
       discard;
     }

@@ -28,6 +28,8 @@ uniform int cameraParallel;
 //VTK::ValuePass::Dec
 
 flat out vec4 centerRadiusVCVSOutput;
+// the centre without the MC->VC translation (see prDepthOfSplitPointVC in RaySphere.glsl)
+flat out vec3 centerOffsetVCVSOutput;
 out vec3 offsetVCVSOutput;
 flat out int particleIdVSOutput;
 
@@ -48,8 +50,10 @@ void main()
   //VTK::ValuePass::Impl
   //VTK::Picking::Impl
 
-  vec4 centerH = MCVCMatrix * vertexMC;
-  vec3 centerVC = centerH.xyz / centerH.w;
+  // MCVCMatrix is affine: centre = rotation/scale part + translation, kept apart for the depth
+  vec3 centerOffsetVC = mat3(MCVCMatrix) * vertexMC.xyz;
+  vec3 centerVC = centerOffsetVC + MCVCMatrix[3].xyz;
+  centerOffsetVCVSOutput = centerOffsetVC;
   float radiusVC = radiusMC * radiusScaleVC;
   centerRadiusVCVSOutput = vec4(centerVC, radiusVC);
   if (!prSphereIsDrawable(centerVC, radiusVC))

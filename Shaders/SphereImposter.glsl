@@ -10,8 +10,9 @@
 // circle's radius is r*sqrt(1-(r/d)^2). The projected triangle therefore covers
 // the projected sphere exactly, also far off-axis, where a billboard through
 // the centre clips the silhouette. Parallel: circumscribing a circle of radius
-// r through the centre. Eye inside (or within 1% of) the sphere: a triangle
-// covering the whole viewport, its points on the near plane.
+// r through the centre. Eye inside the sphere or within 0.2 radii of its
+// surface: a triangle covering the whole viewport, its points on the near plane
+// (grazing views of so near a sphere are also more precise from there).
 // The clip-space z is set to 0: coverage does not depend on it and the
 // fragment stage writes the real depth, so the near plane never cuts it.
 //
@@ -42,7 +43,7 @@ void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel,
   else
   {
     float dist = length(centerVC);
-    if (dist <= 1.01 * radiusVC)
+    if (dist <= 1.2 * radiusVC)
     {
       // eye inside or at the surface: cover the viewport, rays start at the near plane
       vec2 v = prViewportCorners[corner];

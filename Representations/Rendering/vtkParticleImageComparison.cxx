@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleImageComparison);
@@ -80,8 +81,7 @@ bool CheckMask(vtkDataArray* mask, vtkIdType pixels)
   if (mask && mask->GetNumberOfTuples() != pixels)
   {
     vtkGenericWarningMacro(<< "vtkParticleImageComparison: the mask has "
-                           << mask->GetNumberOfTuples() << " values for " << pixels
-                           << " pixels.");
+                           << mask->GetNumberOfTuples() << " values for " << pixels << " pixels.");
     return false;
   }
   return true;
@@ -202,12 +202,16 @@ void vtkParticleImageComparison::MakeSilhouetteMask(
     for (int x = 0; x < width; ++x)
     {
       const vtkIdType self = id[static_cast<vtkIdType>(y) * width + x];
-      bool edge = false;
+      // what lies beyond the image border is unknown
+      bool edge = x < radius || y < radius || x >= width - radius || y >= height - radius;
       for (int yy = std::max(0, y - radius); yy <= std::min(height - 1, y + radius) && !edge; ++yy)
       {
         for (int xx = std::max(0, x - radius); xx <= std::min(width - 1, x + radius); ++xx)
         {
-          if (id[static_cast<vtkIdType>(yy) * width + xx] != self)
+          const int dx = xx - x;
+          const int dy = yy - y;
+          if (dx * dx + dy * dy <= radius * radius &&
+            id[static_cast<vtkIdType>(yy) * width + xx] != self)
           {
             edge = true;
             break;
@@ -272,6 +276,10 @@ bool vtkParticleImageComparison::MakeEdgeMask(
           for (int xx = std::max(0, x - radius); xx <= std::min(width - 1, x + radius) && !edge;
                ++xx)
           {
+            if ((xx - x) * (xx - x) + (yy - y) * (yy - y) > radius * radius)
+            {
+              continue;
+            }
             const vtkIdType other = static_cast<vtkIdType>(yy) * width + xx;
             for (int c = 0; c < nc; ++c)
             {
@@ -335,7 +343,8 @@ bool vtkParticleImageComparison::WriteErrorMap(
     const double channel[3] = { 3.0 * v, 3.0 * v - 1.0, 3.0 * v - 2.0 };
     for (int c = 0; c < 3; ++c)
     {
-      out[c] = static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, channel[c]))));
+      out[c] =
+        static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, channel[c]))));
     }
   }
   map->GetPointData()->SetScalars(rgb);
@@ -384,6 +393,11 @@ bool vtkParticleImageComparison::ReadImage(const char* fileName, vtkImageData* i
 {
   if (!fileName || !image)
   {
+    return false;
+  }
+  if (!std::ifstream(fileName).good())
+  {
+    vtkGenericWarningMacro(<< "vtkParticleImageComparison: cannot open " << fileName << ".");
     return false;
   }
   vtkNew<vtkImageReader2Factory> factory;

@@ -46,11 +46,11 @@ public:
    */
   struct Result
   {
-    double RMSE = 0.0;                       // over every compared channel value
-    double MaxAbsError = 0.0;                // over every compared channel
+    double RMSE = 0.0;        // over every compared channel value
+    double MaxAbsError = 0.0; // over every compared channel
     double ChannelMaxAbsError[4] = { 0, 0, 0, 0 };
-    int MaxErrorPixel[2] = { -1, -1 };       // (x, y) of the largest error
-    int NumberOfComponents = 0;              // channels compared
+    int MaxErrorPixel[2] = { -1, -1 }; // (x, y) of the largest error
+    int NumberOfComponents = 0;        // channels compared
     long long NumberOfComparedPixels = 0;
     long long NumberOfExcludedPixels = 0;
     long long NumberOfPixelsOverTolerance = 0; // pixels with a channel error > tolerance
@@ -60,8 +60,8 @@ public:
    * Compare a and b (same dimensions). excluded: optional, one value per pixel, non-zero
    * excludes the pixel. Returns false (and reports why) when the images cannot be compared.
    */
-  static bool Compare(vtkImageData* a, vtkImageData* b, vtkDataArray* excluded, double tolerance,
-    Result& result);
+  static bool Compare(
+    vtkImageData* a, vtkImageData* b, vtkDataArray* excluded, double tolerance, Result& result);
 #endif
 
   ///@{
@@ -94,19 +94,23 @@ public:
   /**
    * Exclusion mask of the silhouettes of an id image (one id per pixel, w x h, e.g.
    * vtkParticleReferenceRenderer::GetIdImage()): a pixel is excluded (mask value 1) when any pixel
-   * of the (2*radius+1)^2 square around it has another id. This removes sphere outlines against
-   * the background, sphere/sphere occlusion edges and intersection curves. Other pixels get 0.
+   * within the (Euclidean) radius, in pixels, has another id; radius 1 looks at the 4 edge
+   * neighbours, so a 1-pixel band on each side of every id change is excluded. Pixels within the
+   * radius of the image border are excluded too: what lies beyond the border is unknown (a
+   * silhouette may pass between the last pixel centre and the edge, where hits graze). This removes
+   * sphere outlines against the background, sphere/sphere occlusion edges and intersection curves.
+   * Other pixels get 0.
    */
   static void MakeSilhouetteMask(
     vtkIdTypeArray* ids, int width, int height, int radius, vtkUnsignedCharArray* mask);
 
   /**
-   * Exclusion mask for images without ids: a pixel is excluded when any pixel of the
-   * (2*radius+1)^2 square around it differs from it by more than threshold (any channel, [0,1]
+   * Exclusion mask for images without ids: a pixel is excluded when any pixel within the
+   * (Euclidean) radius differs from it by more than threshold (any channel, [0,1]
    * units) in image a or in image b (b may be null). Returns false if the images do not match.
    */
-  static bool MakeEdgeMask(vtkImageData* a, vtkImageData* b, int radius, double threshold,
-    vtkUnsignedCharArray* mask);
+  static bool MakeEdgeMask(
+    vtkImageData* a, vtkImageData* b, int radius, double threshold, vtkUnsignedCharArray* mask);
 
   /**
    * Write a PNG heat map of the largest per-channel |a - b| of each pixel multiplied by scale

@@ -1,6 +1,7 @@
 #include "vtkParticleReferenceRenderer.h"
 
 #include "vtkActor.h"
+#include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -197,7 +198,8 @@ inline void IntersectSphere(const RayCamera& cam, const double o[3], const doubl
     {
       return; // the exit is even further
     }
-    const double rel[3] = { q[0] + sign * h * d[0], q[1] + sign * h * d[1], q[2] + sign * h * d[2] };
+    const double rel[3] = { q[0] + sign * h * d[0], q[1] + sign * h * d[1],
+      q[2] + sign * h * d[2] };
     const double p[3] = { s.C[0] + rel[0], s.C[1] + rel[1], s.C[2] + rel[2] };
     double depth;
     if (cam.Depth(p, depth))
@@ -408,8 +410,8 @@ public:
         const std::uint32_t i = this->References[r];
         IntersectSphere(cam, o, d, spheres[i], i, best);
       }
-      const int axis = (tNext[0] < tNext[1]) ? (tNext[0] < tNext[2] ? 0 : 2)
-                                             : (tNext[1] < tNext[2] ? 1 : 2);
+      const int axis =
+        (tNext[0] < tNext[1]) ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2);
       const double cellExit = tNext[axis];
       // a hit inside this cell cannot be beaten by spheres of later cells; the margin covers
       // the rounding of the cell boundaries
@@ -443,7 +445,8 @@ private:
   size_t Flat(int i, int j, int k) const
   {
     return static_cast<size_t>(i) +
-      static_cast<size_t>(this->N[0]) * (static_cast<size_t>(j) + static_cast<size_t>(this->N[1]) * k);
+      static_cast<size_t>(this->N[0]) *
+      (static_cast<size_t>(j) + static_cast<size_t>(this->N[1]) * k);
   }
 
   double Lo[3] = { 0, 0, 0 };
@@ -456,6 +459,9 @@ private:
 };
 
 //------------------------------------------------------------------------------
+// spot lights whose cones take part in the surface ids
+const unsigned int MaximumConeBits = 16;
+
 // A light as the fragment shader sees it (uniform values in double).
 struct LightVC
 {
@@ -468,10 +474,12 @@ struct LightVC
   double Exponent = 1.0;
 };
 
-// Lighting.glsl, prSceneLight
-void SceneLight(const double n[3], const double v[3], const double p[3], const LightVC& light,
+// Lighting.glsl, prSceneLight. Returns true when the point is inside the light's spot cone (or
+// the light is not a spot).
+bool SceneLight(const double n[3], const double v[3], const double p[3], const LightVC& light,
   bool usePositional, double specularPower, double diffuse[3], double specular[3])
 {
+  bool inCone = true;
   double attenuation = 1.0;
   double l[3] = { light.Direction[0], light.Direction[1], light.Direction[2] };
   if (usePositional && light.Positional)
@@ -491,9 +499,8 @@ void SceneLight(const double n[3], const double v[3], const double p[3], const L
     if (light.ConeAngle < 90.0)
     {
       const double coneDot = Dot(l, light.Direction);
-      attenuation = coneDot >= std::cos(vtkMath::RadiansFromDegrees(light.ConeAngle))
-        ? attenuation * std::pow(coneDot, light.Exponent)
-        : 0.0;
+      inCone = coneDot >= std::cos(vtkMath::RadiansFromDegrees(light.ConeAngle));
+      attenuation = inCone ? attenuation * std::pow(coneDot, light.Exponent) : 0.0;
     }
   }
   const double minusL[3] = { -l[0], -l[1], -l[2] };
@@ -501,13 +508,13 @@ void SceneLight(const double n[3], const double v[3], const double p[3], const L
   const double nl = Dot(n, l);
   const double r[3] = { l[0] - 2.0 * nl * n[0], l[1] - 2.0 * nl * n[1], l[2] - 2.0 * nl * n[2] };
   const double signDf = df > 0.0 ? 1.0 : (df < 0.0 ? -1.0 : 0.0);
-  const double sf =
-    signDf * attenuation * std::pow(std::max(0.0, Dot(r, v)), specularPower);
+  const double sf = signDf * attenuation * std::pow(std::max(0.0, Dot(r, v)), specularPower);
   for (int k = 0; k < 3; ++k)
   {
     diffuse[k] += df * light.Color[k];
     specular[k] += sf * light.Color[k];
   }
+  return inCone;
 }
 
 // new image data of the given size and components
@@ -530,6 +537,8 @@ class vtkParticleReferenceRenderer::vtkInternals
 public:
   RayCamera Camera;
   bool HaveCamera = false;
+  // per pixel, bit i: the hit is inside the cone of the i-th spot light
+  std::vector<std::uint32_t> ConeBits;
   SphereGrid Grid;
 };
 
@@ -540,8 +549,11 @@ vtkParticleReferenceRenderer::vtkParticleReferenceRenderer()
   this->ColorImage = NewImage(0, 0, 4, "Color");
   this->DepthImage = NewImage(0, 0, 1, "Depth");
   this->ViewDepthImage = NewImage(0, 0, 1, "ViewDepth");
+  this->NormalImage = NewImage(0, 0, 3, "Normal");
   this->IdImage = vtkSmartPointer<vtkIdTypeArray>::New();
   this->IdImage->SetName("ParticleId");
+  this->InsideImage = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  this->InsideImage->SetName("Inside");
 }
 
 //------------------------------------------------------------------------------
@@ -568,9 +580,55 @@ vtkImageData* vtkParticleReferenceRenderer::GetViewDepthImage()
   return this->ViewDepthImage;
 }
 
+vtkImageData* vtkParticleReferenceRenderer::GetNormalImage()
+{
+  return this->NormalImage;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleReferenceRenderer::GetPixelRay(
+  double x, double y, double origin[3], double direction[3])
+{
+  if (!this->Internals->HaveCamera)
+  {
+    return false;
+  }
+  double tNear;
+  double tFar;
+  this->Internals->Camera.PixelRay(x, y, origin, direction, tNear, tFar);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 vtkIdTypeArray* vtkParticleReferenceRenderer::GetIdImage()
 {
   return this->IdImage;
+}
+
+vtkUnsignedCharArray* vtkParticleReferenceRenderer::GetInsideImage()
+{
+  return this->InsideImage;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleReferenceRenderer::GetSurfaceIdImage(vtkIdTypeArray* surfaceIds)
+{
+  if (!surfaceIds)
+  {
+    return;
+  }
+  const vtkIdType n = this->IdImage->GetNumberOfTuples();
+  const std::vector<std::uint32_t>& cones = this->Internals->ConeBits;
+  const bool haveCones = cones.size() == static_cast<size_t>(n);
+  surfaceIds->SetNumberOfComponents(1);
+  surfaceIds->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const vtkIdType id = this->IdImage->GetValue(i);
+    const vtkIdType surface = 2 * id + this->InsideImage->GetValue(i);
+    const vtkIdType cone = haveCones ? static_cast<vtkIdType>(cones[i]) : 0;
+    surfaceIds->SetValue(i, id < 0 ? -1 : (surface << MaximumConeBits) + cone);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -579,12 +637,15 @@ bool vtkParticleReferenceRenderer::Render()
   const double startTime = vtkTimerLog::GetUniversalTime();
   vtkInternals& internals = *this->Internals;
   internals.HaveCamera = false;
-  auto fail = [this](const char* why) {
+  auto fail = [this](const char* why)
+  {
     vtkErrorMacro(<< why);
     this->ColorImage = NewImage(0, 0, 4, "Color");
     this->DepthImage = NewImage(0, 0, 1, "Depth");
     this->ViewDepthImage = NewImage(0, 0, 1, "ViewDepth");
+    this->NormalImage = NewImage(0, 0, 3, "Normal");
     this->IdImage->SetNumberOfTuples(0);
+    this->InsideImage->SetNumberOfTuples(0);
     return false;
   };
   if (!this->Renderer)
@@ -639,6 +700,10 @@ bool vtkParticleReferenceRenderer::Render()
   vtkMatrix4x4::Invert(viewMatrix, viewInverse);
 
   // ---- spheres in view coordinates
+  if (!mapper->GetStatic() && mapper->GetInputAlgorithm())
+  {
+    mapper->GetInputAlgorithm()->Update(); // as the mapper does before drawing
+  }
   vtkPolyData* input = mapper->GetInput();
   vtkFloatArray* radii = mapper->GetParticleRadii(); // validates the input
   const vtkIdType numPts =
@@ -684,8 +749,8 @@ bool vtkParticleReferenceRenderer::Render()
       bool clipped = false;
       for (size_t k = 0; k < planes.size(); k += 4)
       {
-        clipped |= planes[k] * p[0] + planes[k + 1] * p[1] + planes[k + 2] * p[2] + planes[k + 3] <
-          0.0;
+        clipped |=
+          planes[k] * p[0] + planes[k + 1] * p[1] + planes[k + 2] * p[2] + planes[k + 3] < 0.0;
       }
       if (clipped)
       {
@@ -751,7 +816,8 @@ bool vtkParticleReferenceRenderer::Render()
     }
     const bool followCamera = this->Renderer->GetLightFollowCamera() != 0;
     vtkMatrix4x4* cameraLightMatrix = camera->GetCameraLightTransformMatrix();
-    auto addLight = [&](vtkLight* light, bool isCreatedHeadlight) {
+    auto addLight = [&](vtkLight* light, bool isCreatedHeadlight)
+    {
       LightVC l;
       double color[3] = { 1, 1, 1 };
       double intensity = 1.0;
@@ -800,8 +866,8 @@ bool vtkParticleReferenceRenderer::Render()
       // normal transform: inverse transpose of the view matrix
       for (int i = 0; i < 3; ++i)
       {
-        l.Direction[i] = viewInverse[i] * dir[0] + viewInverse[4 + i] * dir[1] +
-          viewInverse[8 + i] * dir[2];
+        l.Direction[i] =
+          viewInverse[i] * dir[0] + viewInverse[4 + i] * dir[1] + viewInverse[8 + i] * dir[2];
       }
       NormalizeInPlace(l.Direction);
       double posVC[4];
@@ -875,6 +941,7 @@ bool vtkParticleReferenceRenderer::Render()
   this->ColorImage = NewImage(width, height, 4, "Color");
   this->DepthImage = NewImage(width, height, 1, "Depth");
   this->ViewDepthImage = NewImage(width, height, 1, "ViewDepth");
+  this->NormalImage = NewImage(width, height, 3, "Normal");
   this->IdImage->SetNumberOfComponents(1);
   this->IdImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
   double* colorOut =
@@ -883,118 +950,142 @@ bool vtkParticleReferenceRenderer::Render()
     vtkDoubleArray::SafeDownCast(this->DepthImage->GetPointData()->GetScalars())->GetPointer(0);
   double* viewDepthOut =
     vtkDoubleArray::SafeDownCast(this->ViewDepthImage->GetPointData()->GetScalars())->GetPointer(0);
+  double* normalOut =
+    vtkDoubleArray::SafeDownCast(this->NormalImage->GetPointData()->GetScalars())->GetPointer(0);
   vtkIdType* idOut = this->IdImage->GetPointer(0);
+  this->InsideImage->SetNumberOfComponents(1);
+  this->InsideImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  unsigned char* insideOut = this->InsideImage->GetPointer(0);
+  internals.ConeBits.assign(static_cast<size_t>(width) * height, 0);
+  std::uint32_t* coneOut = internals.ConeBits.data();
 
   const SphereGrid& grid = internals.Grid;
   const unsigned char* rgba = colors ? colors->GetPointer(0) : nullptr;
-  vtkSMPTools::For(0, height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
-    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+  vtkSMPTools::For(0, height,
+    [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
-      for (int x = 0; x < width; ++x)
+      for (vtkIdType y = rowBegin; y < rowEnd; ++y)
       {
-        const size_t pixel = static_cast<size_t>(y) * width + x;
-        double o[3];
-        double d[3];
-        double tNear;
-        double tFar;
-        cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
-        Hit hit;
-        const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
-        const double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
-        grid.Trace(cam, spheres, o, d, tMin, tMax, hit);
-
-        double rgbaOut[4] = { background[0], background[1], background[2], backgroundAlpha };
-        double depth = 1.0;
-        double viewDepth = -1.0;
-        vtkIdType id = -1;
-        if (hit.Index >= 0)
+        for (int x = 0; x < width; ++x)
         {
-          const SphereVC& s = spheres[hit.Index];
-          const vtkIdType pid = ids[hit.Index];
-          double n[3];
-          for (int k = 0; k < 3; ++k)
+          const size_t pixel = static_cast<size_t>(y) * width + x;
+          double o[3];
+          double d[3];
+          double tNear;
+          double tFar;
+          cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+          Hit hit;
+          const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
+          const double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
+          grid.Trace(cam, spheres, o, d, tMin, tMax, hit);
+
+          double rgbaOut[4] = { background[0], background[1], background[2], backgroundAlpha };
+          double depth = 1.0;
+          double viewDepth = -1.0;
+          vtkIdType id = -1;
+          unsigned char inside = 0;
+          std::uint32_t cones = 0;
+          double normal[3] = { 0, 0, 0 };
+          if (hit.Index >= 0)
           {
-            n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
-          }
-          const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
-          const double v[3] = { -d[0], -d[1], -d[2] };
-          double amb[3];
-          double dif[3];
-          double alpha = opacity;
-          if (rgba)
-          {
-            const unsigned char* c = rgba + 4 * pid;
+            const SphereVC& s = spheres[hit.Index];
+            const vtkIdType pid = ids[hit.Index];
+            double n[3];
             for (int k = 0; k < 3; ++k)
             {
-              amb[k] = ambientK * (c[k] / 255.0);
-              dif[k] = diffuseK * (c[k] / 255.0);
+              n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
             }
-            alpha *= c[3] / 255.0;
-          }
-          else
-          {
-            for (int k = 0; k < 3; ++k)
+            const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
+            const double v[3] = { -d[0], -d[1], -d[2] };
+            double amb[3];
+            double dif[3];
+            double alpha = opacity;
+            if (rgba)
             {
-              amb[k] = ambientK * ambientColor[k];
-              dif[k] = diffuseK * diffuseColor[k];
-            }
-          }
-          double color[3];
-          if (complexity == 0)
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              color[k] = amb[k] + dif[k];
-            }
-          }
-          else
-          {
-            double diffuse[3] = { 0, 0, 0 };
-            double specular[3] = { 0, 0, 0 };
-            for (const LightVC& light : lights)
-            {
-              if (complexity == 1)
+              const unsigned char* c = rgba + 4 * pid;
+              for (int k = 0; k < 3; ++k)
               {
-                // Lighting.glsl, prHeadlight
-                const double df = std::max(0.000001, n[2]);
-                const double sf = std::pow(df, specularPower);
-                for (int k = 0; k < 3; ++k)
+                amb[k] = ambientK * (c[k] / 255.0);
+                dif[k] = diffuseK * (c[k] / 255.0);
+              }
+              alpha *= c[3] / 255.0;
+            }
+            else
+            {
+              for (int k = 0; k < 3; ++k)
+              {
+                amb[k] = ambientK * ambientColor[k];
+                dif[k] = diffuseK * diffuseColor[k];
+              }
+            }
+            double color[3];
+            if (complexity == 0)
+            {
+              for (int k = 0; k < 3; ++k)
+              {
+                color[k] = amb[k] + dif[k];
+              }
+            }
+            else
+            {
+              double diffuse[3] = { 0, 0, 0 };
+              double specular[3] = { 0, 0, 0 };
+              unsigned int bit = 0;
+              for (const LightVC& light : lights)
+              {
+                if (complexity == 1)
                 {
-                  diffuse[k] += df * light.Color[k];
-                  specular[k] += sf * light.Color[k];
+                  // Lighting.glsl, prHeadlight
+                  const double df = std::max(0.000001, n[2]);
+                  const double sf = std::pow(df, specularPower);
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    diffuse[k] += df * light.Color[k];
+                    specular[k] += sf * light.Color[k];
+                  }
+                }
+                else
+                {
+                  const bool inCone =
+                    SceneLight(n, v, p, light, complexity == 3, specularPower, diffuse, specular);
+                  if (complexity == 3 && light.Positional && light.ConeAngle < 90.0 &&
+                    bit < MaximumConeBits)
+                  {
+                    cones |= (inCone ? 1u : 0u) << bit++;
+                  }
                 }
               }
-              else
+              for (int k = 0; k < 3; ++k)
               {
-                SceneLight(n, v, p, light, complexity == 3, specularPower, diffuse, specular);
+                color[k] = amb[k] + diffuse[k] * dif[k] + specular[k] * specularColor[k];
               }
             }
-            for (int k = 0; k < 3; ++k)
+            const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
+              std::isfinite(color[2]) && std::isfinite(alpha);
+            if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
             {
-              color[k] = amb[k] + diffuse[k] * dif[k] + specular[k] * specularColor[k];
+              for (int k = 0; k < 3; ++k)
+              {
+                rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
+              }
+              rgbaOut[3] = std::min(1.0, std::max(0.0, alpha));
+              depth = hit.Depth;
+              viewDepth = hit.T;
+              id = pid;
+              inside = hit.Inside ? 1 : 0;
+              std::copy(n, n + 3, normal);
             }
           }
-          const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
-            std::isfinite(color[2]) && std::isfinite(alpha);
-          if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
-            }
-            rgbaOut[3] = std::min(1.0, std::max(0.0, alpha));
-            depth = hit.Depth;
-            viewDepth = hit.T;
-            id = pid;
-          }
+          std::copy(rgbaOut, rgbaOut + 4, colorOut + 4 * pixel);
+          depthOut[pixel] = depth;
+          viewDepthOut[pixel] = viewDepth;
+          idOut[pixel] = id;
+          insideOut[pixel] = inside;
+          coneOut[pixel] = id >= 0 ? cones : 0;
+          std::copy(normal, normal + 3, normalOut + 3 * pixel);
         }
-        std::copy(rgbaOut, rgbaOut + 4, colorOut + 4 * pixel);
-        depthOut[pixel] = depth;
-        viewDepthOut[pixel] = viewDepth;
-        idOut[pixel] = id;
       }
-    }
-  });
+    });
 
   this->LastRenderSeconds = vtkTimerLog::GetUniversalTime() - startTime;
   this->Modified();
@@ -1023,32 +1114,34 @@ bool vtkParticleReferenceRenderer::WindowDepthToViewDepth(
   }
   vtkSmartPointer<vtkImageData> out = NewImage(cam.Width, cam.Height, 1, "ViewDepth");
   double* values = vtkDoubleArray::SafeDownCast(out->GetPointData()->GetScalars())->GetPointer(0);
-  vtkSMPTools::For(0, cam.Height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
-    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+  vtkSMPTools::For(0, cam.Height,
+    [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
-      for (int x = 0; x < cam.Width; ++x)
+      for (vtkIdType y = rowBegin; y < rowEnd; ++y)
       {
-        const vtkIdType pixel = y * cam.Width + x;
-        const double depth = in->GetComponent(pixel, 0);
-        if (!(depth < 1.0) || !(depth >= 0.0))
+        for (int x = 0; x < cam.Width; ++x)
         {
-          values[pixel] = -1.0;
-          continue;
+          const vtkIdType pixel = y * cam.Width + x;
+          const double depth = in->GetComponent(pixel, 0);
+          if (!(depth < 1.0) || !(depth >= 0.0))
+          {
+            values[pixel] = -1.0;
+            continue;
+          }
+          double o[3];
+          double d[3];
+          double tNear;
+          double tFar;
+          cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+          double p[3];
+          cam.Unproject(2.0 * (x + 0.5) / cam.Width - 1.0, 2.0 * (y + 0.5) / cam.Height - 1.0,
+            2.0 * depth - 1.0, p);
+          const double rel[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
+          const double t = Dot(rel, d);
+          values[pixel] = std::isfinite(t) ? t : -1.0;
         }
-        double o[3];
-        double d[3];
-        double tNear;
-        double tFar;
-        cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
-        double p[3];
-        cam.Unproject(2.0 * (x + 0.5) / cam.Width - 1.0, 2.0 * (y + 0.5) / cam.Height - 1.0,
-          2.0 * depth - 1.0, p);
-        const double rel[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
-        const double t = Dot(rel, d);
-        values[pixel] = std::isfinite(t) ? t : -1.0;
       }
-    }
-  });
+    });
   viewDepth->ShallowCopy(out);
   return true;
 }

@@ -47,7 +47,10 @@ class vtkParticleSphereMapper::vtkInternals
 public:
   // Sanitised per-particle data, rebuilt when the input or the radius settings change.
   vtkNew<vtkFloatArray> Radii;     // MC radius, 0 for skipped particles
-  vtkNew<vtkFloatArray> Positions; // float positions, skipped ones moved to a valid point
+  // The positions uploaded: the input's own point array when every particle is valid (no copy),
+  // else a copy in the input's precision with the skipped particles moved onto a valid one. The
+  // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
+  vtkSmartPointer<vtkDataArray> Positions;
   double CenterBounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MaxRadius = 0.0;
   vtkIdType NumberOfPoints = 0;
@@ -73,7 +76,6 @@ vtkParticleSphereMapper::vtkParticleSphereMapper()
   : Internals(new vtkInternals)
 {
   this->Internals->Radii->SetName("ParticleRadius");
-  this->Internals->Positions->SetNumberOfComponents(3);
 }
 
 //------------------------------------------------------------------------------
@@ -118,7 +120,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   {
     warnings << "The input has no points: nothing to draw.";
     internals.Radii->SetNumberOfTuples(0);
-    internals.Positions->SetNumberOfTuples(0);
+    internals.Positions = nullptr;
     internals.MaxRadius = 0.0;
     vtkMath::UninitializeBounds(internals.CenterBounds);
     this->NumberOfSkippedParticles = 0;
@@ -155,9 +157,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
 
     vtkDataArray* points = input->GetPoints()->GetData();
     internals.Radii->SetNumberOfTuples(numPts);
-    internals.Positions->SetNumberOfTuples(numPts);
     float* radii = internals.Radii->GetPointer(0);
-    float* positions = internals.Positions->GetPointer(0);
     const double constantRadius = this->Radius;
 
     vtkSMPThreadLocal<ParticleSummary> local;
@@ -185,7 +185,6 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
           radii[i] = static_cast<float>(r);
           for (int k = 0; k < 3; ++k)
           {
-            positions[3 * i + k] = static_cast<float>(p[k]);
             s.Bounds[2 * k] = std::min(s.Bounds[2 * k], p[k]);
             s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
           }
@@ -198,8 +197,6 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
         else
         {
           radii[i] = 0.0f;
-          positions[3 * i] = positions[3 * i + 1] = positions[3 * i + 2] =
-            std::numeric_limits<float>::quiet_NaN(); // placeholder, replaced below
         }
       }
     });
@@ -224,22 +221,37 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     // Skipped particles get the position of a valid one (radius 0 keeps them invisible), so that
     // no NaN reaches the GPU and the VBO's automatic shift/scale sees only real coordinates.
     const vtkIdType skipped = total.BadRadius + total.BadPosition;
-    if (skipped > 0)
+    if (skipped == 0)
     {
-      float fill[3] = { 0.0f, 0.0f, 0.0f };
+      internals.Positions = points;
+    }
+    else
+    {
+      vtkSmartPointer<vtkDataArray> copy;
+      copy.TakeReference(points->NewInstance());
+      copy->SetNumberOfComponents(3);
+      copy->SetNumberOfTuples(numPts);
+      double fill[3] = { 0.0, 0.0, 0.0 };
       if (total.FirstValid >= 0)
       {
-        std::copy(positions + 3 * total.FirstValid, positions + 3 * total.FirstValid + 3, fill);
+        points->GetTuple(total.FirstValid, fill);
       }
       vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
+        double p[3];
         for (vtkIdType i = begin; i < end; ++i)
         {
           if (radii[i] == 0.0f)
           {
-            std::copy(fill, fill + 3, positions + 3 * i);
+            copy->SetTuple(i, fill);
+          }
+          else
+          {
+            points->GetTuple(i, p);
+            copy->SetTuple(i, p);
           }
         }
       });
+      internals.Positions = copy;
     }
     if (total.BadPosition > 0)
     {
