@@ -2,7 +2,12 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
 #include "vtkLightingMapPass.h"
 #include "vtkMath.h"
@@ -65,6 +70,9 @@ public:
   vtkNew<vtkTextureObject> RadiusTexture;
   vtkNew<vtkTextureObject> ColorTexture;
   bool HaveColors = false;
+  // selection: the first vertex cell holding each point (-1: none)
+  std::vector<vtkIdType> VertexCellOfPoint;
+  vtkTimeStamp VertexCellOfPointTime;
   // particles drawn: all of them, or the GPU's texture-buffer limit
   vtkIdType DrawCount = 0;
   // GPU timer query around the draw call (CollectTimings)
@@ -200,6 +208,9 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
         }
       }
     });
+
+    // written through a raw pointer: tell the VBO cache the values are new
+    internals.Radii->Modified();
 
     ParticleSummary total;
     for (const ParticleSummary& s : local)
@@ -645,6 +656,12 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   if (numPts > 0 && posVBO && radiusVBO)
   {
     const unsigned int n = static_cast<unsigned int>(internals.DrawCount);
+    // New texture objects on every upload: re-attaching a re-specified buffer to an existing
+    // buffer texture keeps the old size on some drivers (Mesa 22), which would draw only as many
+    // particles as the first upload had.
+    internals.CenterTexture->ReleaseGraphicsResources(context);
+    internals.RadiusTexture->ReleaseGraphicsResources(context);
+    internals.ColorTexture->ReleaseGraphicsResources(context);
     internals.CenterTexture->SetContext(context);
     internals.RadiusTexture->SetContext(context);
     bool ok = internals.CenterTexture->CreateTextureBuffer(n, 3, VTK_FLOAT, posVBO) &&
@@ -676,6 +693,100 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     glFinish(); // the upload is complete when the GPU has the buffers
   }
   this->LastUploadSeconds = vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::ProcessSelectorPixelBuffers(
+  vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop)
+{
+  const int pass = sel->GetCurrentPass();
+  vtkPolyData* poly = this->CurrentInput;
+  if (!poly || !this->PopulateSelectionSettings ||
+    (pass != vtkHardwareSelector::CELL_ID_LOW24 && pass != vtkHardwareSelector::CELL_ID_HIGH24))
+  {
+    // point ids, process ids, ...: the superclass's handling is right for particles
+    this->Superclass::ProcessSelectorPixelBuffers(sel, pixeloffsets, prop);
+    return;
+  }
+
+  // The shader wrote the particle index. Map it to the vertex cell holding the particle.
+  vtkInternals& internals = *this->Internals;
+  vtkCellArray* verts = poly->GetVerts();
+  const vtkIdType numPts = poly->GetNumberOfPoints();
+  if (verts && verts->GetNumberOfCells() > 0 &&
+    (internals.VertexCellOfPointTime < poly->GetMTime() ||
+      static_cast<vtkIdType>(internals.VertexCellOfPoint.size()) != numPts))
+  {
+    internals.VertexCellOfPoint.assign(numPts, -1);
+    vtkIdType cellId = 0;
+    auto iter = vtk::TakeSmartPointer(verts->NewIterator());
+    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      iter->GetCurrentCell(size, ids);
+      for (vtkIdType k = 0; k < size; ++k)
+      {
+        if (ids[k] >= 0 && ids[k] < numPts && internals.VertexCellOfPoint[ids[k]] < 0)
+        {
+          internals.VertexCellOfPoint[ids[k]] = cellId;
+        }
+      }
+    }
+    internals.VertexCellOfPointTime.Modified();
+  }
+  const bool mapToVerts = verts && verts->GetNumberOfCells() > 0;
+  vtkIdTypeArray* cellIdArray = this->CellIdArrayName
+    ? vtkArrayDownCast<vtkIdTypeArray>(poly->GetCellData()->GetArray(this->CellIdArrayName))
+    : nullptr;
+
+  unsigned char* rawLow = sel->GetRawPixelBuffer(vtkHardwareSelector::CELL_ID_LOW24);
+  unsigned char* rawHigh = sel->GetRawPixelBuffer(vtkHardwareSelector::CELL_ID_HIGH24);
+  unsigned char* out = sel->GetPixelBuffer(pass);
+  if (!rawLow || !out)
+  {
+    return;
+  }
+  for (unsigned int pos : pixeloffsets)
+  {
+    vtkIdType particle = rawLow[pos] | (rawLow[pos + 1] << 8) | (rawLow[pos + 2] << 16);
+    if (rawHigh)
+    {
+      particle |= static_cast<vtkIdType>(rawHigh[pos]) << 24;
+    }
+    vtkIdType id = particle;
+    if (mapToVerts && particle < numPts)
+    {
+      id = internals.VertexCellOfPoint[particle];
+      if (id >= 0 && cellIdArray && id < cellIdArray->GetNumberOfTuples())
+      {
+        id = cellIdArray->GetValue(id);
+      }
+    }
+    if (pass == vtkHardwareSelector::CELL_ID_LOW24)
+    {
+      out[pos] = id & 0xff;
+      out[pos + 1] = (id >> 8) & 0xff;
+      out[pos + 2] = (id >> 16) & 0xff;
+    }
+    else
+    {
+      out[pos] = (id >> 24) & 0xff;
+      out[pos + 1] = (id >> 32) & 0xff;
+      out[pos + 2] = (id >> 40) & 0xff;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor*)
+{
+  // The selector sizes its id passes from these maxima; the superclass derives the cell maximum
+  // from index buffers, which this mapper does not have.
+  vtkHardwareSelector* selector = ren->GetSelector();
+  const vtkIdType maxId = std::max<vtkIdType>(0, this->Internals->DrawCount - 1);
+  selector->UpdateMaximumPointId(maxId);
+  selector->UpdateMaximumCellId(maxId);
 }
 
 //------------------------------------------------------------------------------

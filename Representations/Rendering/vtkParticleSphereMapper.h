@@ -57,6 +57,7 @@
 #include "vtkParticleRenderingModule.h" // for export macro
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkFloatArray;
 
@@ -129,6 +130,14 @@ public:
   double* GetBounds() override;
 
   /**
+   * Selection ids: a point selection returns the particle index; a cell selection returns the
+   * vertex cell that holds the particle when the input has vertex cells (mapped through the
+   * selector's cell id array when set), else the particle index.
+   */
+  void ProcessSelectorPixelBuffers(
+    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
+
+  /**
    * Spheres are drawn for every point, whatever the cells are.
    */
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
@@ -173,6 +182,9 @@ protected:
   // uniforms and attributes
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  // picking: point and cell ids are both the particle index
+  void UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor* act) override;
 
   // buffers and drawing
   bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;

@@ -1,7 +1,9 @@
 // Picking with the hardware selector in a scene of particles and a polygonal plane:
-// - a cell selection over a single sphere's pixels returns the particles' actor and the index of
-//   that particle (the particle index is the id, whatever the cells of the data are);
-// - a point selection there returns the same index;
+// - a cell selection over a single sphere's pixels returns the particles' actor and the vertex
+//   cell holding that particle (the cells list the particles in another order);
+// - a point selection returns the particle index;
+// - on data without cells (as ParaView delivers point data) both return the particle index, also
+//   for ids that need more than one byte;
 // - selecting over the plane returns the plane's actor, not the particles (other props unharmed).
 #include "prTestUtilities.h"
 
@@ -115,9 +117,9 @@ int TestParticleSphereMapperPicking(int argc, char* argv[])
   // the right particle (index 2) is centred at pixel (150 + 60, 100)
   std::vector<vtkIdType> cells =
     Select(renderer, vtkDataObject::FIELD_ASSOCIATION_CELLS, actor, 210, 100, 4, other);
-  ok &= prTest::Check(cells.size() == 1 && cells[0] == 2,
-    "cell selection over particle 2 returned " + std::to_string(cells.size()) + " ids" +
-      (cells.empty() ? "" : ", first " + std::to_string(cells[0])));
+  ok &= prTest::Check(cells.size() == 1 && cells[0] == 0,
+    "cell selection over particle 2 (vertex cell 0) returned " + std::to_string(cells.size()) +
+      " ids" + (cells.empty() ? "" : ", first " + std::to_string(cells[0])));
   ok &= prTest::Check(!other, "cell selection over particle 2 selected another prop");
 
   std::vector<vtkIdType> pointIds =
@@ -131,5 +133,34 @@ int TestParticleSphereMapperPicking(int argc, char* argv[])
     Select(renderer, vtkDataObject::FIELD_ASSOCIATION_CELLS, actor, 150, 170, 4, other);
   ok &= prTest::Check(none.empty(), "selection over the plane returned particles");
   ok &= prTest::Check(other, "selection over the plane did not select the plane");
+
+  // 1000 particles without any cell (as ParaView delivers point data): a 40 x 25 grid filling the
+  // view; cell and point selections over particle 837 (column 37, row 20) must both return 837
+  vtkNew<vtkPolyData> cloud;
+  vtkNew<vtkPoints> cloudPoints;
+  for (int j = 0; j < 25; ++j)
+  {
+    for (int i = 0; i < 40; ++i)
+    {
+      cloudPoints->InsertNextPoint(-7.5 + 0.25 * i + 0.125, -5 + 0.4 * j + 0.2, 0);
+    }
+  }
+  cloud->SetPoints(cloudPoints);
+  mapper->SetInputData(cloud);
+  mapper->SetRadius(0.12);
+  renderer->RemoveActor(planeActor);
+  camera->SetParallelScale(5);
+  renderer->ResetCameraClippingRange();
+  window->SetSize(300, 200); // 20 px per unit: particle (i, j) at pixel (5 i + 2.5, 8 j + 4)
+  window->Render();
+  const int px = 5 * 37 + 2, py = 8 * 20 + 4;
+  cells = Select(renderer, vtkDataObject::FIELD_ASSOCIATION_CELLS, actor, px, py, 1, other);
+  ok &= prTest::Check(cells.size() == 1 && cells[0] == 837,
+    "cell-less data: cell selection returned " + std::to_string(cells.size()) + " ids" +
+      (cells.empty() ? "" : ", first " + std::to_string(cells[0])) + ", expected 837");
+  pointIds = Select(renderer, vtkDataObject::FIELD_ASSOCIATION_POINTS, actor, px, py, 1, other);
+  ok &= prTest::Check(pointIds.size() == 1 && pointIds[0] == 837,
+    "cell-less data: point selection returned " + std::to_string(pointIds.size()) + " ids" +
+      (pointIds.empty() ? "" : ", first " + std::to_string(pointIds[0])) + ", expected 837");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

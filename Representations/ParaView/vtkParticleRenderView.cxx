@@ -1,0 +1,90 @@
+#include "vtkParticleRenderView.h"
+
+#include "vtkCameraPass.h"
+#include "vtkImageProcessingPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVDefaultPass.h"
+#include "vtkPVSynchronizedRenderer.h"
+#include "vtkParticlePassChain.h"
+#include "vtkRenderer.h"
+
+vtkStandardNewMacro(vtkParticleRenderView);
+
+//------------------------------------------------------------------------------
+vtkParticleRenderView::vtkParticleRenderView()
+{
+  vtkNew<vtkPVDefaultPass> defaultPass;
+  this->ParticlePassChain->SetInnerPass(defaultPass);
+  // The synchronized renderer keeps this pass in its render-pass slot through every rebuild of
+  // the renderer's pass tree (see the class documentation).
+  this->SynchronizedRenderers->SetRenderPass(this->ParticlePassChain);
+}
+
+//------------------------------------------------------------------------------
+vtkParticleRenderView::~vtkParticleRenderView() = default;
+
+//------------------------------------------------------------------------------
+vtkParticlePassChain* vtkParticleRenderView::GetParticlePassChain()
+{
+  return this->ParticlePassChain;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
+{
+  // OSPRay and value passes put their own pass in the slot and restore ours afterwards; only an
+  // empty slot means the chain was lost.
+  if (this->SynchronizedRenderers->GetRenderPass() == nullptr)
+  {
+    this->SynchronizedRenderers->SetRenderPass(this->ParticlePassChain);
+  }
+  this->Superclass::AboutToRenderOnLocalProcess(interactive);
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetParticlePassChainInstalled()
+{
+  vtkRenderer* renderer = this->GetRenderer();
+  vtkRenderPass* pass = renderer ? renderer->GetPass() : nullptr;
+  // [FXAA] -> [image processing] -> camera -> render pass; a few more levels for safety.
+  for (int depth = 0; pass != nullptr && depth < 16; ++depth)
+  {
+    if (pass == this->ParticlePassChain.GetPointer())
+    {
+      return 1;
+    }
+    if (auto imageProcessing = vtkImageProcessingPass::SafeDownCast(pass))
+    {
+      pass = imageProcessing->GetDelegatePass();
+    }
+    else if (auto camera = vtkCameraPass::SafeDownCast(pass))
+    {
+      pass = camera->GetDelegatePass();
+    }
+    else
+    {
+      // A pass of a type we cannot see through (IceT's composite pass in parallel): it runs
+      // the synchronized renderer's render-pass slot.
+      return (this->SynchronizedRenderers->GetRenderPass() ==
+               this->ParticlePassChain.GetPointer() &&
+               !this->GetEnableOSPRay())
+        ? 1
+        : 0;
+    }
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetNumberOfParticlePasses()
+{
+  return this->ParticlePassChain->GetNumberOfPasses();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParticlePassChain:\n";
+  this->ParticlePassChain->PrintSelf(os, indent.GetNextIndent());
+}

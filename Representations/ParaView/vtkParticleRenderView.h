@@ -1,0 +1,97 @@
+/**
+ * @class   vtkParticleRenderView
+ * @brief   ParaView's Render View with the particle pass frame
+ *
+ * vtkParticleRenderView is the view through which ParticleRendering's render passes (ambient
+ * occlusion and the techniques after it) reach ParaView. It is registered in the server-manager
+ * XML as "ParticleRenderView" ("Particle Render View") with the Render View as its base proxy,
+ * so it has every property of the standard Render View. It is otherwise a plain
+ * vtkPVRenderView: it renders every representation (not only Particles) and, while its pass
+ * chain is empty, produces exactly the images of the standard Render View (TestParticleRenderView
+ * compares the two).
+ *
+ * Why a view subclass. A pass set with vtkRenderer::SetPass() does not survive in ParaView:
+ * vtkPVSynchronizedRenderer::SetupPasses() rebuilds the renderer's pass chain
+ *
+ *     [vtkOpenGLFXAAPass] -> [ImageProcessingPass] -> vtkCameraPass -> (RenderPass | vtkPVDefaultPass)
+ *
+ * whenever FXAA, the image-processing pass (EDL, tone mapping), the renderer or the parallel
+ * configuration change (with IceT it hands the same two slots to vtkIceTSynchronizedRenderers).
+ * The two slots are kept as members of vtkPVSynchronizedRenderer and reused by every rebuild,
+ * but they can be set only through vtkPVRenderView::SynchronizedRenderers, which is protected.
+ * This class therefore installs its vtkParticlePassChain once, in the constructor, in the
+ * render-pass slot (`SynchronizedRenderers->SetRenderPass(chain)`), like vtkPVRenderViewWithEDL
+ * installs its pass in the image-processing slot. Later rebuilds keep it.
+ *
+ * Who else uses the slot. Only two ParaView features replace the render pass, and both restore
+ * the saved one afterwards: ray tracing (EnableOSPRay; the chain is not used while OSPRay or
+ * OptiX render) and value passes (BeginValuePassForRendering / EndValuePassForRendering, used for
+ * value capture). As a safeguard the view re-installs the chain before a local render if it
+ * finds the slot empty; it never replaces another pass put there on purpose.
+ *
+ * Why the render-pass slot and not the image-processing slot. The image-processing slot is
+ * shared with EDL and tone mapping and sits outside the camera pass; the render-pass slot sits
+ * inside the camera pass (the camera is set up when the chain runs, as particle passes need) and
+ * its pass replaces vtkPVDefaultPass, which the chain therefore keeps as its innermost delegate,
+ * so lights, translucency (depth peeling), volumes, overlays and the renderer's own SSAO ("Use
+ * Ambient Occlusion") behave as in the standard Render View.
+ *
+ * How the next techniques plug in: a pass deriving from vtkImageProcessingPass is added with
+ * `GetParticlePassChain()->AddPass(pass)` (typically from a view property setter of a subclass
+ * or of this class, plus the property in the XML).
+ *
+ * Parallel: each rank's chain sees that rank's props and data only (IceT composites the ranks'
+ * images afterwards); a pass that needs global quantities must reduce them itself.
+ *
+ * @sa vtkParticlePassChain vtkParticleRepresentation vtkPVRenderViewWithEDL
+ */
+#ifndef vtkParticleRenderView_h
+#define vtkParticleRenderView_h
+
+#include "vtkNew.h" // for vtkNew
+#include "vtkPVRenderView.h"
+#include "vtkParticleRenderingParaViewModule.h" // for export macro
+
+class vtkParticlePassChain;
+
+class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleRenderView : public vtkPVRenderView
+{
+public:
+  static vtkParticleRenderView* New();
+  vtkTypeMacro(vtkParticleRenderView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The pass frame of this view: add particle passes to it. Its InnerPass is a vtkPVDefaultPass.
+   */
+  vtkParticlePassChain* GetParticlePassChain();
+
+  /**
+   * 1 when the renderer's current pass tree runs the particle pass chain (walking the FXAA,
+   * image-processing and camera passes ParaView puts in front of it), 0 otherwise (e.g. while
+   * OSPRay renders). Exposed as an information property for tests.
+   */
+  int GetParticlePassChainInstalled();
+
+  /**
+   * Number of passes in the chain (information property for tests).
+   */
+  int GetNumberOfParticlePasses();
+
+protected:
+  vtkParticleRenderView();
+  ~vtkParticleRenderView() override;
+
+  /**
+   * Re-installs the chain if the render-pass slot was emptied, then defers to the superclass.
+   */
+  void AboutToRenderOnLocalProcess(bool interactive) override;
+
+  vtkNew<vtkParticlePassChain> ParticlePassChain;
+
+private:
+  vtkParticleRenderView(const vtkParticleRenderView&) = delete;
+  void operator=(const vtkParticleRenderView&) = delete;
+};
+
+#endif

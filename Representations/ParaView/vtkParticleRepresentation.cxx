@@ -1,0 +1,454 @@
+#include "vtkParticleRepresentation.h"
+
+#include "vtkActor.h"
+#include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVRenderView.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkTransform.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+vtkStandardNewMacro(vtkParticleRepresentation);
+
+//------------------------------------------------------------------------------
+vtkParticleRepresentation::vtkParticleRepresentation()
+{
+  this->Actor->SetMapper(this->Mapper);
+  // Colours come from the lookup table's range (set by ParaView), as for every representation.
+  this->Mapper->SetUseLookupTableScalarRange(1);
+  this->Mapper->SetScalarVisibility(0);
+  this->ProcessedData = MakeParticles(nullptr, false);
+}
+
+//------------------------------------------------------------------------------
+vtkParticleRepresentation::~vtkParticleRepresentation() = default;
+
+//------------------------------------------------------------------------------
+int vtkParticleRepresentation::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  // Representations have no input on the client in client-server mode.
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkParticleRepresentation::MakeParticles(
+  vtkDataObject* input, bool vertexCells)
+{
+  std::vector<vtkDataSet*> leaves;
+  if (auto dataSet = vtkDataSet::SafeDownCast(input))
+  {
+    leaves.push_back(dataSet);
+  }
+  else if (vtkCompositeDataSet::SafeDownCast(input))
+  {
+    leaves = vtkCompositeDataSet::GetDataSets<vtkDataSet>(input);
+  }
+
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+  for (vtkDataSet* leaf : leaves)
+  {
+    const vtkIdType numPts = leaf ? leaf->GetNumberOfPoints() : 0;
+    if (numPts == 0)
+    {
+      continue;
+    }
+    auto piece = vtkSmartPointer<vtkPolyData>::New();
+    auto pointSet = vtkPointSet::SafeDownCast(leaf);
+    if (pointSet && pointSet->GetPoints())
+    {
+      piece->SetPoints(pointSet->GetPoints()); // shared, not copied
+    }
+    else
+    {
+      // implicit points (image data, rectilinear grid, ...)
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      points->SetNumberOfPoints(numPts);
+      double p[3];
+      for (vtkIdType i = 0; i < numPts; ++i)
+      {
+        leaf->GetPoint(i, p);
+        points->SetPoint(i, p);
+      }
+      piece->SetPoints(points);
+    }
+    piece->GetPointData()->ShallowCopy(leaf->GetPointData());
+    pieces.push_back(piece);
+  }
+
+  vtkSmartPointer<vtkPolyData> particles;
+  if (pieces.empty())
+  {
+    // Empty, but with a points object: ParaView's redistribution filters (ordered compositing
+    // in parallel) crash on a polydata without one.
+    particles = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> points;
+    particles->SetPoints(points);
+  }
+  else if (pieces.size() == 1)
+  {
+    particles = pieces.front();
+  }
+  else
+  {
+    // Keeps the point arrays common to all pieces.
+    vtkNew<vtkAppendPolyData> append;
+    for (auto& piece : pieces)
+    {
+      append->AddInputData(piece);
+    }
+    append->Update();
+    particles = append->GetOutput();
+  }
+
+  const vtkIdType numPts = particles->GetNumberOfPoints();
+  if (vertexCells && numPts > 0)
+  {
+    vtkNew<vtkCellArray> verts;
+    if (numPts < VTK_TYPE_INT32_MAX)
+    {
+      vtkNew<vtkTypeInt32Array> connectivity;
+      connectivity->SetNumberOfValues(numPts);
+      std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + numPts, 0);
+      verts->SetData(1, connectivity);
+    }
+    else
+    {
+      vtkNew<vtkTypeInt64Array> connectivity;
+      connectivity->SetNumberOfValues(numPts);
+      std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + numPts, 0);
+      verts->SetData(1, connectivity);
+    }
+    particles->SetVerts(verts);
+  }
+  return particles;
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // Vertex cells only matter for ParaView's redistribution of data among processes (ordered
+  // compositing moves cells, so points without cells would be lost); the mapper ignores cells.
+  auto controller = vtkMultiProcessController::GetGlobalController();
+  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  this->ProcessedData = MakeParticles(input, parallel);
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::ComputeSphereBounds(vtkPolyData* particles, double bounds[6])
+{
+  vtkMath::UninitializeBounds(bounds);
+  if (!particles || !particles->GetPoints() || particles->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  // Finite ranges (cached by the arrays): NaN/Inf particles are not drawn.
+  vtkDataArray* points = particles->GetPoints()->GetData();
+  double centers[6];
+  for (int k = 0; k < 3; ++k)
+  {
+    points->GetFiniteRange(centers + 2 * k, k);
+    if (!(centers[2 * k] <= centers[2 * k + 1]))
+    {
+      return;
+    }
+  }
+
+  double maxRadius = this->Mapper->GetRadius();
+  if (this->UseRadiusArray && !this->RadiusArray.empty())
+  {
+    vtkDataArray* radii = particles->GetPointData()->GetArray(this->RadiusArray.c_str());
+    if (radii && radii->GetNumberOfComponents() == 1 && radii->GetNumberOfTuples() > 0)
+    {
+      double range[2];
+      radii->GetFiniteRange(range, 0);
+      maxRadius = range[0] <= range[1] ? std::max(0.0, range[1]) : 0.0;
+    }
+  }
+  const double grow = maxRadius * std::abs(this->Mapper->GetRadiusScaleFactor());
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] = centers[2 * k] - grow;
+    bounds[2 * k + 1] = centers[2 * k + 1] + grow;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  // The superclass returns 0 when the representation is not visible: nothing to do then.
+  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
+  {
+    return 0;
+  }
+
+  if (request_type == vtkPVView::REQUEST_UPDATE())
+  {
+    vtkPVView::SetPiece(inInfo, this, this->ProcessedData);
+
+    double bounds[6];
+    this->ComputeSphereBounds(this->ProcessedData, bounds);
+    vtkNew<vtkMatrix4x4> matrix;
+    this->Actor->GetMatrix(matrix);
+    vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds, matrix);
+
+    vtkPVRenderView::SetOrderedCompositingConfiguration(inInfo, this,
+      vtkPVRenderView::DATA_IS_REDISTRIBUTABLE | vtkPVRenderView::USE_DATA_FOR_LOAD_BALANCING);
+    outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(),
+      this->Actor->GetProperty()->GetOpacity() < 1.0 ? 1 : 0);
+  }
+  else if (request_type == vtkPVView::REQUEST_RENDER())
+  {
+    vtkDataObject* data = vtkPVView::GetDeliveredPiece(inInfo, this);
+    vtkPolyData* particles = vtkPolyData::SafeDownCast(data);
+    if (!particles)
+    {
+      // Nothing delivered to this process, or a composite dataset: flatten (cached).
+      const vtkMTimeType time = data ? data->GetMTime() : 0;
+      if (!this->RenderedData || data != this->LastDelivered || time != this->LastDeliveredTime)
+      {
+        this->RenderedData = MakeParticles(data, false);
+        this->LastDelivered = data;
+        this->LastDeliveredTime = time;
+      }
+      particles = this->RenderedData;
+    }
+    this->Mapper->SetInputDataObject(particles);
+    // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
+    // an empty filter output): draw nothing, without the mapper's "no points" warning.
+    this->Actor->SetVisibility(particles->GetNumberOfPoints() > 0);
+    this->UpdateColoringParameters();
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateColoringParameters()
+{
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  const char* name = nullptr;
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  if (info && info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    name = info->Get(vtkDataObject::FIELD_NAME());
+    if (info->Has(vtkDataObject::FIELD_ASSOCIATION()))
+    {
+      association = info->Get(vtkDataObject::FIELD_ASSOCIATION());
+    }
+  }
+  // Particles are points: only point arrays colour them.
+  if (name && name[0] && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    this->Mapper->SetScalarVisibility(1);
+    this->Mapper->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
+    this->Mapper->SelectColorArray(name);
+    this->Mapper->SetUseLookupTableScalarRange(1);
+  }
+  else
+  {
+    this->Mapper->SetScalarVisibility(0);
+    this->Mapper->SelectColorArray(static_cast<const char*>(nullptr));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleRepresentation::AddToView(vtkView* view)
+{
+  if (auto rview = vtkPVRenderView::SafeDownCast(view))
+  {
+    rview->GetRenderer()->AddActor(this->Actor);
+    rview->RegisterPropForHardwareSelection(this, this->Actor);
+    return this->Superclass::AddToView(view);
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleRepresentation::RemoveFromView(vtkView* view)
+{
+  if (auto rview = vtkPVRenderView::SafeDownCast(view))
+  {
+    rview->GetRenderer()->RemoveActor(this->Actor);
+    rview->UnRegisterPropForHardwareSelection(this, this->Actor);
+    return this->Superclass::RemoveFromView(view);
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetVisibility(bool val)
+{
+  this->Actor->SetVisibility(val);
+  this->Superclass::SetVisibility(val);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateMapperRadiusArray()
+{
+  this->Mapper->SetRadiusArrayName(
+    (this->UseRadiusArray && !this->RadiusArray.empty()) ? this->RadiusArray.c_str() : nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetUseRadiusArray(bool use)
+{
+  if (this->UseRadiusArray != use)
+  {
+    this->UseRadiusArray = use;
+    this->UpdateMapperRadiusArray();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetRadiusArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (this->RadiusArray != value)
+  {
+    this->RadiusArray = value;
+    this->UpdateMapperRadiusArray();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SelectRadiusArray(int, int, int, int, const char* name)
+{
+  this->SetRadiusArray(name);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetRadius(double radius)
+{
+  this->Mapper->SetRadius(radius);
+}
+
+//------------------------------------------------------------------------------
+double vtkParticleRepresentation::GetRadius()
+{
+  return this->Mapper->GetRadius();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetRadiusScaleFactor(double factor)
+{
+  this->Mapper->SetRadiusScaleFactor(factor);
+}
+
+//------------------------------------------------------------------------------
+double vtkParticleRepresentation::GetRadiusScaleFactor()
+{
+  return this->Mapper->GetRadiusScaleFactor();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetLookupTable(vtkScalarsToColors* lut)
+{
+  this->Mapper->SetLookupTable(lut);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetMapScalars(int val)
+{
+  this->Mapper->SetColorMode(val ? VTK_COLOR_MODE_MAP_SCALARS : VTK_COLOR_MODE_DIRECT_SCALARS);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetUserTransform(const double matrix[16])
+{
+  vtkNew<vtkTransform> transform;
+  transform->SetMatrix(matrix);
+  this->Actor->SetUserTransform(transform);
+}
+
+//------------------------------------------------------------------------------
+vtkParticleSphereMapper* vtkParticleRepresentation::GetMapper()
+{
+  return this->Mapper;
+}
+
+//------------------------------------------------------------------------------
+vtkActor* vtkParticleRepresentation::GetActor()
+{
+  return this->Actor;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkParticleRepresentation::GetNumberOfParticles()
+{
+  return this->ProcessedData ? this->ProcessedData->GetNumberOfPoints() : 0;
+}
+
+//------------------------------------------------------------------------------
+#define prForwardActor3(method)                                                                    \
+  void vtkParticleRepresentation::method(double x, double y, double z)                             \
+  {                                                                                                \
+    this->Actor->method(x, y, z);                                                                  \
+  }
+#define prForwardProperty1(method)                                                                 \
+  void vtkParticleRepresentation::method(double val) { this->Actor->GetProperty()->method(val); }
+#define prForwardProperty3(method)                                                                 \
+  void vtkParticleRepresentation::method(double r, double g, double b)                             \
+  {                                                                                                \
+    this->Actor->GetProperty()->method(r, g, b);                                                   \
+  }
+
+prForwardActor3(SetOrientation);
+prForwardActor3(SetOrigin);
+prForwardActor3(SetPosition);
+prForwardActor3(SetScale);
+prForwardProperty1(SetAmbient);
+prForwardProperty1(SetDiffuse);
+prForwardProperty1(SetSpecular);
+prForwardProperty1(SetSpecularPower);
+prForwardProperty1(SetOpacity);
+prForwardProperty3(SetAmbientColor);
+prForwardProperty3(SetDiffuseColor);
+prForwardProperty3(SetSpecularColor);
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetPickable(int val)
+{
+  this->Actor->SetPickable(val);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "UseRadiusArray: " << this->UseRadiusArray << "\n";
+  os << indent << "RadiusArray: " << this->RadiusArray << "\n";
+  os << indent << "Radius: " << this->Mapper->GetRadius() << "\n";
+  os << indent << "RadiusScaleFactor: " << this->Mapper->GetRadiusScaleFactor() << "\n";
+  os << indent << "NumberOfParticles: " << this->GetNumberOfParticles() << "\n";
+}

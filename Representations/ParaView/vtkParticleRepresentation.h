@@ -1,0 +1,170 @@
+/**
+ * @class   vtkParticleRepresentation
+ * @brief   ParaView representation drawing every point of a dataset as a ray-cast sphere
+ *
+ * vtkParticleRepresentation is the "Particles" entry of the Representation drop-down (registered
+ * as the subproxy "ParticleRepresentation" of ParaView's Geometry, UnstructuredGrid, UniformGrid
+ * and StructuredGrid representations, see Plugin/ParticleRendering.xml). It works in any render
+ * view (vtkPVRenderView and subclasses such as vtkParticleRenderView) and draws with a
+ * vtkParticleSphereMapper and a vtkActor.
+ *
+ * Input: any vtkDataSet or composite dataset (multiblock, partitioned dataset (collection)).
+ * Cells are ignored: the points of all non-empty leaves and their point arrays become one
+ * vtkPolyData of particles (RequestData). A single leaf with explicit points shares its points
+ * and point arrays (no copy); several leaves are appended (vtkAppendPolyData keeps the point
+ * arrays common to all leaves); implicit points (image data, rectilinear grids) are made
+ * explicit. When running with more than one process one vertex cell per particle is added, so
+ * ParaView's redistribution for ordered compositing (which moves cells) keeps every particle.
+ *
+ * View protocol (like vtkPointGaussianRepresentation): REQUEST_UPDATE hands the particle
+ * polydata to the view (vtkPVView::SetPiece), reports the bounds of the spheres (the points'
+ * finite bounds grown by the largest radius in use times RadiusScaleFactor, under the actor's
+ * transform) and the ordered-compositing needs (only when translucent); REQUEST_RENDER gives the
+ * delivered piece to the mapper and updates the colouring. An empty local piece (normal in
+ * parallel, or for an empty filter output) hides the actor for that render instead of letting
+ * the mapper warn about an input without points.
+ *
+ * Radii: UseRadiusArray chooses between the point array RadiusArray and the constant Radius;
+ * both are scaled by RadiusScaleFactor (map to vtkParticleSphereMapper's RadiusArrayName, Radius
+ * and RadiusScaleFactor). Missing, non-numeric or multi-component radius arrays fall back to the
+ * constant Radius with a warning from the mapper.
+ *
+ * Colouring: the standard ColorArrayName (SetInputArrayToProcess), LookupTable and MapScalars;
+ * point arrays only (a cell array gives the solid DiffuseColor, as in Point Gaussian).
+ * Material: the actor's property (Ambient, Diffuse, Specular, SpecularPower and colours,
+ * Opacity). Transform: Position, Scale, Orientation, Origin, UserTransform.
+ *
+ * @sa vtkParticleSphereMapper vtkParticleRenderView vtkPointGaussianRepresentation
+ */
+#ifndef vtkParticleRepresentation_h
+#define vtkParticleRepresentation_h
+
+#include "vtkNew.h" // for vtkNew
+#include "vtkPVDataRepresentation.h"
+#include "vtkParticleRenderingParaViewModule.h" // for export macro
+#include "vtkSmartPointer.h"                    // for vtkSmartPointer
+
+#include <string> // for std::string
+
+class vtkActor;
+class vtkDataObject;
+class vtkParticleSphereMapper;
+class vtkPolyData;
+class vtkScalarsToColors;
+
+class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleRepresentation : public vtkPVDataRepresentation
+{
+public:
+  static vtkParticleRepresentation* New();
+  vtkTypeMacro(vtkParticleRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+  void SetVisibility(bool val) override;
+
+  ///@{
+  /**
+   * Radius source. With UseRadiusArray on, the point array RadiusArray gives the radii;
+   * otherwise (default) every particle has the constant Radius.
+   * SelectRadiusArray has the signature of SetInputArrayToProcess so ParaView's array widgets
+   * can drive it; only the name is used.
+   */
+  void SetUseRadiusArray(bool use);
+  vtkGetMacro(UseRadiusArray, bool);
+  vtkBooleanMacro(UseRadiusArray, bool);
+  void SetRadiusArray(const char* name);
+  const char* GetRadiusArray() const { return this->RadiusArray.c_str(); }
+  void SelectRadiusArray(int, int, int, int, const char* name);
+  void SetRadius(double radius);
+  double GetRadius();
+  void SetRadiusScaleFactor(double factor);
+  double GetRadiusScaleFactor();
+  ///@}
+
+  ///@{
+  /**
+   * Colour mapping, forwarded to the mapper.
+   */
+  void SetLookupTable(vtkScalarsToColors* lut);
+  void SetMapScalars(int val);
+  ///@}
+
+  ///@{
+  /**
+   * Forwarded to the actor.
+   */
+  void SetOrientation(double x, double y, double z);
+  void SetOrigin(double x, double y, double z);
+  void SetPosition(double x, double y, double z);
+  void SetScale(double x, double y, double z);
+  void SetPickable(int val);
+  void SetUserTransform(const double matrix[16]);
+  ///@}
+
+  ///@{
+  /**
+   * Forwarded to the actor's property.
+   */
+  void SetAmbient(double val);
+  void SetDiffuse(double val);
+  void SetSpecular(double val);
+  void SetSpecularPower(double val);
+  void SetAmbientColor(double r, double g, double b);
+  void SetDiffuseColor(double r, double g, double b);
+  void SetSpecularColor(double r, double g, double b);
+  void SetOpacity(double val);
+  ///@}
+
+  /**
+   * The mapper and actor, for passes of vtkParticleRenderView and for tests.
+   */
+  vtkParticleSphereMapper* GetMapper();
+  vtkActor* GetActor();
+
+  /**
+   * Number of particles of the (local) processed input, before delivery.
+   */
+  vtkIdType GetNumberOfParticles();
+
+protected:
+  vtkParticleRepresentation();
+  ~vtkParticleRepresentation() override;
+
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /**
+   * The points of every leaf of `input` with their point arrays as one vtkPolyData. Never null.
+   */
+  static vtkSmartPointer<vtkPolyData> MakeParticles(vtkDataObject* input, bool vertexCells);
+
+  /**
+   * Bounds of the spheres of `particles` with the current radius settings (uninitialized when
+   * there is no valid point).
+   */
+  void ComputeSphereBounds(vtkPolyData* particles, double bounds[6]);
+
+  void UpdateColoringParameters();
+  void UpdateMapperRadiusArray();
+
+  vtkNew<vtkParticleSphereMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkSmartPointer<vtkPolyData> ProcessedData;
+  // the delivered piece when it had to be flattened again on the rendering side
+  vtkSmartPointer<vtkPolyData> RenderedData;
+  vtkDataObject* LastDelivered = nullptr;
+  vtkMTimeType LastDeliveredTime = 0;
+
+  bool UseRadiusArray = false;
+  std::string RadiusArray;
+
+private:
+  vtkParticleRepresentation(const vtkParticleRepresentation&) = delete;
+  void operator=(const vtkParticleRepresentation&) = delete;
+};
+
+#endif
