@@ -1,25 +1,21 @@
 //VTK::System::Dec
 //=========================================================================
-// ParticleSphereVS.glsl -- vertex stage of vtkParticleSphereMapper.
-// Vertex pulling: one non-instanced draw of 3 vertices (one triangle) per
-// particle; particle i = gl_VertexID / 3 is fetched from buffer textures that
-// alias the mapper's vertex buffers (centres with VTK's shift/scale, radii,
-// colours). Real GPUs and llvmpipe both run this far better than 4-vertex
-// instances or a geometry shader.
+// ParticleSphereVS.glsl -- vertex stage of vtkParticleSphereMapper: one
+// invocation per particle (GL_POINTS, plain vertex attributes), the view-space
+// sphere for the geometry stage (ParticleSphereGS.glsl), which emits its
+// billboard triangle.
 // The //VTK:: tags are filled by vtkOpenGLPolyDataMapper and by render passes,
 // the //PR:: tags are hooks for ParticleRendering passes and subclasses:
-//   //PR::Sphere::Dec / //PR::Sphere::Impl  per-sphere work in the vertex stage
-//   (e.g. per-sphere ambient-occlusion fetches); centerVC and radiusVC are set.
+//   //PR::Sphere::Dec / //PR::Sphere::Impl  per-sphere work (this stage runs
+//   once per sphere, e.g. per-sphere ambient-occlusion fetches); centerVC and
+//   radiusVC are set.
 //=========================================================================
-uniform samplerBuffer prCenters;
-uniform samplerBuffer prRadii;
+in vec4 vertexMC;
+in float radiusMC;
 
 // MC->VC radius factor: user scale factor times the actor's scale
 uniform float radiusScaleVC;
 uniform mat4 MCVCMatrix;
-uniform mat4 VCDCMatrix;
-uniform mat4 DCVCMatrix;
-uniform int cameraParallel;
 
 //VTK::CustomUniforms::Dec
 //VTK::Color::Dec
@@ -27,22 +23,16 @@ uniform int cameraParallel;
 //VTK::Picking::Dec
 //VTK::ValuePass::Dec
 
-flat out vec4 centerRadiusVCVSOutput;
+out vec4 centerRadiusVCVSOutput;
 // the centre without the MC->VC translation (see prDepthOfSplitPointVC in RaySphere.glsl)
-flat out vec3 centerOffsetVCVSOutput;
-out vec3 offsetVCVSOutput;
+out vec3 centerOffsetVCVSOutput;
 flat out int particleIdVSOutput;
 
-//PR::Include SphereImposter
 //PR::Sphere::Dec
 
 void main()
 {
-  int particleId = gl_VertexID / 3;
-  int corner = gl_VertexID - 3 * particleId;
-  vec4 vertexMC = vec4(texelFetch(prCenters, particleId).xyz, 1.0);
-  float radiusMC = texelFetch(prRadii, particleId).r;
-  particleIdVSOutput = particleId;
+  particleIdVSOutput = gl_VertexID;
 
   //VTK::CustomBegin::Impl
   //VTK::Color::Impl
@@ -56,16 +46,6 @@ void main()
   centerOffsetVCVSOutput = centerOffsetVC;
   float radiusVC = radiusMC * radiusScaleVC;
   centerRadiusVCVSOutput = vec4(centerVC, radiusVC);
-  if (!prSphereIsDrawable(centerVC, radiusVC))
-  {
-    // invalid particle (radius <= 0, NaN or Inf): a degenerate triangle outside the
-    // clip volume produces no fragment
-    offsetVCVSOutput = vec3(0.0);
-    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
-    return;
-  }
-  prSphereBillboard(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
-    gl_Position, offsetVCVSOutput);
   //PR::Sphere::Impl
   //VTK::CustomEnd::Impl
 }

@@ -31,7 +31,6 @@
 #include "vtkProperty.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTransform.h"
 #include "vtkShaderProgram.h"
@@ -65,15 +64,10 @@ public:
   std::string LastWarning;
   // the input the buffers were built from
   vtkPolyData* BuiltInput = nullptr;
-  // buffer textures aliasing the vertex buffers (vertex pulling, no copy)
-  vtkNew<vtkTextureObject> CenterTexture;
-  vtkNew<vtkTextureObject> RadiusTexture;
-  vtkNew<vtkTextureObject> ColorTexture;
-  bool HaveColors = false;
   // selection: the first vertex cell holding each point (-1: none)
   std::vector<vtkIdType> VertexCellOfPoint;
   vtkTimeStamp VertexCellOfPointTime;
-  // particles drawn: all of them, or the GPU's texture-buffer limit
+  // particles in the vertex buffers
   vtkIdType DrawCount = 0;
   // GPU timer query around the draw call (CollectTimings)
   vtkOpenGLRenderTimer DrawTimer;
@@ -394,37 +388,25 @@ void vtkParticleSphereMapper::GetShaderTemplate(
 {
   shaders[vtkShader::Vertex]->SetSource(vtkParticleShaders::Get("ParticleSphereVS"));
   shaders[vtkShader::Fragment]->SetSource(vtkParticleShaders::Get("ParticleSphereFS"));
-  shaders[vtkShader::Geometry]->SetSource("");
+  shaders[vtkShader::Geometry]->SetSource(vtkParticleShaders::Get("ParticleSphereGS"));
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleSphereMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
-  // Scalar colours are fetched per particle in the vertex stage; the superclass then sees no
-  // vertex-stage colour tags and only writes the fragment-stage colour code.
-  if (this->VBOs->GetNumberOfComponents("scalarColor") != 0)
-  {
-    std::string vs = shaders[vtkShader::Vertex]->GetSource();
-    vtkShaderProgram::Substitute(vs, "//VTK::Color::Dec",
-      "uniform samplerBuffer prColors;\nout vec4 vertexColorVSOutput;");
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Color::Impl", "vertexColorVSOutput = texelFetch(prColors, particleId);");
-    shaders[vtkShader::Vertex]->SetSource(vs);
-  }
-
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 
-  // Ids for the hardware selector: the particle index (not gl_VertexID / gl_PrimitiveID as for
-  // polygons).
-  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  // Ids for the hardware selector: the particle index, also for cell ids (the fragment stage
+  // would otherwise use gl_PrimitiveID plus the offset of a polygon mapper's cell batches).
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
-  vtkShaderProgram::Substitute(
-    vs, "vertexIDVSOutput = gl_VertexID;", "vertexIDVSOutput = particleId;", true);
   vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "particleIdVSOutput", true);
+  shaders[vtkShader::Fragment]->SetSource(fs);
   // Includes added by the replacements and render passes.
-  shaders[vtkShader::Vertex]->SetSource(vtkParticleShaders::ResolveIncludes(vs));
-  shaders[vtkShader::Fragment]->SetSource(vtkParticleShaders::ResolveIncludes(fs));
+  for (auto type : { vtkShader::Vertex, vtkShader::Geometry, vtkShader::Fragment })
+  {
+    shaders[type]->SetSource(vtkParticleShaders::ResolveIncludes(shaders[type]->GetSource()));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -571,18 +553,8 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
 void vtkParticleSphereMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
-  // No vertex attributes: the particles are pulled from buffer textures, bound here and released
-  // after the draw call.
-  vtkInternals& internals = *this->Internals;
-  internals.CenterTexture->Activate();
-  cellBO.Program->SetUniformi("prCenters", internals.CenterTexture->GetTextureUnit());
-  internals.RadiusTexture->Activate();
-  cellBO.Program->SetUniformi("prRadii", internals.RadiusTexture->GetTextureUnit());
-  if (internals.HaveColors && cellBO.Program->IsUniformUsed("prColors"))
-  {
-    internals.ColorTexture->Activate();
-    cellBO.Program->SetUniformi("prColors", internals.ColorTexture->GetTextureUnit());
-  }
+  // vertexMC, radiusMC and scalarColor are plain per-vertex attributes of the GL_POINTS draw; the
+  // superclass adds them to the VAO because the triangle helper's index count is non-zero.
   this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
 }
 
@@ -637,54 +609,16 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     this->VBOInverseTransform->GetTranspose(this->VBOShiftScale);
   }
 
-  // Buffer textures over the vertex buffers (vertex pulling). The centres are RGB32F, which
-  // needs OpenGL 4.0 (ParticleRendering's floor is 4.3).
-  vtkOpenGLRenderWindow* context = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  int maxTexels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   internals.DrawCount = numPts;
-  if (maxTexels > 0 && numPts > maxTexels)
-  {
-    internals.DrawCount = maxTexels;
-    vtkWarningMacro(<< numPts << " particles exceed this GPU's buffer-texture limit of "
-                    << maxTexels << " elements: only the first " << maxTexels
-                    << " are drawn. Split the data into pieces (e.g. with D3 or several ranks).");
-  }
-  internals.HaveColors = false;
-  vtkOpenGLVertexBufferObject* radiusVBO = this->VBOs->GetVBO("radiusMC");
-  vtkOpenGLVertexBufferObject* colorVBO = this->VBOs->GetVBO("scalarColor");
-  if (numPts > 0 && posVBO && radiusVBO)
-  {
-    const unsigned int n = static_cast<unsigned int>(internals.DrawCount);
-    // New texture objects on every upload: re-attaching a re-specified buffer to an existing
-    // buffer texture keeps the old size on some drivers (Mesa 22), which would draw only as many
-    // particles as the first upload had.
-    internals.CenterTexture->ReleaseGraphicsResources(context);
-    internals.RadiusTexture->ReleaseGraphicsResources(context);
-    internals.ColorTexture->ReleaseGraphicsResources(context);
-    internals.CenterTexture->SetContext(context);
-    internals.RadiusTexture->SetContext(context);
-    bool ok = internals.CenterTexture->CreateTextureBuffer(n, 3, VTK_FLOAT, posVBO) &&
-      internals.RadiusTexture->CreateTextureBuffer(n, 1, VTK_FLOAT, radiusVBO);
-    if (ok && colorVBO)
-    {
-      internals.ColorTexture->SetContext(context);
-      ok = internals.ColorTexture->CreateTextureBuffer(n, 4, VTK_UNSIGNED_CHAR, colorVBO);
-      internals.HaveColors = ok;
-    }
-    if (!ok)
-    {
-      vtkErrorMacro(<< "Could not create the particle buffer textures (OpenGL 4.0 or "
-                       "ARB_texture_buffer_object_rgb32 is required); nothing is drawn.");
-      internals.DrawCount = 0;
-    }
-  }
 
-  // No index buffers: one draw of 3 vertices (one triangle) per particle.
+  // No index buffers: one GL_POINTS draw of all particles. The triangle helper (the one the
+  // superclass lights whatever the normals) gets the particle count as its index count, which
+  // makes the superclass bind the vertex attributes to it.
   for (int i = PrimitiveStart; i < PrimitiveEnd; ++i)
   {
     this->Primitives[i].IBO->IndexCount = 0;
   }
+  this->Primitives[PrimitiveTris].IBO->IndexCount = static_cast<size_t>(numPts);
   this->VBOBuildTime.Modified();
   internals.BuiltInput = this->CurrentInput;
   ++this->NumberOfUploads;
@@ -810,17 +744,10 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
     this->Internals->DrawTimer.Reset();
     this->Internals->DrawTimer.Start();
   }
-  cellBO.VAO->Bind(); // attribute-less, but a core profile needs a vertex array object bound
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * numPts));
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numPts));
   if (this->CollectTimings)
   {
     this->Internals->DrawTimer.Stop();
-  }
-  internals.CenterTexture->Deactivate();
-  internals.RadiusTexture->Deactivate();
-  if (internals.HaveColors)
-  {
-    internals.ColorTexture->Deactivate();
   }
 }
 
@@ -839,9 +766,6 @@ double vtkParticleSphereMapper::GetLastDrawGPUSeconds()
 void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->DrawTimer.ReleaseGraphicsResources();
-  this->Internals->CenterTexture->ReleaseGraphicsResources(window);
-  this->Internals->RadiusTexture->ReleaseGraphicsResources(window);
-  this->Internals->ColorTexture->ReleaseGraphicsResources(window);
   this->Internals->DrawCount = 0;
   this->Superclass::ReleaseGraphicsResources(window);
 }

@@ -13,14 +13,13 @@
  *   Shaders/Lighting.glsl. For parallel projection the view vector is the true (0,0,1); VTK's
  *   polygon shader uses the perspective formula in both cases.
  *
- * Geometry: one camera-facing triangle per particle, drawn by vertex pulling: a single
- * non-instanced draw of 3 vertices per particle whose vertex shader fetches centre, radius and
- * colour from buffer textures aliasing the vertex buffers (no copy, no geometry shader, no
- * 4-vertex instances, which both cost far more per particle on real GPUs and on llvmpipe). The
- * number of particles drawn is bounded by GL_MAX_TEXTURE_BUFFER_SIZE (2^27 on common GPUs and
- * llvmpipe); beyond it the first ones are drawn and a warning says so. In perspective the triangle
- * circumscribes the sphere's silhouette circle, so it covers the projected sphere exactly also far
- * off-axis (Shaders/SphereImposter.glsl). The fragment shader
+ * Geometry: one GL_POINTS draw of all particles with plain vertex attributes (centre with VTK's
+ * VBO shift/scale, radius, colour); the vertex stage runs once per sphere and the geometry stage
+ * emits one camera-facing triangle per sphere. Measured on llvmpipe this costs the same per
+ * particle as vtkOpenGLSphereMapper's geometry shader, and 1.7x less than 3 pulled vertices or
+ * 4-vertex instances per particle (both of which repeat the billboard set-up per vertex). In
+ * perspective the triangle circumscribes the sphere's silhouette circle, so it covers the
+ * projected sphere exactly also far off-axis (Shaders/SphereImposter.glsl). The fragment shader
  * intersects the fragment's ray with the sphere in coordinates relative to the sphere centre
  * (Shaders/RaySphere.glsl), which stays exact in single precision with the camera 1e7 radii away,
  * and writes the true depth of the hit to gl_FragDepth, so spheres intersect each other and any
