@@ -5,11 +5,11 @@
 # Data (random gas with vertex cells) is generated into a temporary directory, never committed.
 #
 # usage: Benchmarks/run_sphere_core.sh [build-dir]   (needs the project built; runs under Xvfb)
-# writes Benchmarks/results/sphere_core.csv (replaced) and sphere_core.png
+# writes Benchmarks/results/sphere_core.csv (replaced) and sphere_core.png (RESULTS_DIR overrides)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-${BUILD_DIR:-$top/build}}
-results="$top/Benchmarks/results"
+results=${RESULTS_DIR:-$top/Benchmarks/results}
 mkdir -p "$results"
 data=$(mktemp -d)
 trap 'rm -rf "$data"' EXIT

@@ -21,7 +21,8 @@
 uniform int PrimitiveIDOffset;
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
-uniform mat4 MCVCMatrix;
+// clip-space z and w of the MC->VC translation (see prDepthOfSplitPointVC)
+uniform vec2 clipZWOfTranslation;
 
 flat in vec4 centerRadiusVCVSOutput;
 flat in vec3 centerOffsetVCVSOutput;
@@ -59,15 +60,14 @@ void main()
   }
   // first visible intersection; the depth is computed from the MC->VC translation and the
   // small rest of the point separately (exact ordering with the camera far away)
-  vec3 translationVC = MCVCMatrix[3].xyz;
   vec3 hitRel = prRayS + prT0 * prRayD;
   float depth;
   bool inside = false;
-  if (!prDepthOfSplitPointVC(translationVC, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
+  if (!prDepthOfSplitPointVC(clipZWOfTranslation, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
   {
     hitRel = prRayS + prT1 * prRayD;
     inside = true;
-    if (!prDepthOfSplitPointVC(translationVC, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
+    if (!prDepthOfSplitPointVC(clipZWOfTranslation, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
     {
       discard;
     }

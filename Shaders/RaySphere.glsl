@@ -49,23 +49,19 @@ bool prDepthOfPointVC(vec3 pVC, mat4 vcdc, out float depth)
   return true;
 }
 
-// prDepthOfPointVC for the point translationVC + offsetVC, without forming that sum in single
-// precision. translationVC is the translation of the MC->VC matrix (the same for every sphere)
-// and offsetVC the rest of the point (MC->VC rotation of the centre plus the hit point relative
-// to it). With the camera 1e7 radii away |translationVC.z| ~ 1e7, where a float has a resolution
-// of a whole radius: the summed point, and so the depth, would be rounded by up to half a radius,
-// differently for every sphere, and the depth test would pick the wrong one of two overlapping
-// spheres. Split, the large clip-space terms of the translation are computed identically for
-// every fragment (their rounding is a common offset of all spheres) and only the small offset
-// varies, so depths stay ordered to about 1e-7 of the sphere distances.
-bool prDepthOfSplitPointVC(vec3 translationVC, vec3 offsetVC, mat4 vcdc, out float depth)
+// prDepthOfPointVC for the point T + offsetVC, without forming that sum in single precision.
+// T is the translation of the MC->VC matrix (the same for every sphere) and offsetVC the rest of
+// the point (MC->VC rotation of the centre plus the hit point relative to it); clipZW0 holds the
+// clip-space z and w of T, computed once per frame on the CPU in double. With the camera 1e7
+// radii away |T.z| ~ 1e7, where a float resolves whole radii: the summed point, and so the depth,
+// would be rounded by up to half a radius, differently for every sphere, and the depth test would
+// pick the wrong one of two overlapping spheres. Split, the large terms are one common constant
+// (their rounding is a common offset of all spheres) and only the small offset varies, so depths
+// stay ordered to about 1e-7 of the sphere distances.
+bool prDepthOfSplitPointVC(vec2 clipZW0, vec3 offsetVC, mat4 vcdc, out float depth)
 {
-  float clipZ0 = vcdc[0][2] * translationVC.x + vcdc[1][2] * translationVC.y +
-    vcdc[2][2] * translationVC.z + vcdc[3][2];
-  float clipW0 = vcdc[0][3] * translationVC.x + vcdc[1][3] * translationVC.y +
-    vcdc[2][3] * translationVC.z + vcdc[3][3];
-  float clipZ = clipZ0 + (vcdc[0][2] * offsetVC.x + vcdc[1][2] * offsetVC.y + vcdc[2][2] * offsetVC.z);
-  float clipW = clipW0 + (vcdc[0][3] * offsetVC.x + vcdc[1][3] * offsetVC.y + vcdc[2][3] * offsetVC.z);
+  float clipZ = clipZW0.x + (vcdc[0][2] * offsetVC.x + vcdc[1][2] * offsetVC.y + vcdc[2][2] * offsetVC.z);
+  float clipW = clipZW0.y + (vcdc[0][3] * offsetVC.x + vcdc[1][3] * offsetVC.y + vcdc[2][3] * offsetVC.z);
   depth = 0.0;
   if (!(clipW > 0.0))
   {

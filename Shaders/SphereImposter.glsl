@@ -1,5 +1,5 @@
 //=========================================================================
-// SphereImposter.glsl -- vertex-stage set-up of one camera-facing triangle per
+// SphereImposter.glsl -- geometry-stage set-up of one camera-facing triangle per
 // sphere (corner 0..2). One triangle, not a quad: half the vertices and half
 // the triangle set-ups per sphere, for 30% more (cheaply discarded) fragments;
 // with millions of few-pixel spheres the per-triangle cost dominates.

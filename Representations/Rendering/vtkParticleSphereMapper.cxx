@@ -547,6 +547,37 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
   program->SetUniformMatrix("DCVCMatrix", dcvc);
   program->SetUniformi("cameraParallel", cam->GetParallelProjection());
   program->SetUniformf("radiusScaleVC", static_cast<float>(this->GetRadiusScaleVC(actor)));
+
+  // Clip-space z and w of the MC->VC translation, in double (see prDepthOfSplitPointVC). The
+  // translation is that of the MCVC matrix the superclass just set (actor, camera, VBO shift).
+  if (program->IsUniformUsed("clipZWOfTranslation"))
+  {
+    vtkNew<vtkMatrix4x4> mcvc; // row-major, points as columns
+    vtkNew<vtkMatrix4x4> shiftScale;
+    vtkMatrix4x4::Transpose(this->VBOShiftScale, shiftScale); // VBOShiftScale is stored transposed
+    if (!actor->GetIsIdentity())
+    {
+      vtkNew<vtkMatrix4x4> actorMatrix;
+      actor->GetMatrix(actorMatrix);
+      vtkMatrix4x4::Multiply4x4(actorMatrix, shiftScale, mcvc);
+      vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), mcvc, mcvc);
+    }
+    else
+    {
+      vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), shiftScale, mcvc);
+    }
+    const double t[4] = { mcvc->GetElement(0, 3), mcvc->GetElement(1, 3), mcvc->GetElement(2, 3),
+      1.0 };
+    // vcdc is stored transposed (column-major for OpenGL)
+    double zw[2] = { 0.0, 0.0 };
+    for (int k = 0; k < 4; ++k)
+    {
+      zw[0] += vcdc->GetElement(k, 2) * t[k];
+      zw[1] += vcdc->GetElement(k, 3) * t[k];
+    }
+    const float clipZW[2] = { static_cast<float>(zw[0]), static_cast<float>(zw[1]) };
+    program->SetUniform2f("clipZWOfTranslation", clipZW);
+  }
 }
 
 //------------------------------------------------------------------------------
