@@ -11,10 +11,10 @@ from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, Load
                              SaveScreenshot, Show, XMLPolyDataReader, Delete)
 
 SCENES = [
-    # file, colour array, camera (position, focal point offset from centre, view up), title
-    ("lj_droplets.vtp", "type", (1.0, -1.6, 0.9)),
-    ("lj_film.vtp", "speed", (1.0, -1.8, 0.6)),
-    ("fcc_block.vtp", "type", (1.2, -1.5, 1.0)),
+    # file, colour array, direction from the focal point to the camera, zoom
+    ("lj_droplets.vtp", "type", (1.0, -1.6, 0.9), 2.2),
+    ("lj_film.vtp", "speed", (1.0, -1.8, 0.6), 1.4),
+    ("fcc_block.vtp", "type", (1.2, -1.5, 1.0), 1.1),
 ]
 
 
@@ -30,7 +30,7 @@ def main():
     LoadPlugin(args.plugin, remote=False, ns=globals())
     os.makedirs(args.out, exist_ok=True)
     written = []
-    for name, color, direction in SCENES:
+    for name, color, direction, zoom in SCENES:
         path = os.path.join(args.data, name)
         if not os.path.exists(path):
             print("missing sample %s, skipped" % path, file=sys.stderr)
@@ -51,8 +51,9 @@ def main():
         display.Specular = 0.3
         ColorBy(display, ("POINTS", color))
         lut = GetColorTransferFunction(color)
-        lut.ApplyPreset("Jet" if color == "speed" else "Set1" if False else "Cool to Warm", True)
+        lut.ApplyPreset("Jet" if color == "speed" else "Cool to Warm", True)
         display.RescaleTransferFunctionToDataRange(True, False)
+        Render(view)  # the first render resets the camera: place it afterwards
         view.ResetCamera()
         camera = view.GetActiveCamera()
         focal = camera.GetFocalPoint()
@@ -61,6 +62,7 @@ def main():
         camera.SetPosition(*[f + 1.2 * distance * d / norm for f, d in zip(focal, direction)])
         camera.SetViewUp(0, 0, 1)
         view.ResetCamera()
+        camera.Zoom(zoom)
         Render(view)
         png = os.path.join(args.out, os.path.splitext(name)[0] + ".png")
         SaveScreenshot(png, view, ImageResolution=[width, height])

@@ -28,28 +28,9 @@ bool prIntersectSphere(vec3 s, vec3 d, float r, out float t0, out float t1)
   return true;
 }
 
-// Depth-buffer value and visibility of a view-coordinate point. A point is
-// visible when it lies in front of the eye and between the near and far planes.
-bool prDepthOfPointVC(vec3 pVC, mat4 vcdc, out float depth)
-{
-  // only the z and w rows of the projection are needed (GLSL matrices are column-major)
-  float clipZ = vcdc[0][2] * pVC.x + vcdc[1][2] * pVC.y + vcdc[2][2] * pVC.z + vcdc[3][2];
-  float clipW = vcdc[0][3] * pVC.x + vcdc[1][3] * pVC.y + vcdc[2][3] * pVC.z + vcdc[3][3];
-  depth = 0.0;
-  if (!(clipW > 0.0))
-  {
-    return false;
-  }
-  float ndcZ = clipZ / clipW;
-  if (!(ndcZ >= -1.0 && ndcZ <= 1.0))
-  {
-    return false;
-  }
-  depth = (gl_DepthRange.diff * ndcZ + gl_DepthRange.near + gl_DepthRange.far) * 0.5;
-  return true;
-}
-
-// prDepthOfPointVC for the point T + offsetVC, without forming that sum in single precision.
+// Depth-buffer value and visibility of the view-coordinate point T + offsetVC. A point is
+// visible when it lies in front of the eye and between the near and far planes. The sum is never
+// formed in single precision.
 // T is the translation of the MC->VC matrix (the same for every sphere) and offsetVC the rest of
 // the point (MC->VC rotation of the centre plus the hit point relative to it); clipZW0 holds the
 // clip-space z and w of T, computed once per frame on the CPU in double. With the camera 1e7
