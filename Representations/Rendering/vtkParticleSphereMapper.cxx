@@ -14,14 +14,11 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderTimer.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkParticleShaders.h"
@@ -40,7 +37,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 vtkStandardNewMacro(vtkParticleSphereMapper);
@@ -67,8 +63,6 @@ public:
   // selection: the first vertex cell holding each point (-1: none)
   std::vector<vtkIdType> VertexCellOfPoint;
   vtkTimeStamp VertexCellOfPointTime;
-  // particles in the vertex buffers
-  vtkIdType DrawCount = 0;
   // GPU timer query around the draw call (CollectTimings)
   vtkOpenGLRenderTimer DrawTimer;
 };
@@ -581,15 +575,6 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleSphereMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
-{
-  // vertexMC, radiusMC and scalarColor are plain per-vertex attributes of the GL_POINTS draw; the
-  // superclass adds them to the VAO because the triangle helper's index count is non-zero.
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
-}
-
-//------------------------------------------------------------------------------
 bool vtkParticleSphereMapper::GetNeedToRebuildBufferObjects(vtkRenderer*, vtkActor*)
 {
   // Unlike polygons, the buffers hold nothing that depends on the actor or its property (material
@@ -639,8 +624,6 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     this->VBOInverseTransform->Scale(1.0 / scale[0], 1.0 / scale[1], 1.0 / scale[2]);
     this->VBOInverseTransform->GetTranspose(this->VBOShiftScale);
   }
-
-  internals.DrawCount = numPts;
 
   // No index buffers: one GL_POINTS draw of all particles. The triangle helper (the one the
   // superclass lights whatever the normals) gets the particle count as its index count, which
@@ -749,7 +732,8 @@ void vtkParticleSphereMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkAct
   // The selector sizes its id passes from these maxima; the superclass derives the cell maximum
   // from index buffers, which this mapper does not have.
   vtkHardwareSelector* selector = ren->GetSelector();
-  const vtkIdType maxId = std::max<vtkIdType>(0, this->Internals->DrawCount - 1);
+  const vtkIdType count = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
+  const vtkIdType maxId = std::max<vtkIdType>(0, count - 1);
   selector->UpdateMaximumPointId(maxId);
   selector->UpdateMaximumCellId(maxId);
 }
@@ -757,14 +741,14 @@ void vtkParticleSphereMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkAct
 //------------------------------------------------------------------------------
 void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
 {
-  vtkInternals& internals = *this->Internals;
-  const vtkIdType numPts = internals.DrawCount;
+  // the triangle helper: the superclass lights triangles whatever the normals are; its index
+  // count is the number of particles in the vertex buffers (see BuildBufferObjects)
+  vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTris];
+  const vtkIdType numPts = static_cast<vtkIdType>(cellBO.IBO->IndexCount);
   if (numPts <= 0)
   {
     return;
   }
-  // the triangle helper: the superclass lights triangles whatever the normals are
-  vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTris];
   this->UpdateShaders(cellBO, ren, actor);
   if (!cellBO.Program)
   {
@@ -797,7 +781,6 @@ double vtkParticleSphereMapper::GetLastDrawGPUSeconds()
 void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->DrawTimer.ReleaseGraphicsResources();
-  this->Internals->DrawCount = 0;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
