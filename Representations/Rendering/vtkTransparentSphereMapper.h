@@ -1,0 +1,251 @@
+/**
+ * @class   vtkTransparentSphereMapper
+ * @brief   particles as exact emission-absorption sphere glyphs, composited in depth order
+ *
+ * vtkTransparentSphereMapper implements the transparent sphere glyphs of Staib, Grottel and
+ * Gumhold 2015, "Visualization of Particle-based Data with Transparency and Ambient Occlusion",
+ * Sec. 3.1, 4 and 5 (Eq. 1, 2, 8-19), on the sphere imposter core of vtkParticleSphereMapper
+ * (positions, radii, colours, lights, picking and bad-input handling are the core's).
+ *
+ * Opacity. Every particle has a maximum opacity Theta_i = Theta_a * opacity, where Theta_a comes
+ * from the point array OpacityArrayName mapped linearly from OpacityRange to [0,1] and clamped
+ * (1 without an array), and opacity is VTK's usual fragment opacity: the actor property's Opacity
+ * times the alpha of the scalar colour (so a lookup table with opacity mapping also works).
+ * Theta_i is the opacity of the most opaque ray through the glyph (paper Sec. 3.1).
+ *
+ * Density models (paper Sec. 4), rho along the ray inside the sphere, with the linear transfer
+ * functions sigma = lambda rho, E = lambda c_i rho (Eq. 8-12), so that the emitted colour is
+ * L_V = c_i Theta(t_n, t_f) and Theta = 1 - exp(-lambda (P(t_f) - P(t_n))):
+ * - CONSTANT_DENSITY: rho = 1 (Eq. 13-15), the most opaque ray is a diameter,
+ *   lambda = -ln(1 - Theta_i) / (2 r).
+ * - SQUARED_DISTANCE_DENSITY: rho = |x - p_i|^2 (Eq. 16-19), the most opaque ray has impact
+ *   parameter r / sqrt(2), lambda = -3 ln(1 - Theta_i) / (2 sqrt(2) r^3).
+ * - HollowFraction f > 0 (Sec. 4.3): rho = 0 inside the concentric sphere of radius r_s = f r. The
+ *   ray's two segments outside the core are composited; since both emit c_i this equals one
+ *   segment with the summed integral. lambda is derived from the exact maximum of that integral
+ *   over all rays (not the solid sphere's): with b the impact parameter, the integral is
+ *   increasing in b on [0, r_s] for both models (its derivative is positive there), so the
+ *   maximum is at b = r_s for the constant model, chord 2 r sqrt(1 - f^2), and at
+ *   b = max(r_s, r / sqrt(2)) for the squared-distance model, i.e. the solid value 2 sqrt(2) r^3 / 3
+ *   for f <= 1/sqrt(2) and 2 r^3 sqrt(1 - f^2) (1 + 2 f^2) / 3 above. See
+ *   GetMaximumPathIntegral(); the tests check it against a numerical maximisation.
+ *
+ * Numerics. Along a ray the integral is evaluated relative to the ray's closest approach to the
+ * centre (impact parameter b, parameter tau from that point), never from the eye: Eq. 17 written
+ * from the eye position cancels all its digits with the camera 1e7 radii away. The per-particle
+ * optical depth kappa_i = -ln(1 - Theta_i) is computed in double on the CPU (Theta_i = 1 - 1e-7
+ * is not a float), and Theta = -expm1(-kappa_i I / I_max) uses series-based expm1/log1p
+ * (Shaders/EmissionAbsorption.glsl), so the relative error stays below 1e-5 from Theta_i = 1e-6
+ * to 1 - 1e-7 and for grazing rays.
+ *
+ * Shading (Eq. 2): L_RV = Theta (t_n, t_f) ((1 - VolumeMix) L_R(x_0) + VolumeMix c_i), where
+ * L_R is the core's lit surface colour at the entry point x_0 (VTK's lights and material:
+ * diffuse = c_i, specular white by default, the ambient coefficient is VTK's and 0 by default,
+ * which is the paper's "no ambient term"; VTK's Phong specular lobe is used rather than
+ * Blinn-Phong so that opaque and translucent particles match). When the segment starts inside
+ * the sphere (eye inside, near plane cutting it) there is no entry surface and L_RV = Theta c_i.
+ * The background seen through a particle is attenuated by 1 - Theta (front-to-back compositing).
+ *
+ * Opaque particles (Theta_i = 1) are drawn in the opaque pass exactly as the core draws them,
+ * with depth writes; particles with Theta_i = 0 are not drawn at all; only the others take the
+ * translucent path. Picking selects every particle with Theta_i > 0.
+ *
+ * Ordering (paper Sec. 5): the translucent particles are drawn front to back in the order of a
+ * GPU radix sort of the particle indices (vtkParticleDepthSort, compute shaders). The key is the
+ * power of the eye with respect to the sphere, |p - e|^2 - r^2 (perspective), or the centre depth
+ * (parallel projection): for spheres that do not intersect this is an exact visibility order.
+ * The sort runs only when the camera, the actor's matrix, the positions or the radii changed;
+ * never for colour, opacity or shading changes, and never when no particle is translucent.
+ * Intersecting spheres (out of the paper's scope too) are each composited as a whole in that
+ * order, so where two spheres overlap the nearer-by-power one is drawn completely in front.
+ *
+ * Compositing with other geometry: the translucent particles are accumulated front to back in
+ * an off-screen float buffer. Each ray segment ends at the opaque depth (a copy of the depth
+ * buffer after the opaque pass, including opaque particles), so opaque surfaces inside the cloud
+ * occlude what is behind them and cut through the glyphs they intersect. The result is blended
+ * over the opaque image. This happens once per frame in the renderer's translucent stage, whether
+ * VTK composites translucency with dual depth peeling (ParaView's default) or with its
+ * order-independent pass; other translucent geometry is composited in front of the particles.
+ *
+ * Early termination (paper Sec. 5.2): with EarlyTermination on, the sorted particles are drawn in
+ * NumberOfChunks depth chunks; after each chunk, pixels whose accumulated opacity exceeds
+ * TerminationOpacity are masked in the depth buffer, so later chunks skip them (early depth
+ * test). The image changes by at most 1 - TerminationOpacity per channel.
+ *
+ * Requires OpenGL 4.3 (compute shaders, shader storage buffers) for the translucent path; on an
+ * older context an error says so and translucent particles are drawn opaque.
+ *
+ * @sa vtkParticleSphereMapper vtkParticleDepthSort vtkParticleReferenceRenderer
+ */
+#ifndef vtkTransparentSphereMapper_h
+#define vtkTransparentSphereMapper_h
+
+#include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkParticleSphereMapper.h"
+
+class vtkDoubleArray;
+
+class VTKPARTICLERENDERING_EXPORT vtkTransparentSphereMapper : public vtkParticleSphereMapper
+{
+public:
+  static vtkTransparentSphereMapper* New();
+  vtkTypeMacro(vtkTransparentSphereMapper, vtkParticleSphereMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum DensityModels
+  {
+    CONSTANT_DENSITY = 0,
+    SQUARED_DISTANCE_DENSITY = 1
+  };
+
+  ///@{
+  /**
+   * Density inside a glyph: CONSTANT_DENSITY (default) or SQUARED_DISTANCE_DENSITY.
+   */
+  vtkSetClampMacro(DensityModel, int, CONSTANT_DENSITY, SQUARED_DISTANCE_DENSITY);
+  vtkGetMacro(DensityModel, int);
+  void SetDensityModelToConstant() { this->SetDensityModel(CONSTANT_DENSITY); }
+  void SetDensityModelToSquaredDistance() { this->SetDensityModel(SQUARED_DISTANCE_DENSITY); }
+  ///@}
+
+  ///@{
+  /**
+   * Radius of the empty core as a fraction of the radius, in [0, 0.999]. 0 (default): solid.
+   */
+  vtkSetClampMacro(HollowFraction, double, 0.0, 0.999);
+  vtkGetMacro(HollowFraction, double);
+  ///@}
+
+  ///@{
+  /**
+   * alpha_RV of Eq. 2 in [0, 1]: 0 is pure surface reflection, 1 pure volume emission. Default
+   * 0.5.
+   */
+  vtkSetClampMacro(VolumeMix, double, 0.0, 1.0);
+  vtkGetMacro(VolumeMix, double);
+  ///@}
+
+  ///@{
+  /**
+   * Name of a one-component numeric point array giving each particle's maximum opacity through
+   * OpacityRange. Empty (default): every particle has Theta_a = 1 and the actor's opacity (and
+   * scalar alpha) alone sets Theta_i. A missing or unusable array gives a warning and Theta_a = 1;
+   * NaN values give Theta_a = 0.
+   */
+  vtkSetStringMacro(OpacityArrayName);
+  vtkGetStringMacro(OpacityArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Array values mapped linearly to Theta_a = 0 and 1 (clamped outside). Default (0, 1). A range
+   * with equal ends maps values below it to 0 and the others to 1.
+   */
+  vtkSetVector2Macro(OpacityRange, double);
+  vtkGetVector2Macro(OpacityRange, double);
+  ///@}
+
+  ///@{
+  /**
+   * Early termination by depth chunks (paper Sec. 5.2). Default off: measured on llvmpipe it does
+   * not pay below 1e6 particles (Benchmarks/results/transparent_early_termination.csv).
+   */
+  vtkSetMacro(EarlyTermination, bool);
+  vtkGetMacro(EarlyTermination, bool);
+  vtkBooleanMacro(EarlyTermination, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Number of depth chunks with EarlyTermination (default 20) and the accumulated opacity above
+   * which a pixel is masked (default 0.996, i.e. at most 1/255 of the colour is dropped).
+   */
+  vtkSetClampMacro(NumberOfChunks, int, 1, 1024);
+  vtkGetMacro(NumberOfChunks, int);
+  vtkSetClampMacro(TerminationOpacity, double, 0.5, 1.0);
+  vtkGetMacro(TerminationOpacity, double);
+  ///@}
+
+  /**
+   * The maximum over all rays of the density integral through a sphere of radius 1, the I_max
+   * that sets lambda (see the class description): 2 sqrt(1 - f^2) for CONSTANT_DENSITY, for
+   * SQUARED_DISTANCE_DENSITY 2 sqrt(2) / 3 when f <= 1/sqrt(2), else 2 sqrt(1 - f^2) (1 + 2 f^2) / 3.
+   * For a sphere of radius r multiply by r (constant) or r^3 (squared distance).
+   */
+  static double GetMaximumPathIntegral(int densityModel, double hollowFraction);
+
+  /**
+   * Theta_a of every particle as used for drawing (the mapped opacity array, or 1), valid after
+   * the mapper has prepared its input (a render or GetBounds()). Used by the reference renderer.
+   */
+  vtkDoubleArray* GetParticleOpacities();
+
+  ///@{
+  /**
+   * Counters: the number of depth sorts and opacity uploads so far.
+   */
+  vtkGetMacro(NumberOfSorts, vtkIdType);
+  vtkGetMacro(NumberOfOpacityUploads, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Per-stage GPU times of the last translucent frame (with CollectTimings on): sort (keys and
+   * radix sort, 0 when the sort was skipped), translucent drawing (all chunks and masks) and the
+   * copy of the opaque depth plus the final blend.
+   */
+  vtkGetMacro(LastSortGPUSeconds, double);
+  vtkGetMacro(LastTranslucentDrawGPUSeconds, double);
+  vtkGetMacro(LastCompositeGPUSeconds, double);
+  ///@}
+
+  /**
+   * Translucent particles are composited by the mapper, opaque ones like the core's.
+   */
+  bool HasOpaqueGeometry() override;
+  bool HasTranslucentPolygonalGeometry() override;
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkTransparentSphereMapper();
+  ~vtkTransparentSphereMapper() override;
+
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Map the opacity array to Theta_a and the optical depths uploaded to the GPU. Cached on the
+   * input's and the mapper's modification times.
+   */
+  void PrepareOpacities();
+
+  int DensityModel = CONSTANT_DENSITY;
+  double HollowFraction = 0.0;
+  double VolumeMix = 0.5;
+  char* OpacityArrayName = nullptr;
+  double OpacityRange[2] = { 0.0, 1.0 };
+  bool EarlyTermination = false;
+  int NumberOfChunks = 20;
+  double TerminationOpacity = 0.996;
+
+  vtkIdType NumberOfSorts = 0;
+  vtkIdType NumberOfOpacityUploads = 0;
+  double LastSortGPUSeconds = 0.0;
+  double LastTranslucentDrawGPUSeconds = 0.0;
+  double LastCompositeGPUSeconds = 0.0;
+
+private:
+  vtkTransparentSphereMapper(const vtkTransparentSphereMapper&) = delete;
+  void operator=(const vtkTransparentSphereMapper&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif
