@@ -72,6 +72,8 @@ void main()
       discard;
     }
   }
+  // (vtkTransparentSphereMapper removes this line from its translucent variant, which must not
+  // write depths so that its early-termination mask is tested before shading)
   gl_FragDepth = depth;
   vec4 vertexVC = vec4(centerVC + hitRel, 1.0);
   vec3 normalVCVSOutput = (inside ? -hitRel : hitRel) / radiusVC;

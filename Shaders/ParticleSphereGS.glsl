@@ -4,6 +4,9 @@
 // camera-facing triangle per particle (SphereImposter.glsl). Invalid particles
 // (radius <= 0, NaN or Inf) emit nothing. VTK's shader cache renames the
 // fragment stage's *VSOutput inputs to the *GSOutput outputs written here.
+// Hooks: //PR::Sphere::Dec (declarations, e.g. extra per-sphere inputs and
+// outputs), //PR::Sphere::Cull (return to emit nothing for this sphere) and
+// //PR::Sphere::Impl (per emitted vertex, e.g. copy extra outputs).
 //=========================================================================
 layout(points) in;
 layout(triangle_strip, max_vertices = 3) out;
@@ -27,6 +30,7 @@ out vec3 offsetVCGSOutput;
 //VTK::PrimID::Dec
 
 //PR::Include SphereImposter
+//PR::Sphere::Dec
 
 void main()
 {
@@ -36,6 +40,7 @@ void main()
   {
     return;
   }
+  //PR::Sphere::Cull
   int i = 0; // the input vertex, for VTK's pass-through replacements
   for (int corner = 0; corner < 3; ++corner)
   {
@@ -48,6 +53,7 @@ void main()
     //VTK::Color::Impl
     //VTK::Clip::Impl
     //VTK::Picking::Impl
+    //PR::Sphere::Impl
     EmitVertex();
   }
   EndPrimitive();

@@ -39,16 +39,22 @@ bool prIntersectSphere(vec3 s, vec3 d, float r, out float t0, out float t1)
 // pick the wrong one of two overlapping spheres. Split, the large terms are one common constant
 // (their rounding is a common offset of all spheres) and only the small offset varies, so depths
 // stay ordered to about 1e-7 of the sphere distances.
+// Clip-space z and w of the view-coordinate point T + offsetVC (see prDepthOfSplitPointVC).
+vec2 prClipZWOfSplitPointVC(vec2 clipZW0, vec3 offsetVC, mat4 vcdc)
+{
+  return vec2(clipZW0.x + (vcdc[0][2] * offsetVC.x + vcdc[1][2] * offsetVC.y + vcdc[2][2] * offsetVC.z),
+    clipZW0.y + (vcdc[0][3] * offsetVC.x + vcdc[1][3] * offsetVC.y + vcdc[2][3] * offsetVC.z));
+}
+
 bool prDepthOfSplitPointVC(vec2 clipZW0, vec3 offsetVC, mat4 vcdc, out float depth)
 {
-  float clipZ = clipZW0.x + (vcdc[0][2] * offsetVC.x + vcdc[1][2] * offsetVC.y + vcdc[2][2] * offsetVC.z);
-  float clipW = clipZW0.y + (vcdc[0][3] * offsetVC.x + vcdc[1][3] * offsetVC.y + vcdc[2][3] * offsetVC.z);
+  vec2 zw = prClipZWOfSplitPointVC(clipZW0, offsetVC, vcdc);
   depth = 0.0;
-  if (!(clipW > 0.0))
+  if (!(zw.y > 0.0))
   {
     return false;
   }
-  float ndcZ = clipZ / clipW;
+  float ndcZ = zw.x / zw.y;
   if (!(ndcZ >= -1.0 && ndcZ <= 1.0))
   {
     return false;

@@ -13,6 +13,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkParticleSphereMapper.h"
+#include "vtkTransparentSphereMapper.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -224,7 +225,7 @@ int vtkParticleRepresentation::ProcessViewRequest(
     vtkPVRenderView::SetOrderedCompositingConfiguration(inInfo, this,
       vtkPVRenderView::DATA_IS_REDISTRIBUTABLE | vtkPVRenderView::USE_DATA_FOR_LOAD_BALANCING);
     outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(),
-      this->Actor->GetProperty()->GetOpacity() < 1.0 ? 1 : 0);
+      (this->Actor->GetProperty()->GetOpacity() < 1.0 || this->UseOpacityArray) ? 1 : 0);
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
@@ -316,6 +317,72 @@ void vtkParticleRepresentation::UpdateMapperRadiusArray()
 {
   this->Mapper->SetRadiusArrayName(
     (this->UseRadiusArray && !this->RadiusArray.empty()) ? this->RadiusArray.c_str() : nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateMapperOpacityArray()
+{
+  this->Mapper->SetOpacityArrayName(
+    (this->UseOpacityArray && !this->OpacityArray.empty()) ? this->OpacityArray.c_str() : nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetUseOpacityArray(bool use)
+{
+  if (this->UseOpacityArray != use)
+  {
+    this->UseOpacityArray = use;
+    this->UpdateMapperOpacityArray();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOpacityArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (this->OpacityArray != value)
+  {
+    this->OpacityArray = value;
+    this->UpdateMapperOpacityArray();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SelectOpacityArray(int, int, int, int, const char* name)
+{
+  this->SetOpacityArray(name);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOpacityArrayRange(double lo, double hi)
+{
+  this->Mapper->SetOpacityRange(lo, hi);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetDensityModel(int model)
+{
+  this->Mapper->SetDensityModel(model);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetHollowFraction(double fraction)
+{
+  this->Mapper->SetHollowFraction(fraction);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetVolumeMix(double mix)
+{
+  this->Mapper->SetVolumeMix(mix);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetEarlyTermination(int on)
+{
+  this->Mapper->SetEarlyTermination(on != 0);
 }
 
 //------------------------------------------------------------------------------

@@ -49,6 +49,7 @@
 class vtkActor;
 class vtkDataObject;
 class vtkParticleSphereMapper;
+class vtkTransparentSphereMapper;
 class vtkPolyData;
 class vtkScalarsToColors;
 
@@ -81,6 +82,24 @@ public:
   double GetRadius();
   void SetRadiusScaleFactor(double factor);
   double GetRadiusScaleFactor();
+  ///@}
+
+  ///@{
+  /**
+   * Transparency (vtkTransparentSphereMapper): density model, hollow fraction, surface/volume
+   * mix (alpha_RV), early termination, and the maximum opacity per particle from a point array
+   * mapped through OpacityArrayRange (UseOpacityArray) -- multiplied by Opacity.
+   */
+  void SetDensityModel(int model);
+  void SetHollowFraction(double fraction);
+  void SetVolumeMix(double mix);
+  void SetEarlyTermination(int on);
+  void SetUseOpacityArray(bool use);
+  vtkGetMacro(UseOpacityArray, bool);
+  void SetOpacityArray(const char* name);
+  const char* GetOpacityArray() const { return this->OpacityArray.c_str(); }
+  void SelectOpacityArray(int, int, int, int, const char* name);
+  void SetOpacityArrayRange(double lo, double hi);
   ///@}
 
   ///@{
@@ -150,9 +169,12 @@ protected:
 
   void UpdateColoringParameters();
   void UpdateMapperRadiusArray();
+  void UpdateMapperOpacityArray();
 
-  vtkNew<vtkParticleSphereMapper> Mapper;
+  vtkNew<vtkTransparentSphereMapper> Mapper;
   vtkNew<vtkActor> Actor;
+  bool UseOpacityArray = false;
+  std::string OpacityArray;
   vtkSmartPointer<vtkPolyData> ProcessedData;
   // the delivered piece when it had to be flattened again on the rendering side
   vtkSmartPointer<vtkPolyData> RenderedData;

@@ -9,6 +9,8 @@
 #ifndef vtkParticleShaders_h
 #define vtkParticleShaders_h
 
+#include "vtkParticleRenderingModule.h" // for export macro
+
 #include <string>
 
 namespace vtkParticleShaders
@@ -17,12 +19,12 @@ namespace vtkParticleShaders
  * The source of Shaders/<name>.glsl with its includes resolved. An unknown name or include is a
  * programming error: it is reported on stderr and yields a source that fails to compile.
  */
-std::string Get(const std::string& name);
+VTKPARTICLERENDERING_EXPORT std::string Get(const std::string& name);
 
 /**
  * Resolve the //PR::Include lines of an arbitrary source.
  */
-std::string ResolveIncludes(const std::string& source);
+VTKPARTICLERENDERING_EXPORT std::string ResolveIncludes(const std::string& source);
 }
 
 #endif

@@ -55,7 +55,26 @@ public:
   double MaxRadius = 0.0;
   vtkIdType NumberOfPoints = 0;
   vtkMTimeType PrepareTime = 0;
-  vtkPolyData* PreparedInput = nullptr;
+  // what the prepared particles were computed from (see PrepareParticles)
+  struct Signature
+  {
+    vtkPolyData* Input = nullptr;
+    vtkDataArray* Points = nullptr;
+    vtkMTimeType PointsTime = 0;
+    vtkAbstractArray* RadiusArray = nullptr;
+    vtkMTimeType RadiusTime = 0;
+    std::string RadiusArrayName;
+    double Radius = 0.0;
+    vtkIdType NumberOfPoints = -1;
+    bool operator==(const Signature& o) const
+    {
+      return Input == o.Input && Points == o.Points && PointsTime == o.PointsTime &&
+        RadiusArray == o.RadiusArray && RadiusTime == o.RadiusTime &&
+        RadiusArrayName == o.RadiusArrayName && Radius == o.Radius &&
+        NumberOfPoints == o.NumberOfPoints;
+    }
+  };
+  Signature Prepared;
   // the last warning given, so that a warning is said once per input change, not every frame
   std::string LastWarning;
   // the input the buffers were built from
@@ -101,13 +120,24 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   vtkInternals& internals = *this->Internals;
   vtkIdType numPts = (input && input->GetPoints()) ? input->GetNumberOfPoints() : 0;
 
-  vtkMTimeType inputTime = input ? input->GetMTime() : 0;
-  if (internals.PreparedInput == input && internals.PrepareTime > inputTime &&
-    internals.PrepareTime > this->GetParticleDataMTime() && internals.NumberOfPoints == numPts)
+  // Recomputed only when the positions or the radius source changed: colour, opacity or shading
+  // settings (which modify the mapper) keep the prepared particles, their buffers and any sort.
+  vtkInternals::Signature signature;
+  signature.Input = input;
+  signature.Points = numPts > 0 ? input->GetPoints()->GetData() : nullptr;
+  signature.PointsTime = signature.Points ? signature.Points->GetMTime() : 0;
+  signature.RadiusArrayName = this->RadiusArrayName ? this->RadiusArrayName : "";
+  signature.RadiusArray = (numPts > 0 && !signature.RadiusArrayName.empty())
+    ? input->GetPointData()->GetAbstractArray(this->RadiusArrayName)
+    : nullptr;
+  signature.RadiusTime = signature.RadiusArray ? signature.RadiusArray->GetMTime() : 0;
+  signature.Radius = this->Radius;
+  signature.NumberOfPoints = numPts;
+  if (internals.PrepareTime != 0 && internals.Prepared == signature)
   {
     return numPts;
   }
-  internals.PreparedInput = input;
+  internals.Prepared = signature;
   internals.NumberOfPoints = numPts;
   internals.PrepareTime = 0;
 
@@ -335,6 +365,13 @@ double* vtkParticleSphereMapper::GetBounds()
     this->Bounds[2 * k + 1] = internals.CenterBounds[2 * k + 1] + grow;
   }
   return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkParticleSphereMapper::GetParticleGeometryTime()
+{
+  this->PrepareParticles();
+  return this->Internals->PrepareTime;
 }
 
 //------------------------------------------------------------------------------
@@ -611,6 +648,7 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   }
   this->VBOs->CacheDataArray("radiusMC", internals.Radii, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray("scalarColor", colors, ren, VTK_UNSIGNED_CHAR);
+  this->CacheParticleAttributes(ren, act);
   this->VBOs->BuildAllVBOs(ren);
 
   posVBO = this->VBOs->GetVBO("vertexMC");

@@ -149,6 +149,12 @@ public:
   vtkFloatArray* GetParticleRadii();
 
   /**
+   * Time of the last change of the particles' positions or radii (the input's points, the radius
+   * array or the radius settings); colour, opacity and shading settings do not change it.
+   */
+  vtkMTimeType GetParticleGeometryTime();
+
+  /**
    * The radius scale from model to view coordinates applied on the GPU: RadiusScaleFactor times
    * the actor's scale (the cube root of the determinant of its matrix).
    */
@@ -188,6 +194,12 @@ protected:
   bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
   void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Hook for subclasses: add per-particle vertex attributes with this->VBOs->CacheDataArray()
+   * (called while the buffers are built, before the upload).
+   */
+  virtual void CacheParticleAttributes(vtkRenderer*, vtkActor*) {}
 
   /**
    * Modification time of what the uploaded particle buffers depend on: the mapper's MTime (which

@@ -1,34 +1,131 @@
 #include "vtkTransparentSphereMapper.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkDoubleArray.h"
+#include "vtkDualDepthPeelingPass.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleDepthSort.h"
+#include "vtkParticleFrontToBackTarget.h"
+#include "vtkParticleShaders.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 
+#include "vtk_glew.h"
+
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <vector>
 
 vtkStandardNewMacro(vtkTransparentSphereMapper);
 
-// Work in progress: the real implementation replaces this file.
+namespace
+{
+// which shader a helper holds
+enum class Variant
+{
+  Opaque,     // the core: opaque particles (depth writes) and picking
+  Translucent // the emission-absorption composite of the translucent stage
+};
+
+// GS culling modes (uniform prCullMode)
+const int CullOpaqueStage = 0;    // opaque variant: only Theta_a = 1
+const int CullAllVisible = 1;     // either variant: everything with Theta_a > 0
+const int CullTranslucentOnly = 0; // translucent variant: Theta_a in (0, 1)
+
+struct OpacitySummary
+{
+  bool AnyOpaque = false;
+  bool AnyTranslucent = false;
+  vtkIdType NaNs = 0;
+};
+}
+
+//------------------------------------------------------------------------------
 class vtkTransparentSphereMapper::vtkInternals
 {
 public:
-  vtkNew<vtkDoubleArray> Opacities;
+  // per-particle opacity
+  vtkNew<vtkDoubleArray> Opacities;    // Theta_a
+  vtkNew<vtkFloatArray> OpticalDepths; // -ln(1 - Theta_a); -1 for Theta_a = 1
+  bool AnyOpaque = true;
+  bool AnyTranslucent = false;
+  // what they were computed from
+  vtkMTimeType GeometryTime = 0;
+  vtkAbstractArray* OpacityArray = nullptr;
+  vtkMTimeType OpacityArrayTime = 0;
+  std::string OpacityArrayName;
+  double OpacityRange[2] = { 0.0, 0.0 };
+  bool OpacitiesValid = false;
+  std::string LastWarning;
+
+  // shader variant being built and the culling mode of the next draw
+  Variant Building = Variant::Opaque;
+  int CullMode = CullOpaqueStage;
+
+  // sorting
+  vtkNew<vtkParticleComputeProgram> KeyProgram;
+  vtkNew<vtkParticleDepthSort> Sort;
+  std::vector<double> SortState;
+  int Support = -1; // OpenGL 4.3: -1 not checked yet, 0 no, 1 yes
+  vtkOpenGLRenderWindow* SupportContext = nullptr;
+  bool SupportWarned = false;
+
+  // compositing
+  vtkNew<vtkParticleFrontToBackTarget> Target;
+  vtkMTimeType LastPeelingStageTime = 0;
+  bool SinglePeelingWarned = false;
+
+  // timings
+  vtkOpenGLRenderTimer TotalTimer;
+  vtkOpenGLRenderTimer SortTimer;
+  vtkOpenGLRenderTimer DrawTimer;
+  bool SortTimed = false;
 };
 
+//------------------------------------------------------------------------------
 vtkTransparentSphereMapper::vtkTransparentSphereMapper()
   : Internals(new vtkInternals)
 {
+  this->Internals->Opacities->SetName("ParticleOpacity");
+  this->Internals->OpticalDepths->SetName("ParticleOpticalDepth");
 }
 
+//------------------------------------------------------------------------------
 vtkTransparentSphereMapper::~vtkTransparentSphereMapper()
 {
   this->SetOpacityArrayName(nullptr);
   delete this->Internals;
 }
 
+//------------------------------------------------------------------------------
 double vtkTransparentSphereMapper::GetMaximumPathIntegral(int model, double f)
 {
-  const double g = std::sqrt(std::max(0.0, 1.0 - f * f));
+  f = std::min(std::max(f, 0.0), 0.999);
+  // the chord through the core's tangent point, 2 sqrt(1 - f^2), as (1 - f)(1 + f) for f near 1
+  const double g = std::sqrt((1.0 - f) * (1.0 + f));
   if (model == CONSTANT_DENSITY)
   {
     return 2.0 * g;
@@ -40,55 +137,660 @@ double vtkTransparentSphereMapper::GetMaximumPathIntegral(int model, double f)
   return 2.0 * g * (1.0 + 2.0 * f * f) / 3.0;
 }
 
+//------------------------------------------------------------------------------
 vtkDoubleArray* vtkTransparentSphereMapper::GetParticleOpacities()
 {
   this->PrepareOpacities();
   return this->Internals->Opacities;
 }
 
-void vtkTransparentSphereMapper::PrepareOpacities()
+//------------------------------------------------------------------------------
+vtkParticleFrontToBackTarget* vtkTransparentSphereMapper::GetFrontToBackTarget()
 {
-  vtkIdType n = this->GetParticleRadii()->GetNumberOfTuples();
-  this->Internals->Opacities->SetNumberOfTuples(n);
-  this->Internals->Opacities->Fill(1.0);
+  return this->Internals->Target;
 }
 
+//------------------------------------------------------------------------------
+vtkParticleDepthSort* vtkTransparentSphereMapper::GetDepthSort()
+{
+  return this->Internals->Sort;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::PrepareOpacities()
+{
+  vtkInternals& internals = *this->Internals;
+  vtkPolyData* input = this->GetInput();
+  const vtkMTimeType geometryTime = this->GetParticleGeometryTime(); // prepares the particles
+  vtkFloatArray* radii = this->GetParticleRadii();
+  const vtkIdType numPts = radii->GetNumberOfTuples();
+
+  const std::string name = this->OpacityArrayName ? this->OpacityArrayName : "";
+  vtkAbstractArray* abstractArray = (input && !name.empty() && numPts > 0)
+    ? input->GetPointData()->GetAbstractArray(name.c_str())
+    : nullptr;
+  const vtkMTimeType arrayTime = abstractArray ? abstractArray->GetMTime() : 0;
+  if (internals.OpacitiesValid && internals.GeometryTime == geometryTime &&
+    internals.OpacityArray == abstractArray && internals.OpacityArrayTime == arrayTime &&
+    internals.OpacityArrayName == name && internals.OpacityRange[0] == this->OpacityRange[0] &&
+    internals.OpacityRange[1] == this->OpacityRange[1] &&
+    internals.Opacities->GetNumberOfTuples() == numPts)
+  {
+    return;
+  }
+  internals.GeometryTime = geometryTime;
+  internals.OpacityArray = abstractArray;
+  internals.OpacityArrayTime = arrayTime;
+  internals.OpacityArrayName = name;
+  internals.OpacityRange[0] = this->OpacityRange[0];
+  internals.OpacityRange[1] = this->OpacityRange[1];
+  internals.OpacitiesValid = true;
+
+  std::ostringstream warnings;
+  vtkDataArray* array = nullptr;
+  if (!name.empty() && numPts > 0)
+  {
+    if (!abstractArray)
+    {
+      warnings << "Opacity array '" << name
+               << "' is not a point array of the input: every particle has maximum opacity 1 "
+                  "(times the actor's opacity). ";
+    }
+    else if (!(array = vtkDataArray::SafeDownCast(abstractArray)))
+    {
+      warnings << "Opacity array '" << name << "' is not numeric ("
+               << abstractArray->GetClassName() << "): every particle has maximum opacity 1. ";
+    }
+    else if (array->GetNumberOfComponents() != 1)
+    {
+      warnings << "Opacity array '" << name << "' has " << array->GetNumberOfComponents()
+               << " components, an opacity needs exactly 1: every particle has maximum "
+                  "opacity 1. ";
+      array = nullptr;
+    }
+  }
+
+  internals.Opacities->SetNumberOfTuples(numPts);
+  internals.OpticalDepths->SetNumberOfTuples(numPts);
+  double* theta = internals.Opacities->GetPointer(0);
+  float* kappa = internals.OpticalDepths->GetPointer(0);
+  const float* r = radii->GetPointer(0);
+  const double lo = this->OpacityRange[0];
+  const double hi = this->OpacityRange[1];
+
+  vtkSMPThreadLocal<OpacitySummary> local;
+  vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
+    OpacitySummary& s = local.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double t = 1.0;
+      if (array)
+      {
+        const double v = array->GetComponent(i, 0);
+        if (std::isnan(v))
+        {
+          ++s.NaNs;
+          t = 0.0;
+        }
+        else if (hi == lo)
+        {
+          t = v < lo ? 0.0 : 1.0;
+        }
+        else
+        {
+          t = std::min(1.0, std::max(0.0, (v - lo) / (hi - lo)));
+        }
+      }
+      theta[i] = t;
+      // the optical depth in double: Theta = 1 - 1e-7 is not representable as a float
+      kappa[i] = t >= 1.0 ? -1.0f : (t <= 0.0 ? 0.0f : static_cast<float>(-std::log1p(-t)));
+      if (r[i] > 0.0f)
+      {
+        s.AnyOpaque |= t >= 1.0;
+        s.AnyTranslucent |= (t > 0.0 && t < 1.0);
+      }
+    }
+  });
+  OpacitySummary total;
+  for (const OpacitySummary& s : local)
+  {
+    total.AnyOpaque |= s.AnyOpaque;
+    total.AnyTranslucent |= s.AnyTranslucent;
+    total.NaNs += s.NaNs;
+  }
+  internals.AnyOpaque = total.AnyOpaque;
+  internals.AnyTranslucent = total.AnyTranslucent;
+  internals.Opacities->Modified();
+  internals.OpticalDepths->Modified();
+  ++this->NumberOfOpacityUploads;
+  if (total.NaNs > 0)
+  {
+    warnings << total.NaNs << " of " << numPts << " values of opacity array '" << name
+             << "' are NaN: those particles are fully transparent. ";
+  }
+  const std::string warning = warnings.str();
+  if (!warning.empty() && warning != internals.LastWarning)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  internals.LastWarning = warning;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransparentSphereMapper::HasOpaqueGeometry()
 {
-  return true;
+  if (!this->GetInput() || this->GetInput()->GetNumberOfPoints() == 0)
+  {
+    return true;
+  }
+  this->PrepareOpacities();
+  return this->Internals->AnyOpaque;
 }
+
+//------------------------------------------------------------------------------
 bool vtkTransparentSphereMapper::HasTranslucentPolygonalGeometry()
 {
-  return false;
+  if (!this->GetInput() || this->GetInput()->GetNumberOfPoints() == 0)
+  {
+    return false;
+  }
+  this->PrepareOpacities();
+  // Theta_a < 1, or scalar colours with alpha < 1 (a lookup table with opacity mapping)
+  return this->Internals->AnyTranslucent ||
+    (this->Internals->AnyOpaque && this->Superclass::HasTranslucentPolygonalGeometry());
 }
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::CacheParticleAttributes(vtkRenderer* ren, vtkActor*)
+{
+  this->PrepareOpacities();
+  this->VBOs->CacheDataArray("opticalDepthMC", this->Internals->OpticalDepths, ren, VTK_FLOAT);
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::BuildBufferObjects(ren, act);
+  // The triangle-strip helper holds the translucent variant's program and attribute bindings;
+  // like the triangle helper its index count is the number of particles.
+  this->Primitives[PrimitiveTriStrips].IBO->IndexCount =
+    this->Primitives[PrimitiveTris].IBO->IndexCount;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  const bool translucent = this->Internals->Building == Variant::Translucent;
+
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vs, "//PR::Sphere::Dec",
+    "in float opticalDepthMC;\nflat out float opticalDepthVSOutput;\n//PR::Sphere::Dec");
+  vtkShaderProgram::Substitute(
+    vs, "//PR::Sphere::Impl", "opticalDepthVSOutput = opticalDepthMC;\n  //PR::Sphere::Impl");
+  shaders[vtkShader::Vertex]->SetSource(vs);
+
+  std::string gs = shaders[vtkShader::Geometry]->GetSource();
+  vtkShaderProgram::Substitute(gs, "//PR::Sphere::Dec",
+    "flat in float opticalDepthVSOutput[];\nflat out float opticalDepthGSOutput;\n"
+    "uniform int prCullMode;\n//PR::Sphere::Dec");
+  // Theta_a = 0 is never drawn; the opaque stage draws only Theta_a = 1, the translucent stage
+  // skips Theta_a = 1 when those are drawn opaque (see prCullMode)
+  vtkShaderProgram::Substitute(gs, "//PR::Sphere::Cull",
+    "float kappaA = opticalDepthVSOutput[0];\n"
+    "  if (kappaA == 0.0 || (prCullMode == 0 && (kappaA < 0.0) != " +
+      std::string(translucent ? "false" : "true") +
+      "))\n"
+      "  {\n"
+      "    return;\n"
+      "  }\n"
+      "  //PR::Sphere::Cull");
+  vtkShaderProgram::Substitute(gs, "//PR::Sphere::Impl",
+    "opticalDepthGSOutput = opticalDepthVSOutput[0];\n    //PR::Sphere::Impl");
+  shaders[vtkShader::Geometry]->SetSource(gs);
+
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  if (!translucent)
+  {
+    vtkShaderProgram::Substitute(fs, "//PR::Sphere::Dec",
+      "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n//PR::Sphere::Dec");
+    // the opaque stage keeps Theta_i = Theta_a * opacity = 1 only; picking keeps all
+    vtkShaderProgram::Substitute(fs, "//PR::Shading::Impl",
+      "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= 1.0))\n"
+      "  {\n"
+      "    discard;\n"
+      "  }\n"
+      "  //PR::Shading::Impl");
+  }
+  else
+  {
+    // no depth writes: the early-termination mask is tested before shading
+    vtkShaderProgram::Substitute(fs, "gl_FragDepth = depth;", "");
+    std::ostringstream dec;
+    dec << "flat in float opticalDepthVSOutput;\n"
+           "uniform float prVolumeMix;\n"
+           "uniform float prMaximumIntegral;\n"
+           "uniform float prHollowFraction;\n"
+           "uniform sampler2D prOpaqueDepth;\n"
+           "#define PR_DENSITY_MODEL "
+        << this->DensityModel
+        << "\n"
+           "//PR::Include EmissionAbsorption\n"
+           "//PR::Sphere::Dec";
+    vtkShaderProgram::Substitute(fs, "//PR::Sphere::Dec", dec.str());
+    vtkShaderProgram::Substitute(fs, "//PR::Shading::Impl",
+      "{\n"
+      "    // vtkTransparentSphereMapper: Theta_i = Theta_a * opacity, as an optical depth\n"
+      "    float kappaA = opticalDepthVSOutput;\n"
+      "    if (kappaA < 0.0 && opacity >= 1.0)\n"
+      "    {\n"
+      "      discard; // opaque: drawn in the opaque stage\n"
+      "    }\n"
+      "    float kappa = kappaA;\n"
+      "    if (opacity < 1.0)\n"
+      "    {\n"
+      "      float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);\n"
+      "      kappa = -prLog1p(-opacity * thetaA);\n"
+      "    }\n"
+      "    if (!(kappa > 0.0))\n"
+      "    {\n"
+      "      discard;\n"
+      "    }\n"
+      "    // the visible part of the chord, as fractions u of [entry, exit]: clip space is\n"
+      "    // affine along the ray, so each bound (in front of the eye, near and far planes,\n"
+      "    // in front of the opaque depth) is a linear inequality in u\n"
+      "    vec2 zw0 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
+      "      centerOffsetVCVSOutput + prRayS + prT0 * prRayD, VCDCMatrix);\n"
+      "    vec2 zw1 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
+      "      centerOffsetVCVSOutput + prRayS + prT1 * prRayD, VCDCMatrix);\n"
+      "    float opaqueDepth = texelFetch(prOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r;\n"
+      "    float opaqueNDC = (2.0 * opaqueDepth - gl_DepthRange.near - gl_DepthRange.far) /\n"
+      "      gl_DepthRange.diff;\n"
+      "    vec2 bounds[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0),\n"
+      "      vec2(-1.0, opaqueNDC));\n"
+      "    float un = 0.0;\n"
+      "    float uf = 1.0;\n"
+      "    bool clipN = false;\n"
+      "    bool clipF = false;\n"
+      "    for (int k = 0; k < 4; ++k)\n"
+      "    {\n"
+      "      float g0 = dot(bounds[k], zw0);\n"
+      "      float g1 = dot(bounds[k], zw1);\n"
+      "      if (g0 < 0.0 && g1 < 0.0)\n"
+      "      {\n"
+      "        discard;\n"
+      "      }\n"
+      "      if (g0 < 0.0)\n"
+      "      {\n"
+      "        un = max(un, g0 / (g0 - g1));\n"
+      "        clipN = true;\n"
+      "      }\n"
+      "      else if (g1 < 0.0)\n"
+      "      {\n"
+      "        uf = min(uf, g0 / (g0 - g1));\n"
+      "        clipF = true;\n"
+      "      }\n"
+      "    }\n"
+      "    if (!(uf > un))\n"
+      "    {\n"
+      "      discard;\n"
+      "    }\n"
+      "    // the segment in units of the radius from the closest approach to the centre\n"
+      "    float h = 0.5 * (prT1 - prT0) / radiusVC;\n"
+      "    vec3 q = prRayS - dot(prRayS, prRayD) * prRayD;\n"
+      "    float b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));\n"
+      "    float tn = -h + 2.0 * h * un;\n"
+      "    float tf = -h + 2.0 * h * uf;\n"
+      "    float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction);\n"
+      "    float theta = prSegmentOpacity(kappa, integral, prMaximumIntegral);\n"
+      "    // Eq. 2: surface reflection at the entry point mixed with the volume colour; without\n"
+      "    // an entry surface (the segment starts inside) only the volume emits\n"
+      "    vec3 radiance = clipN ? diffuseColor : mix(gl_FragData[0].rgb, diffuseColor, "
+      "prVolumeMix);\n"
+      "    gl_FragData[0] = vec4(theta * radiance, theta);\n"
+      "  }\n"
+      "  //PR::Shading::Impl");
+    fs = vtkParticleShaders::ResolveIncludes(fs);
+  }
+  shaders[vtkShader::Fragment]->SetSource(fs);
 }
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  vtkInternals& internals = *this->Internals;
+  program->SetUniformi("prCullMode", internals.CullMode);
+  if (&cellBO == &this->Primitives[PrimitiveTriStrips])
+  {
+    program->SetUniformf("prVolumeMix", static_cast<float>(this->VolumeMix));
+    program->SetUniformf("prHollowFraction", static_cast<float>(this->HollowFraction));
+    program->SetUniformf("prMaximumIntegral",
+      static_cast<float>(GetMaximumPathIntegral(this->DensityModel, this->HollowFraction)));
+    program->SetUniformi(
+      "prOpaqueDepth", internals.Target->GetOpaqueDepthTexture()->GetTextureUnit());
+  }
 }
-bool vtkTransparentSphereMapper::GetNeedToRebuildShaders(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
-}
-void vtkTransparentSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
-{
-  this->Superclass::BuildBufferObjects(ren, act);
-}
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
-  this->Superclass::RenderPieceDraw(ren, act);
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType numPts = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
+  if (numPts <= 0)
+  {
+    return;
+  }
+  if (ren->GetSelector() || !act->IsRenderingTranslucentPolygonalGeometry())
+  {
+    internals.Building = Variant::Opaque;
+    internals.CullMode = ren->GetSelector() ? CullAllVisible : CullOpaqueStage;
+    this->Superclass::RenderPieceDraw(ren, act);
+    return;
+  }
+
+  // The translucent stage. Which pass (if any) composites translucency?
+  vtkInformation* info = act->GetPropertyKeys();
+  vtkDualDepthPeelingPass* peeling = nullptr;
+  bool orderIndependent = false;
+  bool singlePeeling = false;
+  std::vector<vtkSmartPointer<vtkObjectBase>> passes;
+  if (info && info->Has(vtkOpenGLRenderPass::RenderPasses()))
+  {
+    vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
+    for (int i = 0; i < key->Length(info); ++i)
+    {
+      vtkObjectBase* pass = key->Get(info, i);
+      passes.emplace_back(pass);
+      if (vtkDualDepthPeelingPass::SafeDownCast(pass))
+      {
+        peeling = vtkDualDepthPeelingPass::SafeDownCast(pass);
+      }
+      else if (vtkOrderIndependentTranslucentPass::SafeDownCast(pass))
+      {
+        orderIndependent = true;
+      }
+      else if (vtkDepthPeelingPass::SafeDownCast(pass))
+      {
+        singlePeeling = true;
+      }
+    }
+  }
+
+  // OpenGL 4.3 for the sort
+  vtkOpenGLRenderWindow* ctx = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (internals.SupportContext != ctx)
+  {
+    std::string why;
+    internals.Support = vtkParticleComputeProgram::IsSupported(ctx, &why) ? 1 : 0;
+    internals.SupportContext = ctx;
+    if (!internals.Support && !internals.SupportWarned)
+    {
+      vtkErrorMacro(<< why << " Translucent particles are drawn as opaque spheres composited by "
+                              "VTK's translucency pass, without the emission-absorption model.");
+      internals.SupportWarned = true;
+    }
+  }
+  if (!internals.Support || singlePeeling)
+  {
+    if (singlePeeling && !internals.SinglePeelingWarned)
+    {
+      vtkWarningMacro(<< "Single-layer depth peeling (no dual depth peeling on this context): "
+                         "translucent particles are drawn as opaque spheres in every peel.");
+      internals.SinglePeelingWarned = true;
+    }
+    internals.Building = Variant::Opaque;
+    internals.CullMode = CullAllVisible;
+    this->Superclass::RenderPieceDraw(ren, act);
+    return;
+  }
+
+  if (peeling)
+  {
+    // Dual depth peeling renders the translucent props once to initialise its depths (two draw
+    // buffers) and then once per peel: composite the particles once, in that first render.
+    if (peeling->GetActiveDrawBuffers() != 2 ||
+      peeling->GetShaderStageMTime() == internals.LastPeelingStageTime)
+    {
+      return;
+    }
+    internals.LastPeelingStageTime = peeling->GetShaderStageMTime();
+  }
+
+  // Our own drawing must not get the translucency passes' shader replacements.
+  if (!passes.empty())
+  {
+    info->Remove(vtkOpenGLRenderPass::RenderPasses());
+    for (auto& pass : passes)
+    {
+      if (!vtkDualDepthPeelingPass::SafeDownCast(pass) &&
+        !vtkOrderIndependentTranslucentPass::SafeDownCast(pass))
+      {
+        vtkOpenGLRenderPass::RenderPasses()->Append(info, pass);
+      }
+    }
+  }
+  this->RenderTranslucentParticles(ren, act, peeling != nullptr || orderIndependent);
+  if (!passes.empty())
+  {
+    info->Remove(vtkOpenGLRenderPass::RenderPasses());
+    for (auto& pass : passes)
+    {
+      vtkOpenGLRenderPass::RenderPasses()->Append(info, pass);
+    }
+  }
 }
-void vtkTransparentSphereMapper::ReleaseGraphicsResources(vtkWindow* w)
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::RenderTranslucentParticles(
+  vtkRenderer* ren, vtkActor* act, bool savedByPass)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType numPts = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
+  if (this->CollectTimings)
+  {
+    internals.TotalTimer.Reset();
+    internals.TotalTimer.Start();
+  }
+  internals.SortTimed = false;
+  if (!this->UpdateSortedOrder(ren, act, numPts))
+  {
+    return;
+  }
+  if (!internals.Target->Begin(ren, savedByPass))
+  {
+    return;
+  }
+  vtkTextureObject* opaqueDepth = internals.Target->GetOpaqueDepthTexture();
+  opaqueDepth->Activate();
+
+  vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTriStrips];
+  internals.Building = Variant::Translucent;
+  // Theta_a = 1 particles are drawn opaque unless the actor or its colours lower the opacity
+  const bool opaqueDrawnSeparately = act->GetProperty()->GetOpacity() >= 1.0 &&
+    !this->Superclass::HasTranslucentPolygonalGeometry();
+  internals.CullMode = opaqueDrawnSeparately ? CullTranslucentOnly : CullAllVisible;
+  this->UpdateShaders(cellBO, ren, act);
+  if (cellBO.Program)
+  {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, internals.Sort->GetIndexBuffer());
+    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
+    if (this->CollectTimings)
+    {
+      internals.DrawTimer.Reset();
+      internals.DrawTimer.Start();
+    }
+    const int chunks =
+      this->EarlyTermination ? static_cast<int>(std::min<vtkIdType>(this->NumberOfChunks, numPts)) : 1;
+    vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+    for (int c = 0; c < chunks; ++c)
+    {
+      const vtkIdType first = numPts * c / chunks;
+      const vtkIdType last = numPts * (c + 1) / chunks;
+      glDrawElements(GL_POINTS, static_cast<GLsizei>(last - first), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(static_cast<size_t>(first) * sizeof(GLuint)));
+      if (c + 1 < chunks)
+      {
+        internals.Target->MaskSaturatedPixels(this->TerminationOpacity);
+        ctx->GetShaderCache()->ReadyShaderProgram(cellBO.Program);
+        cellBO.VAO->Bind();
+      }
+    }
+    if (this->CollectTimings)
+    {
+      internals.DrawTimer.Stop();
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  }
+  internals.Building = Variant::Opaque;
+  opaqueDepth->Deactivate();
+  internals.Target->End();
+  if (this->CollectTimings)
+  {
+    internals.TotalTimer.Stop();
+    const double total = internals.TotalTimer.GetElapsedSeconds();
+    this->LastSortGPUSeconds = internals.SortTimed ? internals.SortTimer.GetElapsedSeconds() : 0.0;
+    this->LastTranslucentDrawGPUSeconds = internals.DrawTimer.GetElapsedSeconds();
+    this->LastCompositeGPUSeconds =
+      std::max(0.0, total - this->LastSortGPUSeconds - this->LastTranslucentDrawGPUSeconds);
+  }
 }
+
+//------------------------------------------------------------------------------
+bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* act, vtkIdType count)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkCamera* cam = ren->GetActiveCamera();
+
+  // MC -> VC as the shaders use it: view * actor * VBO shift/scale, in double
+  vtkNew<vtkMatrix4x4> mcvc;
+  vtkNew<vtkMatrix4x4> shiftScale;
+  vtkMatrix4x4::Transpose(this->VBOShiftScale, shiftScale); // stored transposed
+  if (!act->GetIsIdentity())
+  {
+    vtkNew<vtkMatrix4x4> actorMatrix;
+    act->GetMatrix(actorMatrix);
+    vtkMatrix4x4::Multiply4x4(actorMatrix, shiftScale, mcvc);
+    vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), mcvc, mcvc);
+  }
+  else
+  {
+    vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), shiftScale, mcvc);
+  }
+  const double radiusScale = this->GetRadiusScaleVC(act);
+  const int parallel = cam->GetParallelProjection() ? 1 : 0;
+
+  std::vector<double> state(mcvc->GetData(), mcvc->GetData() + 16);
+  state.push_back(parallel);
+  state.push_back(radiusScale);
+  state.push_back(static_cast<double>(this->GetParticleGeometryTime()));
+  state.push_back(static_cast<double>(count));
+  if (state == internals.SortState)
+  {
+    return true; // neither the camera nor the particles moved
+  }
+
+  vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  if (!internals.Sort->Reserve(ctx, count))
+  {
+    internals.SortState.clear();
+    return false;
+  }
+  vtkParticleComputeProgram* keys = internals.KeyProgram;
+  keys->SetSource(vtkParticleShaders::Get("ParticleDepthKeys"));
+  if (!keys->Build(ctx))
+  {
+    internals.SortState.clear();
+    return false;
+  }
+  vtkOpenGLVertexBufferObject* positions = this->VBOs->GetVBO("vertexMC");
+  vtkOpenGLVertexBufferObject* radii = this->VBOs->GetVBO("radiusMC");
+  if (!positions || !radii)
+  {
+    return false;
+  }
+  if (this->CollectTimings)
+  {
+    internals.SortTimer.Reset();
+    internals.SortTimer.Start();
+    internals.SortTimed = true;
+  }
+  keys->Use();
+  float linear[16]; // column-major, linear part only
+  for (int col = 0; col < 4; ++col)
+  {
+    for (int row = 0; row < 4; ++row)
+    {
+      linear[col * 4 + row] =
+        (row < 3 && col < 3) ? static_cast<float>(mcvc->GetElement(row, col)) : 0.0f;
+    }
+  }
+  keys->SetUniformMatrix4x4("matrixMCVC", linear);
+  keys->SetUniform3f("translationVC", static_cast<float>(mcvc->GetElement(0, 3)),
+    static_cast<float>(mcvc->GetElement(1, 3)), static_cast<float>(mcvc->GetElement(2, 3)));
+  keys->SetUniformf("radiusScale", static_cast<float>(radiusScale));
+  keys->SetUniformi("parallelProjection", parallel);
+  keys->SetUniformui("count", static_cast<unsigned int>(count));
+  keys->SetUniformui("positionStride", positions->GetStride() / sizeof(float));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions->GetHandle());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, radii->GetHandle());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, internals.Sort->GetKeyBuffer());
+  keys->Dispatch(static_cast<unsigned int>((count + 255) / 256));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, 0);
+  glUseProgram(0);
+  const bool sorted = internals.Sort->Sort(count);
+  // the shader cache's notion of the bound program is stale after raw glUseProgram calls
+  ctx->GetShaderCache()->ReleaseCurrentShader();
+  if (this->CollectTimings)
+  {
+    internals.SortTimer.Stop();
+  }
+  if (!sorted)
+  {
+    internals.SortState.clear();
+    return false;
+  }
+  internals.SortState = state;
+  ++this->NumberOfSorts;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.KeyProgram->ReleaseGraphicsResources(window);
+  internals.Sort->ReleaseGraphicsResources(window);
+  internals.Target->ReleaseGraphicsResources(window);
+  internals.TotalTimer.ReleaseGraphicsResources();
+  internals.SortTimer.ReleaseGraphicsResources();
+  internals.DrawTimer.ReleaseGraphicsResources();
+  internals.SortState.clear();
+  internals.SupportContext = nullptr;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "DensityModel: "
+     << (this->DensityModel == CONSTANT_DENSITY ? "Constant" : "SquaredDistance") << "\n";
+  os << indent << "HollowFraction: " << this->HollowFraction << "\n";
+  os << indent << "VolumeMix: " << this->VolumeMix << "\n";
+  os << indent << "OpacityArrayName: "
+     << (this->OpacityArrayName ? this->OpacityArrayName : "(none)") << "\n";
+  os << indent << "OpacityRange: " << this->OpacityRange[0] << " " << this->OpacityRange[1]
+     << "\n";
+  os << indent << "EarlyTermination: " << this->EarlyTermination << "\n";
+  os << indent << "NumberOfChunks: " << this->NumberOfChunks << "\n";
+  os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
+  os << indent << "NumberOfSorts: " << this->NumberOfSorts << "\n";
+  os << indent << "NumberOfOpacityUploads: " << this->NumberOfOpacityUploads << "\n";
 }

@@ -84,6 +84,8 @@
 #include "vtkParticleSphereMapper.h"
 
 class vtkDoubleArray;
+class vtkParticleDepthSort;
+class vtkParticleFrontToBackTarget;
 
 class VTKPARTICLERENDERING_EXPORT vtkTransparentSphereMapper : public vtkParticleSphereMapper
 {
@@ -199,6 +201,15 @@ public:
   vtkGetMacro(LastCompositeGPUSeconds, double);
   ///@}
 
+  ///@{
+  /**
+   * The compositing target and the sort, for tests and benchmarks (e.g. to keep and read the
+   * float accumulation of the last frame, or count masked pixels).
+   */
+  vtkParticleFrontToBackTarget* GetFrontToBackTarget();
+  vtkParticleDepthSort* GetDepthSort();
+  ///@}
+
   /**
    * Translucent particles are composited by the mapper, opaque ones like the core's.
    */
@@ -215,8 +226,8 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
   /**
@@ -224,6 +235,18 @@ protected:
    * input's and the mapper's modification times.
    */
   void PrepareOpacities();
+
+  /**
+   * The translucent stage: sort when needed, accumulate front to back, blend over the opaque
+   * image.
+   */
+  void RenderTranslucentParticles(vtkRenderer* ren, vtkActor* act, bool savedByPass);
+
+  /**
+   * Compute the sort keys and sort, unless the camera, actor matrix and particle geometry are
+   * those of the last sort. Returns false when the sort could not run.
+   */
+  bool UpdateSortedOrder(vtkRenderer* ren, vtkActor* act, vtkIdType count);
 
   int DensityModel = CONSTANT_DENSITY;
   double HollowFraction = 0.0;

@@ -1,0 +1,375 @@
+#include "vtkParticleFrontToBackTarget.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "vtk_glew.h"
+
+#include <memory>
+
+vtkStandardNewMacro(vtkParticleFrontToBackTarget);
+
+namespace
+{
+const int MaxSavedDrawBuffers = 8;
+}
+
+//------------------------------------------------------------------------------
+class vtkParticleFrontToBackTarget::vtkInternals
+{
+public:
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkOpenGLState* State = nullptr;
+  vtkNew<vtkTextureObject> Accumulation;
+  vtkNew<vtkTextureObject> MaskDepth;
+  vtkNew<vtkTextureObject> OpaqueDepth;
+  vtkNew<vtkOpenGLFramebufferObject> AccumulationFBO;
+  vtkNew<vtkOpenGLFramebufferObject> MaskFBO;
+  std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> BlendQuad;
+  bool Allocated = false;
+  bool Active = false;
+
+  // where the opaque image lives and the state to restore
+  unsigned int OuterFramebuffer = 0;
+  int OuterViewport[4] = { 0, 0, 0, 0 };
+  unsigned int InnerFramebuffer = 0;
+  unsigned int InnerDrawBuffers[MaxSavedDrawBuffers];
+  unsigned int MaskQuery = 0;
+  std::vector<float> Retained;
+
+  bool Allocate(vtkOpenGLRenderWindow* ctx, int w, int h)
+  {
+    if (this->Allocated && this->Context == ctx)
+    {
+      if (this->Accumulation->GetWidth() != static_cast<unsigned int>(w) ||
+        this->Accumulation->GetHeight() != static_cast<unsigned int>(h))
+      {
+        this->Accumulation->Resize(w, h);
+        this->MaskDepth->Resize(w, h);
+        this->OpaqueDepth->Resize(w, h);
+      }
+      return true;
+    }
+    this->Context = ctx;
+    for (vtkTextureObject* tex : { this->Accumulation.Get(), this->MaskDepth.Get(),
+           this->OpaqueDepth.Get() })
+    {
+      tex->SetContext(ctx);
+      tex->SetMinificationFilter(vtkTextureObject::Nearest);
+      tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+      tex->SetWrapS(vtkTextureObject::ClampToEdge);
+      tex->SetWrapT(vtkTextureObject::ClampToEdge);
+    }
+    this->Accumulation->SetInternalFormat(GL_RGBA32F);
+    this->Accumulation->SetFormat(GL_RGBA);
+    this->Accumulation->SetDataType(GL_FLOAT);
+    if (!this->Accumulation->Allocate2D(w, h, 4, VTK_FLOAT) ||
+      !this->MaskDepth->AllocateDepth(w, h, vtkTextureObject::Float32) ||
+      !this->OpaqueDepth->AllocateDepth(w, h, vtkTextureObject::Float32))
+    {
+      return false;
+    }
+    this->AccumulationFBO->SetContext(ctx);
+    this->MaskFBO->SetContext(ctx);
+    this->State->PushFramebufferBindings();
+    this->AccumulationFBO->Bind();
+    this->AccumulationFBO->AddColorAttachment(0, this->Accumulation);
+    this->AccumulationFBO->AddDepthAttachment(this->MaskDepth);
+    this->MaskFBO->Bind();
+    this->MaskFBO->AddDepthAttachment(this->MaskDepth);
+    this->State->PopFramebufferBindings();
+    this->Allocated = true;
+    return true;
+  }
+
+  vtkOpenGLQuadHelper* Quad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* decl,
+    const char* impl)
+  {
+    if (!quad)
+    {
+      std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", decl);
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", impl);
+      quad.reset(new vtkOpenGLQuadHelper(this->Context, nullptr, fs.c_str(), nullptr));
+    }
+    else
+    {
+      this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    return quad->Program ? quad.get() : nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkParticleFrontToBackTarget::vtkParticleFrontToBackTarget()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticleFrontToBackTarget::~vtkParticleFrontToBackTarget()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* ctx = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!ctx)
+  {
+    vtkErrorMacro(<< "An OpenGL render window is required.");
+    return false;
+  }
+  if (internals.Context && internals.Context != ctx)
+  {
+    this->ReleaseGraphicsResources(internals.Context);
+  }
+  vtkOpenGLState* ostate = ctx->GetState();
+  internals.State = ostate;
+
+  // The framebuffer holding the opaque image. A translucency pass saved it on the binding stack:
+  // look at it by popping and pushing it back, then rebind the pass's own framebuffer.
+  unsigned int inner = 0;
+  unsigned int firstDrawBuffer = 0;
+  ostate->GetCurrentDrawFramebufferState(inner, firstDrawBuffer);
+  for (int i = 0; i < MaxSavedDrawBuffers; ++i)
+  {
+    GLint buffer = GL_NONE;
+    glGetIntegerv(GL_DRAW_BUFFER0 + i, &buffer);
+    internals.InnerDrawBuffers[i] = static_cast<unsigned int>(buffer);
+  }
+  unsigned int outer = inner;
+  if (savedByPass)
+  {
+    ostate->PopDrawFramebufferBinding();
+    ostate->GetCurrentDrawFramebufferState(outer, firstDrawBuffer);
+    ostate->PushDrawFramebufferBinding();
+    ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, inner);
+    ostate->vtkglDrawBuffers(MaxSavedDrawBuffers, internals.InnerDrawBuffers);
+  }
+  internals.InnerFramebuffer = inner;
+  internals.OuterFramebuffer = outer;
+
+  // Its viewport: the current one when it is bound; a pass drew into its own buffers at the
+  // origin, so use the renderer's tiled viewport in a window framebuffer and the origin in any
+  // other (an image-processing pass's buffer has the viewport's size).
+  int* vp = internals.OuterViewport;
+  if (!savedByPass)
+  {
+    ostate->vtkglGetIntegerv(GL_VIEWPORT, vp);
+  }
+  else
+  {
+    ren->GetTiledSizeAndOrigin(&vp[2], &vp[3], &vp[0], &vp[1]);
+    const bool windowBuffer = outer == 0 ||
+      (ctx->GetRenderFramebuffer() && outer == ctx->GetRenderFramebuffer()->GetFBOIndex()) ||
+      (ctx->GetDisplayFramebuffer() && outer == ctx->GetDisplayFramebuffer()->GetFBOIndex());
+    if (!windowBuffer)
+    {
+      vp[0] = vp[1] = 0;
+    }
+  }
+  if (vp[2] <= 0 || vp[3] <= 0)
+  {
+    return false;
+  }
+  this->Size[0] = vp[2];
+  this->Size[1] = vp[3];
+
+  ostate->Push(); // everything, including the current framebuffer bindings, back in End()
+  if (!internals.Allocate(ctx, vp[2], vp[3]))
+  {
+    vtkErrorMacro(<< "Cannot allocate the " << vp[2] << "x" << vp[3]
+                  << " float accumulation buffers of the translucent particles.");
+    ostate->Pop();
+    return false;
+  }
+  internals.Active = true;
+
+  // the opaque depth
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, outer);
+  internals.OpaqueDepth->CopyFromFrameBuffer(vp[0], vp[1], 0, 0, vp[2], vp[3]);
+
+  internals.AccumulationFBO->Bind();
+  internals.AccumulationFBO->ActivateDrawBuffer(0);
+  ostate->vtkglViewport(0, 0, vp[2], vp[3]);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  this->ActivateDrawingState();
+  this->NumberOfMaskedPixels = 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::ActivateDrawingState()
+{
+  vtkOpenGLState* ostate = this->Internals->State;
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendEquation(GL_FUNC_ADD);
+  // premultiplied front-to-back ("under"): C += (1 - A) c, A += (1 - A) a
+  ostate->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  // the mask: fragments are at depth 0.5 (the imposter's clip z is 0), masked pixels at 0
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LESS);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_CULL_FACE);
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkParticleFrontToBackTarget::GetOpaqueDepthTexture()
+{
+  return this->Internals->OpaqueDepth;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::MaskSaturatedPixels(double threshold)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Active)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = internals.State;
+  vtkOpenGLQuadHelper* quad = internals.Quad(internals.MaskQuad,
+    "uniform sampler2D accumulation;\nuniform float threshold;\n",
+    "  if (!(texture(accumulation, texCoord).a > threshold))\n"
+    "  {\n"
+    "    discard;\n"
+    "  }\n"
+    "  gl_FragDepth = 0.0;\n");
+  if (!quad)
+  {
+    return;
+  }
+  internals.MaskFBO->Bind();
+  internals.MaskFBO->DeactivateDrawBuffers();
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  internals.Accumulation->Activate();
+  quad->Program->SetUniformi("accumulation", internals.Accumulation->GetTextureUnit());
+  quad->Program->SetUniformf("threshold", static_cast<float>(threshold));
+  if (this->CountMaskedPixels)
+  {
+    if (!internals.MaskQuery)
+    {
+      glGenQueries(1, &internals.MaskQuery);
+    }
+    glBeginQuery(GL_SAMPLES_PASSED, internals.MaskQuery);
+  }
+  quad->Render();
+  if (this->CountMaskedPixels)
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(internals.MaskQuery, GL_QUERY_RESULT, &samples);
+    this->NumberOfMaskedPixels = static_cast<long long>(samples);
+  }
+  internals.Accumulation->Deactivate();
+  internals.AccumulationFBO->Bind();
+  internals.AccumulationFBO->ActivateDrawBuffer(0);
+  this->ActivateDrawingState();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::End()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Active)
+  {
+    return;
+  }
+  internals.Active = false;
+  vtkOpenGLState* ostate = internals.State;
+  if (this->KeepAccumulation)
+  {
+    internals.Retained.resize(4 * static_cast<size_t>(this->Size[0]) * this->Size[1]);
+    internals.AccumulationFBO->Bind();
+    internals.AccumulationFBO->ActivateReadBuffer(0);
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_FLOAT, internals.Retained.data());
+  }
+
+  vtkOpenGLQuadHelper* quad = internals.Quad(internals.BlendQuad,
+    "uniform sampler2D accumulation;\n",
+    "  gl_FragData[0] = texture(accumulation, texCoord);\n");
+  if (quad)
+  {
+    // over the opaque image: C = C_acc + (1 - A_acc) C_opaque
+    ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, internals.OuterFramebuffer);
+    const int* vp = internals.OuterViewport;
+    ostate->vtkglViewport(vp[0], vp[1], vp[2], vp[3]);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendEquation(GL_FUNC_ADD);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDepthMask(GL_FALSE);
+    internals.Accumulation->Activate();
+    quad->Program->SetUniformi("accumulation", internals.Accumulation->GetTextureUnit());
+    quad->Render();
+    internals.Accumulation->Deactivate();
+  }
+  ostate->Pop();
+  // the pass's framebuffer is bound again; resynchronise the state's draw-buffer cache with it
+  ostate->vtkglDrawBuffers(MaxSavedDrawBuffers, internals.InnerDrawBuffers);
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleFrontToBackTarget::GetAccumulation(std::vector<float>& rgba)
+{
+  rgba = this->Internals->Retained;
+  return !rgba.empty();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.MaskQuad)
+  {
+    internals.MaskQuad->ReleaseGraphicsResources(window);
+    internals.MaskQuad.reset();
+  }
+  if (internals.BlendQuad)
+  {
+    internals.BlendQuad->ReleaseGraphicsResources(window);
+    internals.BlendQuad.reset();
+  }
+  internals.Accumulation->ReleaseGraphicsResources(window);
+  internals.MaskDepth->ReleaseGraphicsResources(window);
+  internals.OpaqueDepth->ReleaseGraphicsResources(window);
+  internals.AccumulationFBO->ReleaseGraphicsResources(window);
+  internals.MaskFBO->ReleaseGraphicsResources(window);
+  if (internals.MaskQuery)
+  {
+    glDeleteQueries(1, &internals.MaskQuery);
+    internals.MaskQuery = 0;
+  }
+  internals.Allocated = false;
+  internals.Context = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "CountMaskedPixels: " << this->CountMaskedPixels << "\n";
+  os << indent << "NumberOfMaskedPixels: " << this->NumberOfMaskedPixels << "\n";
+  os << indent << "KeepAccumulation: " << this->KeepAccumulation << "\n";
+}

@@ -1,0 +1,165 @@
+// Baseline test of vtkTransparentSphereMapper on a LAMMPS scene (two Lennard-Jones droplets):
+// opacity from the "speed" array, squared-distance density with a hollow core, colours from
+// "type", an opaque box inside the cloud (seen through the particles and cutting the ones it
+// intersects) and a few fully opaque particles. Also checks
+// - that the image is the same with dual depth peeling (VTK's and ParaView's translucency
+//   compositing) and with VTK's order-independent pass (peeling off),
+// - when the particles are sorted again: never for colour, opacity or shading changes, always
+//   after a camera change,
+// - that an all-opaque input takes no translucent path (no sort at all).
+#include "prTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTransparentSphereMapper.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace
+{
+int MaxPixelDifference(vtkUnsignedCharArray* a, vtkUnsignedCharArray* b)
+{
+  int worst = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    worst = std::max(worst, std::abs(int(a->GetValue(i)) - int(b->GetValue(i))));
+  }
+  return worst;
+}
+}
+
+int TestTransparentSphereMapper(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkPolyData> particles =
+    prTest::ReadPolyData(prTest::DataFile(argc, argv, "lj_droplets.vtp"));
+  if (!particles)
+  {
+    return EXIT_FAILURE;
+  }
+  bool ok = true;
+
+  vtkNew<vtkLookupTable> lut;
+  lut->SetNumberOfTableValues(2);
+  lut->SetTableValue(0, 0.95, 0.55, 0.2, 1.0);
+  lut->SetTableValue(1, 0.25, 0.55, 0.95, 1.0);
+  lut->Build();
+
+  vtkNew<vtkTransparentSphereMapper> mapper;
+  mapper->SetInputData(particles);
+  mapper->SetRadius(0.42);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("type");
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarRange(1, 2);
+  mapper->SetOpacityArrayName("speed");
+  double speedRange[2];
+  particles->GetPointData()->GetArray("speed")->GetRange(speedRange);
+  // the fastest particles (evaporating vapour) are fully opaque, the slowest nearly clear
+  mapper->SetOpacityRange(speedRange[0], speedRange[0] + 0.8 * (speedRange[1] - speedRange[0]));
+  mapper->SetDensityModelToSquaredDistance();
+  mapper->SetHollowFraction(0.3);
+  mapper->SetVolumeMix(0.4);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetSpecular(0.3);
+  actor->GetProperty()->SetSpecularPower(20);
+
+  // an opaque box in the middle of the cloud
+  double bounds[6];
+  particles->GetBounds(bounds);
+  vtkNew<vtkCubeSource> box;
+  box->SetCenter(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]));
+  box->SetXLength(0.25 * (bounds[1] - bounds[0]));
+  box->SetYLength(0.5 * (bounds[3] - bounds[2]));
+  box->SetZLength(0.25 * (bounds[5] - bounds[4]));
+  vtkNew<vtkPolyDataMapper> boxMapper;
+  boxMapper->SetInputConnection(box->GetOutputPort());
+  vtkNew<vtkActor> boxActor;
+  boxActor->SetMapper(boxMapper);
+  boxActor->GetProperty()->SetColor(0.9, 0.9, 0.85);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(boxActor);
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.1, 0.1, 0.15);
+  renderer->SetUseDepthPeeling(1);
+  renderer->SetMaximumNumberOfPeels(4);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(400, 400);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(30);
+  renderer->GetActiveCamera()->Elevation(20);
+  renderer->GetActiveCamera()->Zoom(1.3);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+
+  ok &= prTest::Check(mapper->HasTranslucentPolygonalGeometry(), "the scene has translucent particles");
+  ok &= prTest::Check(mapper->HasOpaqueGeometry(), "the scene has opaque particles");
+  ok &= prTest::Check(mapper->GetNumberOfSorts() == 1, "one sort after the first frame");
+
+  vtkNew<vtkUnsignedCharArray> peeled;
+  window->GetRGBACharPixelData(0, 0, 399, 399, 1, peeled);
+
+  // peeling off: VTK's order-independent pass drives the translucent stage
+  renderer->SetUseDepthPeeling(0);
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> oit;
+  window->GetRGBACharPixelData(0, 0, 399, 399, 1, oit);
+  const int peelDiff = MaxPixelDifference(peeled, oit);
+  std::cout << "max |peeling - order independent| = " << peelDiff << "/255\n";
+  ok &= prTest::Check(peelDiff <= 1, "same image with dual depth peeling and without");
+  ok &= prTest::Check(mapper->GetNumberOfSorts() == 1, "no sort when only the pass changed");
+
+  // colour, opacity and shading changes do not sort again
+  renderer->SetUseDepthPeeling(1);
+  mapper->SetVolumeMix(0.6);
+  window->Render();
+  mapper->SetOpacityRange(speedRange[0], speedRange[0] + 0.9 * (speedRange[1] - speedRange[0]));
+  window->Render();
+  actor->GetProperty()->SetSpecular(0.2);
+  lut->SetTableValue(0, 0.95, 0.5, 0.2, 1.0);
+  window->Render();
+  ok &= prTest::Check(mapper->GetNumberOfSorts() == 1,
+    "no sort after colour, opacity or shading changes (sorts: " +
+      std::to_string(mapper->GetNumberOfSorts()) + ")");
+  // the camera does
+  renderer->GetActiveCamera()->Azimuth(1);
+  window->Render();
+  ok &= prTest::Check(mapper->GetNumberOfSorts() == 2, "a sort after a camera change");
+  renderer->GetActiveCamera()->Azimuth(-1);
+  mapper->SetVolumeMix(0.4);
+  mapper->SetOpacityRange(speedRange[0], speedRange[0] + 0.8 * (speedRange[1] - speedRange[0]));
+  actor->GetProperty()->SetSpecular(0.3);
+  lut->SetTableValue(0, 0.95, 0.55, 0.2, 1.0);
+  window->Render();
+
+  const bool baseline = prTest::CompareWithBaseline(argc, argv, window);
+
+  // all opaque: the core's path only, no sorting
+  vtkNew<vtkTransparentSphereMapper> opaqueMapper;
+  opaqueMapper->SetInputData(particles);
+  opaqueMapper->SetRadius(0.42);
+  actor->SetMapper(opaqueMapper);
+  window->Render();
+  ok &= prTest::Check(!opaqueMapper->HasTranslucentPolygonalGeometry(), "all opaque");
+  ok &= prTest::Check(opaqueMapper->GetNumberOfSorts() == 0, "no sort when everything is opaque");
+
+  return (ok && baseline) ? EXIT_SUCCESS : EXIT_FAILURE;
+}
