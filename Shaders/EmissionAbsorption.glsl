@@ -80,11 +80,12 @@ float prPieceIntegral(float b2, float t0, float t1, float len)
 }
 
 // Density integral of the segment [tn, tf] within [-h, h] (units of the radius) of a sphere whose
-// empty core has radius f (0: solid). clipN / clipF say whether tn / tf are the sphere's own
-// entry / exit (-h / h) or were moved by clipping; unclipped ends use the exact chord lengths.
-float prSegmentIntegral(float b2, float h, float tn, float tf, bool clipN, bool clipF, float f)
+// empty core has the squared radius f2 (0: solid). clipN / clipF say whether tn / tf are the
+// sphere's own entry / exit (-h / h) or were moved by clipping; unclipped ends use the exact
+// chord lengths. f2 is passed squared (rounded once, on the CPU) so that f2 - b2 is exact near
+// the core's tangent rays.
+float prSegmentIntegral(float b2, float h, float tn, float tf, bool clipN, bool clipF, float f2)
 {
-  float f2 = f * f;
   if (f2 <= b2)
   {
     // the ray misses the core
@@ -93,7 +94,7 @@ float prSegmentIntegral(float b2, float h, float tn, float tf, bool clipN, bool 
   }
   float hs = sqrt(f2 - b2);
   // h - hs = (h^2 - hs^2) / (h + hs) = (1 - f^2) / (h + hs), no cancellation
-  float shell = (1.0 - f) * (1.0 + f) / (h + hs);
+  float shell = (1.0 - f2) / (h + hs);
   float integral = 0.0;
   if (tn < -hs)
   {

@@ -27,6 +27,7 @@
 
 class vtkRenderer;
 class vtkTextureObject;
+class vtkWindow;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleFrontToBackTarget : public vtkObject
 {

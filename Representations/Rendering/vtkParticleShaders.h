@@ -25,6 +25,13 @@ VTKPARTICLERENDERING_EXPORT std::string Get(const std::string& name);
  * Resolve the //PR::Include lines of an arbitrary source.
  */
 VTKPARTICLERENDERING_EXPORT std::string ResolveIncludes(const std::string& source);
+
+/**
+ * Replace the first hook tag (e.g. "//PR::Sphere::Dec") that stands alone on its line -- tags
+ * quoted in comments are skipped -- by replacement. Returns false when there is none.
+ */
+VTKPARTICLERENDERING_EXPORT bool ReplaceHook(
+  std::string& source, const std::string& hook, const std::string& replacement);
 }
 
 #endif

@@ -14,6 +14,7 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
@@ -325,19 +326,19 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
   const bool translucent = this->Internals->Building == Variant::Translucent;
 
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vs, "//PR::Sphere::Dec",
+  vtkParticleShaders::ReplaceHook(vs, "//PR::Sphere::Dec",
     "in float opticalDepthMC;\nflat out float opticalDepthVSOutput;\n//PR::Sphere::Dec");
-  vtkShaderProgram::Substitute(
+  vtkParticleShaders::ReplaceHook(
     vs, "//PR::Sphere::Impl", "opticalDepthVSOutput = opticalDepthMC;\n  //PR::Sphere::Impl");
   shaders[vtkShader::Vertex]->SetSource(vs);
 
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
-  vtkShaderProgram::Substitute(gs, "//PR::Sphere::Dec",
+  vtkParticleShaders::ReplaceHook(gs, "//PR::Sphere::Dec",
     "flat in float opticalDepthVSOutput[];\nflat out float opticalDepthGSOutput;\n"
     "uniform int prCullMode;\n//PR::Sphere::Dec");
   // Theta_a = 0 is never drawn; the opaque stage draws only Theta_a = 1, the translucent stage
   // skips Theta_a = 1 when those are drawn opaque (see prCullMode)
-  vtkShaderProgram::Substitute(gs, "//PR::Sphere::Cull",
+  vtkParticleShaders::ReplaceHook(gs, "//PR::Sphere::Cull",
     "float kappaA = opticalDepthVSOutput[0];\n"
     "  if (kappaA == 0.0 || (prCullMode == 0 && (kappaA < 0.0) != " +
       std::string(translucent ? "false" : "true") +
@@ -346,17 +347,17 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
       "    return;\n"
       "  }\n"
       "  //PR::Sphere::Cull");
-  vtkShaderProgram::Substitute(gs, "//PR::Sphere::Impl",
+  vtkParticleShaders::ReplaceHook(gs, "//PR::Sphere::Impl",
     "opticalDepthGSOutput = opticalDepthVSOutput[0];\n    //PR::Sphere::Impl");
   shaders[vtkShader::Geometry]->SetSource(gs);
 
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   if (!translucent)
   {
-    vtkShaderProgram::Substitute(fs, "//PR::Sphere::Dec",
+    vtkParticleShaders::ReplaceHook(fs, "//PR::Sphere::Dec",
       "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n//PR::Sphere::Dec");
     // the opaque stage keeps Theta_i = Theta_a * opacity = 1 only; picking keeps all
-    vtkShaderProgram::Substitute(fs, "//PR::Shading::Impl",
+    vtkParticleShaders::ReplaceHook(fs, "//PR::Shading::Impl",
       "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= 1.0))\n"
       "  {\n"
       "    discard;\n"
@@ -371,15 +372,15 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     dec << "flat in float opticalDepthVSOutput;\n"
            "uniform float prVolumeMix;\n"
            "uniform float prMaximumIntegral;\n"
-           "uniform float prHollowFraction;\n"
+           "uniform float prHollowFraction2;\n"
            "uniform sampler2D prOpaqueDepth;\n"
            "#define PR_DENSITY_MODEL "
         << this->DensityModel
         << "\n"
            "//PR::Include EmissionAbsorption\n"
            "//PR::Sphere::Dec";
-    vtkShaderProgram::Substitute(fs, "//PR::Sphere::Dec", dec.str());
-    vtkShaderProgram::Substitute(fs, "//PR::Shading::Impl",
+    vtkParticleShaders::ReplaceHook(fs, "//PR::Sphere::Dec", dec.str());
+    vtkParticleShaders::ReplaceHook(fs, "//PR::Shading::Impl",
       "{\n"
       "    // vtkTransparentSphereMapper: Theta_i = Theta_a * opacity, as an optical depth\n"
       "    float kappaA = opticalDepthVSOutput;\n"
@@ -442,7 +443,7 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
       "    float b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));\n"
       "    float tn = -h + 2.0 * h * un;\n"
       "    float tf = -h + 2.0 * h * uf;\n"
-      "    float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction);\n"
+      "    float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction2);\n"
       "    float theta = prSegmentOpacity(kappa, integral, prMaximumIntegral);\n"
       "    // Eq. 2: surface reflection at the entry point mixed with the volume colour; without\n"
       "    // an entry surface (the segment starts inside) only the volume emits\n"
@@ -467,7 +468,8 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
   if (&cellBO == &this->Primitives[PrimitiveTriStrips])
   {
     program->SetUniformf("prVolumeMix", static_cast<float>(this->VolumeMix));
-    program->SetUniformf("prHollowFraction", static_cast<float>(this->HollowFraction));
+    program->SetUniformf(
+      "prHollowFraction2", static_cast<float>(this->HollowFraction * this->HollowFraction));
     program->SetUniformf("prMaximumIntegral",
       static_cast<float>(GetMaximumPathIntegral(this->DensityModel, this->HollowFraction)));
     program->SetUniformi(
