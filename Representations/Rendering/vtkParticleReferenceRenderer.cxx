@@ -20,6 +20,7 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
+#include "vtkTransparentSphereMapper.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -135,6 +136,37 @@ struct RayCamera
     out[0] = h[0] / w;
     out[1] = h[1] / w;
     out[2] = h[2] / w;
+  }
+
+  // Ray parameter of the point of window depth `depth` on the ray (o, d) of the pixel point
+  // (px, py): unprojection in double through the inverse projection.
+  double WindowDepthToT(
+    double px, double py, double depth, const double o[3], const double d[3]) const
+  {
+    double p[3];
+    this->Unproject(2.0 * px / this->Width - 1.0, 2.0 * py / this->Height - 1.0,
+      2.0 * depth - 1.0, p);
+    const double rel[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
+    return Dot(rel, d);
+  }
+
+  // The visibility rule of Depth(), telling on which side a rejected point lies: 0 visible,
+  // -1 in front of the near plane (or behind the eye), +1 beyond the far plane, 2 undefined.
+  int Classify(const double p[3]) const
+  {
+    const double* P = this->P;
+    const double clipZ = P[8] * p[0] + P[9] * p[1] + P[10] * p[2] + P[11];
+    const double clipW = P[12] * p[0] + P[13] * p[1] + P[14] * p[2] + P[15];
+    if (!(clipW > 0.0))
+    {
+      return clipW <= 0.0 ? -1 : 2;
+    }
+    const double ndcZ = clipZ / clipW;
+    if (ndcZ >= -1.0 && ndcZ <= 1.0)
+    {
+      return 0;
+    }
+    return ndcZ < -1.0 ? -1 : (ndcZ > 1.0 ? 1 : 2);
   }
 
   // The GPU's visibility rule and window depth of a view-coordinate point.
@@ -428,6 +460,87 @@ public:
     }
   }
 
+  // Every sphere referenced by a cell the ray crosses between tMin and tMax, plus the large
+  // spheres (with repetitions: a sphere is listed once per cell).
+  void Collect(const double o[3], const double d[3], double tMin, double tMax,
+    std::vector<std::uint32_t>& out) const
+  {
+    out.insert(out.end(), this->Large.begin(), this->Large.end());
+    if (this->Cells.empty())
+    {
+      return;
+    }
+    double t0 = tMin;
+    double t1 = tMax;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (d[k] != 0.0)
+      {
+        double a = (this->Lo[k] - o[k]) / d[k];
+        double b = (this->Hi[k] - o[k]) / d[k];
+        if (a > b)
+        {
+          std::swap(a, b);
+        }
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+      }
+      else if (o[k] < this->Lo[k] || o[k] > this->Hi[k])
+      {
+        return;
+      }
+    }
+    if (!(t0 <= t1))
+    {
+      return;
+    }
+    int cell[3];
+    int step[3];
+    double tNext[3];
+    double tDelta[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      cell[k] = this->CellIndex(o[k] + t0 * d[k], k);
+      if (d[k] > 0.0)
+      {
+        step[k] = 1;
+        tNext[k] = (this->Lo[k] + (cell[k] + 1) * this->CellSize[k] - o[k]) / d[k];
+        tDelta[k] = this->CellSize[k] / d[k];
+      }
+      else if (d[k] < 0.0)
+      {
+        step[k] = -1;
+        tNext[k] = (this->Lo[k] + cell[k] * this->CellSize[k] - o[k]) / d[k];
+        tDelta[k] = -this->CellSize[k] / d[k];
+      }
+      else
+      {
+        step[k] = 0;
+        tNext[k] = std::numeric_limits<double>::infinity();
+        tDelta[k] = std::numeric_limits<double>::infinity();
+      }
+    }
+    for (;;)
+    {
+      const size_t c = this->Flat(cell[0], cell[1], cell[2]);
+      out.insert(out.end(), this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c]),
+        this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c + 1]));
+      const int axis =
+        (tNext[0] < tNext[1]) ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2);
+      // the cell boundaries are rounded: continue a little past t1
+      if (tNext[axis] > t1 + 1e-12 * std::abs(t1))
+      {
+        return;
+      }
+      cell[axis] += step[axis];
+      if (cell[axis] < 0 || cell[axis] >= this->N[axis])
+      {
+        return;
+      }
+      tNext[axis] += tDelta[axis];
+    }
+  }
+
   const int* GetResolution() const { return this->N; }
   size_t GetNumberOfReferences() const { return this->References.size(); }
   size_t GetNumberOfLarge() const { return this->Large.size(); }
@@ -517,6 +630,286 @@ bool SceneLight(const double n[3], const double v[3], const double p[3], const L
   return inCone;
 }
 
+//------------------------------------------------------------------------------
+// Numerical integration (transparent mode). Gauss-Kronrod 7/15 nodes and weights (QUADPACK qk15).
+const double GKNodes[8] = { 0.991455371120812639206854697526329,
+  0.949107912342758524526189684047851, 0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+  0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+  0.207784955007898467600689403773245, 0.000000000000000000000000000000000 };
+const double KronrodWeights[8] = { 0.022935322010529224963732008058970,
+  0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
+  0.140653259715525918745189590510238, 0.169004726639267902826583426598550,
+  0.190350578064785409913256402421014, 0.204432940075298892414161999234649,
+  0.209482141084727828012999174891714 };
+// Gauss weights of the nodes 1, 3, 5 and 7 (the centre)
+const double GaussWeights[4] = { 0.129484966168869693270611432679082,
+  0.279705391489276667901467771423780, 0.381830050505118944950369775488975,
+  0.417959183673469387755102040816327 };
+
+const double IntegrationTolerance = 1e-12;
+
+// 15-point Kronrod estimate of the integral of f over [a, b] and |Kronrod - Gauss|.
+template <class F>
+inline void GaussKronrod15(const F& f, double a, double b, double& value, double& error)
+{
+  const double centre = 0.5 * (a + b);
+  const double half = 0.5 * (b - a);
+  const double fc = f(centre);
+  double kronrod = fc * KronrodWeights[7];
+  double gauss = fc * GaussWeights[3];
+  for (int j = 0; j < 7; ++j)
+  {
+    const double x = half * GKNodes[j];
+    const double sum = f(centre - x) + f(centre + x);
+    kronrod += KronrodWeights[j] * sum;
+    if (j % 2 == 1)
+    {
+      gauss += GaussWeights[j / 2] * sum;
+    }
+  }
+  value = kronrod * half;
+  error = std::abs((kronrod - gauss) * half);
+}
+
+// Globally adaptive Gauss-Kronrod over the pieces [a_i, b_i] (breakpoints between them):
+// bisect the interval of largest error estimate until the summed estimate is below
+// relTol * |integral| (or the interval cannot be split further).
+template <class F>
+double AdaptiveIntegrate(const F& f, const double pieces[][2], int numPieces, double relTol)
+{
+  struct Interval
+  {
+    double A, B, Value, Error;
+  };
+  constexpr int MaxIntervals = 256;
+  Interval intervals[MaxIntervals];
+  int n = 0;
+  for (int i = 0; i < numPieces; ++i)
+  {
+    if (pieces[i][1] > pieces[i][0])
+    {
+      Interval& iv = intervals[n++];
+      iv.A = pieces[i][0];
+      iv.B = pieces[i][1];
+      GaussKronrod15(f, iv.A, iv.B, iv.Value, iv.Error);
+    }
+  }
+  for (;;)
+  {
+    double total = 0.0;
+    double error = 0.0;
+    int worst = -1;
+    for (int i = 0; i < n; ++i)
+    {
+      total += intervals[i].Value;
+      error += intervals[i].Error;
+      if (worst < 0 || intervals[i].Error > intervals[worst].Error)
+      {
+        worst = i;
+      }
+    }
+    if (n == 0 || error <= relTol * std::abs(total) || n >= MaxIntervals)
+    {
+      return total;
+    }
+    Interval& w = intervals[worst];
+    const double mid = 0.5 * (w.A + w.B);
+    if (!(mid > w.A && mid < w.B))
+    {
+      return total;
+    }
+    Interval& right = intervals[n++];
+    right.A = mid;
+    right.B = w.B;
+    GaussKronrod15(f, right.A, right.B, right.Value, right.Error);
+    w.B = mid;
+    GaussKronrod15(f, w.A, w.B, w.Value, w.Error);
+  }
+}
+
+// See vtkParticleReferenceRenderer::IntegrateDensity.
+double IntegrateDensityImpl(
+  int model, double f, double r, double impact, double tau0, double tau1)
+{
+  const double b = std::abs(impact);
+  if (!(r > 0.0) || !(b < r) || !std::isfinite(r))
+  {
+    return 0.0;
+  }
+  // half chord, without cancellation for grazing rays
+  const double h = std::sqrt((r - b) * (r + b));
+  const double lo = std::max(tau0, -h);
+  const double hi = std::min(tau1, h);
+  if (!(lo < hi))
+  {
+    return 0.0;
+  }
+  double pieces[2][2];
+  int numPieces = 0;
+  const double rs = std::min(std::max(f, 0.0), 1.0) * r;
+  if (b < rs)
+  {
+    // breakpoints at the core's boundary: rho = 0 on [-hs, hs]
+    const double hs = std::min(std::sqrt((rs - b) * (rs + b)), h);
+    pieces[0][0] = lo;
+    pieces[0][1] = std::min(hi, -hs);
+    pieces[1][0] = std::max(lo, hs);
+    pieces[1][1] = hi;
+    numPieces = 2;
+  }
+  else
+  {
+    pieces[0][0] = lo;
+    pieces[0][1] = hi;
+    numPieces = 1;
+  }
+  if (model == vtkTransparentSphereMapper::SQUARED_DISTANCE_DENSITY)
+  {
+    const double b2 = b * b;
+    return AdaptiveIntegrate([b2](double tau) { return b2 + tau * tau; }, pieces, numPieces,
+      IntegrationTolerance);
+  }
+  return AdaptiveIntegrate(
+    [](double) { return 1.0; }, pieces, numPieces, IntegrationTolerance);
+}
+
+// See vtkParticleReferenceRenderer::NumericalMaximumPathIntegral.
+double NumericalMaximumPathIntegralImpl(int model, double f)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  double best = -1.0;
+  double bestB = 0.0;
+  auto chord = [&](double b)
+  {
+    const double value = IntegrateDensityImpl(model, f, 1.0, b, -inf, inf);
+    if (value > best)
+    {
+      best = value;
+      bestB = b;
+    }
+    return value;
+  };
+  // scan, including the kink of the integral at the core's radius
+  const int samples = 512;
+  for (int k = 0; k <= samples; ++k)
+  {
+    chord(static_cast<double>(k) / samples);
+  }
+  if (f > 0.0 && f < 1.0)
+  {
+    chord(f);
+  }
+  // golden-section search in the bracket around the best sample
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double lo = std::max(0.0, bestB - 1.0 / samples);
+  double hi = std::min(1.0, bestB + 1.0 / samples);
+  double x1 = hi - g * (hi - lo);
+  double x2 = lo + g * (hi - lo);
+  double f1 = chord(x1);
+  double f2 = chord(x2);
+  for (int it = 0; it < 200 && hi - lo > 1e-17; ++it)
+  {
+    if (f1 < f2)
+    {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + g * (hi - lo);
+      f2 = chord(x2);
+    }
+    else
+    {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - g * (hi - lo);
+      f1 = chord(x1);
+    }
+  }
+  return std::max(best, 0.0);
+}
+
+// Theta = 1 - exp(-kappa I / I_max) with kappa = -ln(1 - Theta_i), in double.
+inline double OpacityFromOpticalDepth(double opticalDepth)
+{
+  return opticalDepth > 0.0 ? -std::expm1(-opticalDepth) : 0.0;
+}
+
+// A translucent sphere's part of a pixel ray, relative to the closest approach of the ray to
+// the centre (tau = t - Tc).
+struct Segment
+{
+  double Key;     // ray parameter of the segment's start (t_n after clipping)
+  double Tc;      // ray parameter of the closest approach
+  double Q[3];    // closest approach point relative to the centre
+  double H;       // half chord
+  double Tau0;    // start (-inf: the entry point)
+  double Tau1;    // end (+inf: the exit point)
+  std::uint32_t Index;
+  bool Entry;     // the segment starts at the visible entry point
+};
+
+// The chord of a sphere clipped to the visible part of the ray with the GPU's rule (see the
+// class description). Returns false when no part of it is visible.
+inline bool MakeSegment(const RayCamera& cam, const double o[3], const double d[3],
+  const SphereVC& s, double tNear, double tFar, std::uint32_t index, Segment& seg)
+{
+  const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
+  const double tc = Dot(oc, d);
+  const double q[3] = { tc * d[0] - oc[0], tc * d[1] - oc[1], tc * d[2] - oc[2] };
+  const double h2 = s.R * s.R - Dot(q, q);
+  if (!(h2 > 0.0))
+  {
+    return false; // missed, or tangent (no length)
+  }
+  const double h = std::sqrt(h2);
+  double pIn[3];
+  double pOut[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    pIn[k] = s.C[k] + (q[k] - h * d[k]);
+    pOut[k] = s.C[k] + (q[k] + h * d[k]);
+  }
+  const int entry = cam.Classify(pIn);
+  const int exit = cam.Classify(pOut);
+  const double inf = std::numeric_limits<double>::infinity();
+  seg.Entry = entry == 0;
+  if (entry == 0)
+  {
+    seg.Tau0 = -inf;
+  }
+  else if (entry == -1)
+  {
+    seg.Tau0 = std::max(tNear - tc, -h); // starts at the near plane
+  }
+  else
+  {
+    return false; // entry beyond the far plane (or undefined): the whole chord is hidden
+  }
+  if (exit == 0)
+  {
+    seg.Tau1 = inf;
+  }
+  else if (exit == 1)
+  {
+    seg.Tau1 = std::min(tFar - tc, h); // ends at the far plane
+  }
+  else
+  {
+    return false; // exit in front of the near plane: the whole chord is
+  }
+  seg.Key = seg.Entry ? tc - h : tc + seg.Tau0;
+  if (!(std::max(seg.Tau0, -h) < std::min(seg.Tau1, h)))
+  {
+    return false;
+  }
+  seg.Tc = tc;
+  std::copy(q, q + 3, seg.Q);
+  seg.H = h;
+  seg.Index = index;
+  return true;
+}
+
 // new image data of the given size and components
 vtkSmartPointer<vtkImageData> NewImage(int w, int h, int components, const char* name)
 {
@@ -554,6 +947,7 @@ vtkParticleReferenceRenderer::vtkParticleReferenceRenderer()
   this->IdImage->SetName("ParticleId");
   this->InsideImage = vtkSmartPointer<vtkUnsignedCharArray>::New();
   this->InsideImage->SetName("Inside");
+  this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
 }
 
 //------------------------------------------------------------------------------
@@ -583,6 +977,65 @@ vtkImageData* vtkParticleReferenceRenderer::GetViewDepthImage()
 vtkImageData* vtkParticleReferenceRenderer::GetNormalImage()
 {
   return this->NormalImage;
+}
+
+vtkImageData* vtkParticleReferenceRenderer::GetTranslucentAlphaImage()
+{
+  return this->TranslucentAlphaImage;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleReferenceRenderer::SetOpaqueLayer(vtkDataArray* rgba, vtkDataArray* windowDepth)
+{
+  if (!rgba || !windowDepth)
+  {
+    rgba = nullptr;
+    windowDepth = nullptr;
+  }
+  if (this->OpaqueLayerColors != rgba || this->OpaqueLayerDepth != windowDepth)
+  {
+    this->OpaqueLayerColors = rgba;
+    this->OpaqueLayerDepth = windowDepth;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkParticleReferenceRenderer::IntegrateDensity(
+  int model, double hollowFraction, double radius, double impact, double tau0, double tau1)
+{
+  return IntegrateDensityImpl(model, hollowFraction, radius, impact, tau0, tau1);
+}
+
+double vtkParticleReferenceRenderer::NumericalMaximumPathIntegral(int model, double hollowFraction)
+{
+  return NumericalMaximumPathIntegralImpl(model, hollowFraction);
+}
+
+double vtkParticleReferenceRenderer::SegmentOpacity(int model, double hollowFraction,
+  double radius, double impact, double tau0, double tau1, double thetaMax)
+{
+  if (!(thetaMax > 0.0))
+  {
+    return 0.0;
+  }
+  const double integral = IntegrateDensityImpl(model, hollowFraction, radius, impact, tau0, tau1);
+  if (!(integral > 0.0))
+  {
+    return 0.0;
+  }
+  if (thetaMax >= 1.0)
+  {
+    return 1.0;
+  }
+  const bool squared = model == vtkTransparentSphereMapper::SQUARED_DISTANCE_DENSITY;
+  const double scale = squared ? radius * radius * radius : radius;
+  const double maximum = NumericalMaximumPathIntegralImpl(model, hollowFraction) * scale;
+  if (!(maximum > 0.0))
+  {
+    return 0.0;
+  }
+  return OpacityFromOpticalDepth(-std::log1p(-thetaMax) * (integral / maximum));
 }
 
 //------------------------------------------------------------------------------
@@ -646,6 +1099,7 @@ bool vtkParticleReferenceRenderer::Render()
     this->NormalImage = NewImage(0, 0, 3, "Normal");
     this->IdImage->SetNumberOfTuples(0);
     this->InsideImage->SetNumberOfTuples(0);
+    this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
     return false;
   };
   if (!this->Renderer)
@@ -718,6 +1172,59 @@ bool vtkParticleReferenceRenderer::Render()
   }
   const double opacity = property->GetOpacity();
 
+  // ---- transparent mode: the model's parameters and Theta_a
+  vtkTransparentSphereMapper* transparentMapper = vtkTransparentSphereMapper::SafeDownCast(mapper);
+  const bool transparent = transparentMapper != nullptr;
+  int densityModel = vtkTransparentSphereMapper::CONSTANT_DENSITY;
+  double hollowFraction = 0.0;
+  double volumeMix = 0.0;
+  double maximumPathIntegral = 0.0; // for radius 1
+  vtkDoubleArray* opacityArray = nullptr;
+  std::vector<double> layerColors;
+  std::vector<double> layerDepths;
+  if (transparent)
+  {
+    densityModel = transparentMapper->GetDensityModel();
+    hollowFraction = transparentMapper->GetHollowFraction();
+    volumeMix = transparentMapper->GetVolumeMix();
+    maximumPathIntegral = NumericalMaximumPathIntegralImpl(densityModel, hollowFraction);
+    if (numPts > 0)
+    {
+      transparentMapper->GetBounds(); // prepares the opacities (see GetParticleOpacities())
+      opacityArray = transparentMapper->GetParticleOpacities();
+      if (!opacityArray || opacityArray->GetNumberOfTuples() != numPts)
+      {
+        return fail("The mapper's particle opacities do not match its input.");
+      }
+    }
+    if (this->OpaqueLayerColors && this->OpaqueLayerDepth)
+    {
+      const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+      if (this->OpaqueLayerColors->GetNumberOfComponents() != 4 ||
+        this->OpaqueLayerColors->GetNumberOfTuples() != pixels ||
+        this->OpaqueLayerDepth->GetNumberOfComponents() != 1 ||
+        this->OpaqueLayerDepth->GetNumberOfTuples() != pixels)
+      {
+        return fail("The opaque layer is not a 4-component colour and a 1-component depth array "
+                    "of the image's size.");
+      }
+      layerColors.resize(4 * static_cast<size_t>(pixels));
+      layerDepths.resize(static_cast<size_t>(pixels));
+      for (vtkIdType i = 0; i < pixels; ++i)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          layerColors[4 * i + k] = this->OpaqueLayerColors->GetComponent(i, k);
+        }
+        layerDepths[i] = this->OpaqueLayerDepth->GetComponent(i, 0);
+      }
+    }
+  }
+  // per sphere (transparent mode): Theta_i, kappa_i = -ln(1 - Theta_i), I_max at its radius
+  std::vector<double> sphereTheta;
+  std::vector<double> sphereKappa;
+  std::vector<double> sphereMaximum;
+
   std::vector<double> planes;
   for (int i = 0; i < mapper->GetNumberOfClippingPlanes(); ++i)
   {
@@ -767,6 +1274,23 @@ bool vtkParticleReferenceRenderer::Render()
       if (!std::isfinite(s.C[0]) || !std::isfinite(s.C[1]) || !std::isfinite(s.C[2]))
       {
         continue;
+      }
+      if (transparent)
+      {
+        double theta = opacityArray->GetValue(i) * opacity;
+        if (colors)
+        {
+          theta *= colors->GetValue(4 * i + 3) / 255.0;
+        }
+        if (!(theta > 0.0))
+        {
+          continue; // not drawn at all
+        }
+        theta = std::min(theta, 1.0);
+        sphereTheta.push_back(theta);
+        sphereKappa.push_back(theta < 1.0 ? -std::log1p(-theta) : 0.0);
+        sphereMaximum.push_back(maximumPathIntegral *
+          (densityModel == vtkTransparentSphereMapper::SQUARED_DISTANCE_DENSITY ? r * r * r : r));
       }
       spheres.push_back(s);
       ids.push_back(i);
@@ -958,9 +1482,327 @@ bool vtkParticleReferenceRenderer::Render()
   unsigned char* insideOut = this->InsideImage->GetPointer(0);
   internals.ConeBits.assign(static_cast<size_t>(width) * height, 0);
   std::uint32_t* coneOut = internals.ConeBits.data();
+  this->TranslucentAlphaImage = NewImage(width, height, 1, "TranslucentAlpha");
+  double* translucentAlphaOut = vtkDoubleArray::SafeDownCast(
+    this->TranslucentAlphaImage->GetPointData()->GetScalars())
+                                  ->GetPointer(0);
 
   const SphereGrid& grid = internals.Grid;
   const unsigned char* rgba = colors ? colors->GetPointer(0) : nullptr;
+
+  // material of a particle as vtkOpenGLPolyDataMapper: ambient and diffuse colours (with their
+  // coefficients) and the fragment opacity
+  auto material = [&](vtkIdType pid, double amb[3], double dif[3], double& alpha)
+  {
+    alpha = opacity;
+    if (rgba)
+    {
+      const unsigned char* c = rgba + 4 * pid;
+      for (int k = 0; k < 3; ++k)
+      {
+        amb[k] = ambientK * (c[k] / 255.0);
+        dif[k] = diffuseK * (c[k] / 255.0);
+      }
+      alpha *= c[3] / 255.0;
+    }
+    else
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        amb[k] = ambientK * ambientColor[k];
+        dif[k] = diffuseK * diffuseColor[k];
+      }
+    }
+  };
+  // VTK's lit colour (not clamped) at the surface point p with unit normal n seen from direction
+  // v; returns the bits of the spot cones containing p
+  auto shade = [&](const double n[3], const double p[3], const double v[3], const double amb[3],
+                 const double dif[3], double color[3]) -> std::uint32_t
+  {
+    std::uint32_t cones = 0;
+    if (complexity == 0)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        color[k] = amb[k] + dif[k];
+      }
+      return cones;
+    }
+    double diffuse[3] = { 0, 0, 0 };
+    double specular[3] = { 0, 0, 0 };
+    unsigned int bit = 0;
+    for (const LightVC& light : lights)
+    {
+      if (complexity == 1)
+      {
+        // Lighting.glsl, prHeadlight
+        const double df = std::max(0.000001, n[2]);
+        const double sf = std::pow(df, specularPower);
+        for (int k = 0; k < 3; ++k)
+        {
+          diffuse[k] += df * light.Color[k];
+          specular[k] += sf * light.Color[k];
+        }
+      }
+      else
+      {
+        const bool inCone =
+          SceneLight(n, v, p, light, complexity == 3, specularPower, diffuse, specular);
+        if (complexity == 3 && light.Positional && light.ConeAngle < 90.0 &&
+          bit < MaximumConeBits)
+        {
+          cones |= (inCone ? 1u : 0u) << bit++;
+        }
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      color[k] = amb[k] + diffuse[k] * dif[k] + specular[k] * specularColor[k];
+    }
+    return cones;
+  };
+
+  if (transparent)
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    const bool haveLayer = !layerDepths.empty();
+    vtkSMPTools::For(0, height,
+      [&](vtkIdType rowBegin, vtkIdType rowEnd)
+      {
+        std::vector<std::uint32_t> candidates;
+        std::vector<Segment> segments;
+        for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+        {
+          for (int x = 0; x < width; ++x)
+          {
+            const size_t pixel = static_cast<size_t>(y) * width + x;
+            double o[3];
+            double d[3];
+            double tNear;
+            double tFar;
+            cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+            const double v[3] = { -d[0], -d[1], -d[2] };
+
+            // what lies behind the particles: background, opaque layer or opaque particle
+            double back[4] = { background[0], background[1], background[2], backgroundAlpha };
+            double tStop = inf;
+            if (haveLayer)
+            {
+              const double depth = layerDepths[pixel];
+              if (depth >= 0.0 && depth < 1.0)
+              {
+                const double t = cam.WindowDepthToT(x + 0.5, y + 0.5, depth, o, d);
+                if (std::isfinite(t))
+                {
+                  tStop = t;
+                  std::copy(&layerColors[4 * pixel], &layerColors[4 * pixel] + 4, back);
+                }
+              }
+            }
+            const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
+            double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
+            if (tStop < inf)
+            {
+              tMax = std::min(tMax, tStop + 1e-9 * std::abs(tStop) + 1e-300);
+            }
+            candidates.clear();
+            grid.Collect(o, d, tMin, tMax, candidates);
+            std::sort(candidates.begin(), candidates.end());
+            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+
+            // opaque particles: the opaque mode's visible surface; translucent ones: segments
+            Hit opaqueHit;
+            segments.clear();
+            for (std::uint32_t i : candidates)
+            {
+              if (sphereTheta[i] >= 1.0)
+              {
+                IntersectSphere(cam, o, d, spheres[i], i, opaqueHit);
+              }
+              else
+              {
+                Segment seg;
+                if (MakeSegment(cam, o, d, spheres[i], tNear, tFar, i, seg))
+                {
+                  segments.push_back(seg);
+                }
+              }
+            }
+
+            // front-most composited particle, for the depth/id/normal images
+            double depthFront = 1.0;
+            double viewDepthFront = -1.0;
+            vtkIdType idFront = -1;
+            unsigned char insideFront = 0;
+            std::uint32_t conesFront = 0;
+            double normalFront[3] = { 0, 0, 0 };
+            double tOpaqueFront = inf;
+            if (opaqueHit.Index >= 0)
+            {
+              const SphereVC& s = spheres[opaqueHit.Index];
+              const vtkIdType pid = ids[opaqueHit.Index];
+              double n[3];
+              for (int k = 0; k < 3; ++k)
+              {
+                n[k] = (opaqueHit.Inside ? -opaqueHit.Rel[k] : opaqueHit.Rel[k]) / s.R;
+              }
+              const double p[3] = { s.C[0] + opaqueHit.Rel[0], s.C[1] + opaqueHit.Rel[1],
+                s.C[2] + opaqueHit.Rel[2] };
+              double amb[3];
+              double dif[3];
+              double alpha;
+              material(pid, amb, dif, alpha);
+              double color[3];
+              const std::uint32_t cones = shade(n, p, v, amb, dif, color);
+              const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
+                std::isfinite(color[2]) && std::isfinite(alpha);
+              // otherwise the GPU discards the fragment; at a tie the particle (drawn later,
+              // GL_LEQUAL) wins over the opaque layer
+              if (finite && alpha > 0.0 && opaqueHit.T <= tStop)
+              {
+                tStop = opaqueHit.T;
+                for (int k = 0; k < 3; ++k)
+                {
+                  back[k] = std::min(1.0, std::max(0.0, color[k]));
+                }
+                back[3] = std::min(1.0, std::max(0.0, alpha));
+                tOpaqueFront = opaqueHit.T;
+                depthFront = opaqueHit.Depth;
+                viewDepthFront = opaqueHit.T;
+                idFront = pid;
+                insideFront = opaqueHit.Inside ? 1 : 0;
+                conesFront = cones;
+                std::copy(n, n + 3, normalFront);
+              }
+            }
+
+            // cut the segments at the opaque depth, order them by their start
+            size_t kept = 0;
+            for (Segment& seg : segments)
+            {
+              if (seg.Key < tStop)
+              {
+                seg.Tau1 = std::min(seg.Tau1, tStop - seg.Tc);
+                segments[kept++] = seg;
+              }
+            }
+            segments.resize(kept);
+            std::sort(segments.begin(), segments.end(),
+              [&](const Segment& a, const Segment& b)
+              { return a.Key < b.Key || (a.Key == b.Key && ids[a.Index] < ids[b.Index]); });
+
+            // front-to-back compositing
+            double accumulated[3] = { 0, 0, 0 };
+            double transmittance = 1.0;
+            bool haveFront = false;
+            for (const Segment& seg : segments)
+            {
+              const SphereVC& s = spheres[seg.Index];
+              const double impact = std::sqrt(Dot(seg.Q, seg.Q));
+              const double integral =
+                IntegrateDensityImpl(densityModel, hollowFraction, s.R, impact, seg.Tau0, seg.Tau1);
+              const double opticalDepth =
+                sphereKappa[seg.Index] * (integral / sphereMaximum[seg.Index]);
+              const double theta = OpacityFromOpticalDepth(opticalDepth);
+              if (!(theta > 0.0) || !std::isfinite(opticalDepth))
+              {
+                continue;
+              }
+              const vtkIdType pid = ids[seg.Index];
+              double amb[3];
+              double dif[3];
+              double alpha;
+              material(pid, amb, dif, alpha);
+              double emitted[3];
+              std::uint32_t cones = 0;
+              double n[3] = { 0, 0, 0 };
+              double depth = 0.0;
+              if (seg.Entry)
+              {
+                double rel[3];
+                double p[3];
+                for (int k = 0; k < 3; ++k)
+                {
+                  rel[k] = seg.Q[k] - seg.H * d[k];
+                  n[k] = rel[k] / s.R;
+                  p[k] = s.C[k] + rel[k];
+                }
+                double surface[3];
+                cones = shade(n, p, v, amb, dif, surface);
+                if (!std::isfinite(surface[0]) || !std::isfinite(surface[1]) ||
+                  !std::isfinite(surface[2]))
+                {
+                  continue; // discarded
+                }
+                for (int k = 0; k < 3; ++k)
+                {
+                  emitted[k] = theta * ((1.0 - volumeMix) * surface[k] + volumeMix * dif[k]);
+                }
+                cam.Depth(p, depth);
+              }
+              else
+              {
+                for (int k = 0; k < 3; ++k)
+                {
+                  emitted[k] = theta * dif[k];
+                }
+                double p[3];
+                for (int k = 0; k < 3; ++k)
+                {
+                  p[k] = s.C[k] + seg.Q[k] + seg.Tau0 * d[k];
+                }
+                if (!cam.Depth(p, depth))
+                {
+                  depth = 0.0; // the start is the near plane
+                }
+              }
+              if (!haveFront)
+              {
+                haveFront = true;
+                depthFront = depth;
+                viewDepthFront = seg.Key;
+                idFront = pid;
+                insideFront = seg.Entry ? 0 : 1;
+                conesFront = cones;
+                std::copy(n, n + 3, normalFront);
+              }
+              for (int k = 0; k < 3; ++k)
+              {
+                accumulated[k] += transmittance * emitted[k];
+              }
+              transmittance *= std::exp(-opticalDepth);
+              if (transmittance == 0.0)
+              {
+                break;
+              }
+            }
+            if (!haveFront && tOpaqueFront == inf)
+            {
+              idFront = -1;
+            }
+            const double particleOpacity = tOpaqueFront < inf ? 1.0 : 1.0 - transmittance;
+
+            double* out = colorOut + 4 * pixel;
+            for (int k = 0; k < 3; ++k)
+            {
+              out[k] = std::min(1.0, std::max(0.0, accumulated[k] + transmittance * back[k]));
+            }
+            out[3] = std::min(1.0, std::max(0.0, 1.0 - transmittance * (1.0 - back[3])));
+            depthOut[pixel] = depthFront;
+            viewDepthOut[pixel] = viewDepthFront;
+            idOut[pixel] = idFront;
+            insideOut[pixel] = insideFront;
+            coneOut[pixel] = idFront >= 0 ? conesFront : 0;
+            std::copy(normalFront, normalFront + 3, normalOut + 3 * pixel);
+            translucentAlphaOut[pixel] = particleOpacity;
+          }
+        }
+      });
+    this->LastRenderSeconds = vtkTimerLog::GetUniversalTime() - startTime;
+    this->Modified();
+    return true;
+  }
+
   vtkSMPTools::For(0, height,
     [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
@@ -999,67 +1841,10 @@ bool vtkParticleReferenceRenderer::Render()
             const double v[3] = { -d[0], -d[1], -d[2] };
             double amb[3];
             double dif[3];
-            double alpha = opacity;
-            if (rgba)
-            {
-              const unsigned char* c = rgba + 4 * pid;
-              for (int k = 0; k < 3; ++k)
-              {
-                amb[k] = ambientK * (c[k] / 255.0);
-                dif[k] = diffuseK * (c[k] / 255.0);
-              }
-              alpha *= c[3] / 255.0;
-            }
-            else
-            {
-              for (int k = 0; k < 3; ++k)
-              {
-                amb[k] = ambientK * ambientColor[k];
-                dif[k] = diffuseK * diffuseColor[k];
-              }
-            }
+            double alpha;
+            material(pid, amb, dif, alpha);
             double color[3];
-            if (complexity == 0)
-            {
-              for (int k = 0; k < 3; ++k)
-              {
-                color[k] = amb[k] + dif[k];
-              }
-            }
-            else
-            {
-              double diffuse[3] = { 0, 0, 0 };
-              double specular[3] = { 0, 0, 0 };
-              unsigned int bit = 0;
-              for (const LightVC& light : lights)
-              {
-                if (complexity == 1)
-                {
-                  // Lighting.glsl, prHeadlight
-                  const double df = std::max(0.000001, n[2]);
-                  const double sf = std::pow(df, specularPower);
-                  for (int k = 0; k < 3; ++k)
-                  {
-                    diffuse[k] += df * light.Color[k];
-                    specular[k] += sf * light.Color[k];
-                  }
-                }
-                else
-                {
-                  const bool inCone =
-                    SceneLight(n, v, p, light, complexity == 3, specularPower, diffuse, specular);
-                  if (complexity == 3 && light.Positional && light.ConeAngle < 90.0 &&
-                    bit < MaximumConeBits)
-                  {
-                    cones |= (inCone ? 1u : 0u) << bit++;
-                  }
-                }
-              }
-              for (int k = 0; k < 3; ++k)
-              {
-                color[k] = amb[k] + diffuse[k] * dif[k] + specular[k] * specularColor[k];
-              }
-            }
+            cones = shade(n, p, v, amb, dif, color);
             const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
               std::isfinite(color[2]) && std::isfinite(alpha);
             if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
@@ -1083,6 +1868,7 @@ bool vtkParticleReferenceRenderer::Render()
           insideOut[pixel] = inside;
           coneOut[pixel] = id >= 0 ? cones : 0;
           std::copy(normal, normal + 3, normalOut + 3 * pixel);
+          translucentAlphaOut[pixel] = id >= 0 ? 1.0 : 0.0;
         }
       }
     });
@@ -1133,11 +1919,7 @@ bool vtkParticleReferenceRenderer::WindowDepthToViewDepth(
           double tNear;
           double tFar;
           cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
-          double p[3];
-          cam.Unproject(2.0 * (x + 0.5) / cam.Width - 1.0, 2.0 * (y + 0.5) / cam.Height - 1.0,
-            2.0 * depth - 1.0, p);
-          const double rel[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
-          const double t = Dot(rel, d);
+          const double t = cam.WindowDepthToT(x + 0.5, y + 0.5, depth, o, d);
           values[pixel] = std::isfinite(t) ? t : -1.0;
         }
       }
@@ -1162,4 +1944,5 @@ void vtkParticleReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfLargeSpheres: " << this->NumberOfLargeSpheres << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
   os << indent << "LastGridBuildSeconds: " << this->LastGridBuildSeconds << "\n";
+  os << indent << "OpaqueLayer: " << (this->OpaqueLayerColors ? "set" : "none") << "\n";
 }
