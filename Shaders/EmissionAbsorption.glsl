@@ -39,15 +39,22 @@ float prLog1p(float x)
     // 1 + x = (1 + z) / (1 - z) with z = x / (2 + x), |z| < 0.143; 2 + x has no cancellation
     return prTwoAtanhSeries(x / (2.0 + x));
   }
-  int e;
-  float m = frexp(1.0 + x, e); // m in [0.5, 1)
-  if (m < 0.70710678)
+  // u = 1 + x = m 2^e with m in [0.707, 1.414), by exact scalings (no frexp before GLSL 4.0;
+  // the fragment stage is compiled as VTK's GLSL 1.50)
+  float m = 1.0 + x;
+  float e = 0.0;
+  for (int k = 0; k < 160 && m < 0.70710678; ++k)
   {
     m *= 2.0;
-    e -= 1;
+    e -= 1.0;
   }
-  // m in [0.707, 1.414): m - 1 is exact, |z| < 0.172
-  return float(e) * 0.69314718 + prTwoAtanhSeries((m - 1.0) / (m + 1.0));
+  for (int k = 0; k < 160 && m >= 1.41421356; ++k)
+  {
+    m *= 0.5;
+    e += 1.0;
+  }
+  // m - 1 is exact, |z| < 0.172
+  return e * 0.69314718 + prTwoAtanhSeries((m - 1.0) / (m + 1.0));
 }
 
 // 1 - exp(-a) for a >= 0.

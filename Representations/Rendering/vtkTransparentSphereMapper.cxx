@@ -51,6 +51,11 @@ enum class Variant
   Translucent // the emission-absorption composite of the translucent stage
 };
 
+// VTK's fragment opacity is interpolated (vertexColorVSOutput is smooth): a constant 1 comes out
+// as 1 - 6e-8 at some fragments. Opacities this close to 1 are 1; the next lower value VTK can
+// produce from colours is 254/255.
+#define PR_OPAQUE_DEFINE "#define PR_OPAQUE 0.999999\n"
+
 // GS culling modes (uniform prCullMode)
 const int CullOpaqueStage = 0;    // opaque variant: only Theta_a = 1
 const int CullAllVisible = 1;     // either variant: everything with Theta_a > 0
@@ -355,10 +360,11 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
   if (!translucent)
   {
     vtkParticleShaders::ReplaceHook(fs, "//PR::Sphere::Dec",
-      "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n//PR::Sphere::Dec");
+      "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n" PR_OPAQUE_DEFINE
+      "//PR::Sphere::Dec");
     // the opaque stage keeps Theta_i = Theta_a * opacity = 1 only; picking keeps all
     vtkParticleShaders::ReplaceHook(fs, "//PR::Shading::Impl",
-      "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= 1.0))\n"
+      "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= PR_OPAQUE))\n"
       "  {\n"
       "    discard;\n"
       "  }\n"
@@ -369,7 +375,7 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     // no depth writes: the early-termination mask is tested before shading
     vtkShaderProgram::Substitute(fs, "gl_FragDepth = depth;", "");
     std::ostringstream dec;
-    dec << "flat in float opticalDepthVSOutput;\n"
+    dec << "flat in float opticalDepthVSOutput;\n" PR_OPAQUE_DEFINE
            "uniform float prVolumeMix;\n"
            "uniform float prMaximumIntegral;\n"
            "uniform float prHollowFraction2;\n"
@@ -384,12 +390,12 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
       "{\n"
       "    // vtkTransparentSphereMapper: Theta_i = Theta_a * opacity, as an optical depth\n"
       "    float kappaA = opticalDepthVSOutput;\n"
-      "    if (kappaA < 0.0 && opacity >= 1.0)\n"
+      "    if (kappaA < 0.0 && opacity >= PR_OPAQUE)\n"
       "    {\n"
       "      discard; // opaque: drawn in the opaque stage\n"
       "    }\n"
       "    float kappa = kappaA;\n"
-      "    if (opacity < 1.0)\n"
+      "    if (opacity < PR_OPAQUE)\n"
       "    {\n"
       "      float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);\n"
       "      kappa = -prLog1p(-opacity * thetaA);\n"
@@ -455,6 +461,10 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     fs = vtkParticleShaders::ResolveIncludes(fs);
   }
   shaders[vtkShader::Fragment]->SetSource(fs);
+  if (getenv("PR_DUMP_SHADERS"))
+  {
+    std::cerr << "=== VS\n" << vs << "\n=== GS\n" << gs << "\n=== FS\n" << fs << "\n";
+  }
 }
 
 //------------------------------------------------------------------------------
