@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <vector>
 
 namespace
 {
@@ -78,15 +79,32 @@ int TestTransparentSphereMapper(int argc, char* argv[])
   actor->GetProperty()->SetSpecular(0.3);
   actor->GetProperty()->SetSpecularPower(20);
 
-  // an opaque box in the middle of the cloud
-  double bounds[6];
-  particles->GetBounds(bounds);
+  // an opaque slab through the middle of the first droplet (median position of type-1 atoms)
+  std::vector<double> coords[3];
+  vtkDataArray* types = particles->GetPointData()->GetArray("type");
+  for (vtkIdType i = 0; i < particles->GetNumberOfPoints(); ++i)
+  {
+    if (types->GetComponent(i, 0) == 1)
+    {
+      double x[3];
+      particles->GetPoint(i, x);
+      for (int k = 0; k < 3; ++k)
+      {
+        coords[k].push_back(x[k]);
+      }
+    }
+  }
+  double centre[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    std::nth_element(coords[k].begin(), coords[k].begin() + coords[k].size() / 2, coords[k].end());
+    centre[k] = coords[k][coords[k].size() / 2];
+  }
   vtkNew<vtkCubeSource> box;
-  box->SetCenter(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]));
-  box->SetXLength(0.25 * (bounds[1] - bounds[0]));
-  box->SetYLength(0.5 * (bounds[3] - bounds[2]));
-  box->SetZLength(0.25 * (bounds[5] - bounds[4]));
+  box->SetCenter(centre);
+  box->SetXLength(4.0);
+  box->SetYLength(40.0);
+  box->SetZLength(16.0);
   vtkNew<vtkPolyDataMapper> boxMapper;
   boxMapper->SetInputConnection(box->GetOutputPort());
   vtkNew<vtkActor> boxActor;
@@ -103,10 +121,11 @@ int TestTransparentSphereMapper(int argc, char* argv[])
   window->SetSize(400, 400);
   window->SetMultiSamples(0);
   window->AddRenderer(renderer);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30);
-  renderer->GetActiveCamera()->Elevation(20);
-  renderer->GetActiveCamera()->Zoom(1.3);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + 45.0, centre[1] + 20.0, centre[2] + 55.0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(35);
   renderer->ResetCameraClippingRange();
   window->Render();
 
@@ -140,10 +159,10 @@ int TestTransparentSphereMapper(int argc, char* argv[])
     "no sort after colour, opacity or shading changes (sorts: " +
       std::to_string(mapper->GetNumberOfSorts()) + ")");
   // the camera does
-  renderer->GetActiveCamera()->Azimuth(1);
+  camera->Azimuth(1);
   window->Render();
   ok &= prTest::Check(mapper->GetNumberOfSorts() == 2, "a sort after a camera change");
-  renderer->GetActiveCamera()->Azimuth(-1);
+  camera->Azimuth(-1);
   mapper->SetVolumeMix(0.4);
   mapper->SetOpacityRange(speedRange[0], speedRange[0] + 0.8 * (speedRange[1] - speedRange[0]));
   actor->GetProperty()->SetSpecular(0.3);
