@@ -31,17 +31,12 @@ float prTwoAtanhSeries(float z)
   return 2.0 * z * s;
 }
 
-// ln(1 + x) for x > -1.
-float prLog1p(float x)
+// ln(u) for u > 0 (finite).
+float prLogOfPositive(float u)
 {
-  if (abs(x) < 0.25)
-  {
-    // 1 + x = (1 + z) / (1 - z) with z = x / (2 + x), |z| < 0.143; 2 + x has no cancellation
-    return prTwoAtanhSeries(x / (2.0 + x));
-  }
-  // u = 1 + x = m 2^e with m in [0.707, 1.414), by exact scalings (no frexp before GLSL 4.0;
-  // the fragment stage is compiled as VTK's GLSL 1.50)
-  float m = 1.0 + x;
+  // u = m 2^e with m in [0.707, 1.414), by exact scalings (no frexp before GLSL 4.0; the
+  // fragment stage is compiled as VTK's GLSL 1.50)
+  float m = u;
   float e = 0.0;
   for (int k = 0; k < 160 && m < 0.70710678; ++k)
   {
@@ -55,6 +50,33 @@ float prLog1p(float x)
   }
   // m - 1 is exact, |z| < 0.172
   return e * 0.69314718 + prTwoAtanhSeries((m - 1.0) / (m + 1.0));
+}
+
+// ln(1 + x) for x > -1.
+float prLog1p(float x)
+{
+  if (abs(x) < 0.25)
+  {
+    // 1 + x = (1 + z) / (1 - z) with z = x / (2 + x), |z| < 0.143; 2 + x has no cancellation
+    return prTwoAtanhSeries(x / (2.0 + x));
+  }
+  return prLogOfPositive(1.0 + x);
+}
+
+// Optical depth -ln(1 - Theta) of the product Theta = thetaA * thetaO of two opacities, each
+// also given as its transmittance (tauA = 1 - thetaA, tauO = 1 - thetaO, so that neither end
+// loses digits: 1 - 1e-6 and 1e-7 are both exact enough this way and not as one float), without
+// cancellation: 1 - Theta = tauA + thetaA * tauO is a sum of non-negative terms. -1 (infinite)
+// when both are opaque.
+float prCombinedOpticalDepth(float thetaA, float tauA, float thetaO, float tauO)
+{
+  float theta = thetaA * thetaO;
+  float tau = tauA + thetaA * tauO;
+  if (!(tau > 0.0))
+  {
+    return -1.0;
+  }
+  return theta < 0.5 ? -prLog1p(-theta) : -prLogOfPositive(tau);
 }
 
 // 1 - exp(-a) for a >= 0.

@@ -27,6 +27,7 @@ uniform vec2 clipZWOfTranslation;
 flat in vec4 centerRadiusVCVSOutput;
 flat in vec3 centerOffsetVCVSOutput;
 in vec3 offsetVCVSOutput;
+in vec3 rayVCVSOutput;
 flat in int particleIdVSOutput;
 
 //VTK::CustomUniforms::Dec
@@ -51,7 +52,7 @@ void main()
 
   // the fragment's ray, as a point relative to the centre and a unit direction
   vec3 prRayS = offsetVCVSOutput;
-  vec3 prRayD = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(centerVC + prRayS);
+  vec3 prRayD = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(rayVCVSOutput);
   float prT0;
   float prT1;
   if (!prIntersectSphere(prRayS, prRayD, radiusVC, prT0, prT1))

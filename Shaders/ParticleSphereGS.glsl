@@ -23,6 +23,7 @@ flat out vec4 centerRadiusVCGSOutput;
 flat out vec3 centerOffsetVCGSOutput;
 flat out int particleIdGSOutput;
 out vec3 offsetVCGSOutput;
+out vec3 rayVCGSOutput;
 
 //VTK::Color::Dec
 //VTK::Clip::Dec
@@ -45,7 +46,7 @@ void main()
   for (int corner = 0; corner < 3; ++corner)
   {
     prSphereBillboard(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
-      gl_Position, offsetVCGSOutput);
+      gl_Position, offsetVCGSOutput, rayVCGSOutput);
     centerRadiusVCGSOutput = centerRadiusVCVSOutput[0];
     centerOffsetVCGSOutput = centerOffsetVCVSOutput[0];
     particleIdGSOutput = particleIdVSOutput[0];

@@ -16,9 +16,10 @@
 // The clip-space z is set to 0: coverage does not depend on it and the
 // fragment stage writes the real depth, so the near plane never cuts it.
 //
-// Outputs: clip position, and the triangle point relative to the sphere centre
-// in view coordinates (interpolated perspective-correctly, it is a point of the
-// fragment's ray relative to the centre -- see RaySphere.glsl).
+// Outputs: clip position, the triangle point relative to the sphere centre in
+// view coordinates (interpolated perspective-correctly, it is a point of the
+// fragment's ray relative to the centre -- see RaySphere.glsl) and the same
+// point relative to the eye (its direction is the fragment's ray direction).
 //=========================================================================
 bool prSphereIsDrawable(vec3 centerVC, float radiusVC)
 {
@@ -31,7 +32,7 @@ const vec2 prTriangleCorners[3] = vec2[3](vec2(0.0, 2.0), vec2(-1.7320508, -1.0)
 const vec2 prViewportCorners[3] = vec2[3](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
 
 void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel, mat4 vcdc,
-  mat4 dcvc, out vec4 positionDC, out vec3 offsetVC)
+  mat4 dcvc, out vec4 positionDC, out vec3 offsetVC, out vec3 rayVC)
 {
   // 1.0001: a margin of 1e-4 radii against rounding at the silhouette
   vec2 c = 1.0001 * prTriangleCorners[corner];
@@ -48,7 +49,10 @@ void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel,
       // eye inside or at the surface: cover the viewport, rays start at the near plane
       vec2 v = prViewportCorners[corner];
       vec4 nearVC = dcvc * vec4(v, -1.0, 1.0);
-      offsetVC = nearVC.xyz / nearVC.w - centerVC;
+      // the ray direction from the near-plane point itself: centerVC + offsetVC would cancel
+      // (the eye is within a radius of the centre, the near plane much closer to the eye)
+      rayVC = nearVC.xyz / nearVC.w;
+      offsetVC = rayVC - centerVC;
       positionDC = vec4(v, 0.0, 1.0);
       return;
     }
@@ -61,5 +65,7 @@ void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel,
     offsetVC = -dir * (radiusVC * rr) + silhouetteRadius * (c.x * u + c.y * v);
     positionDC = vcdc * vec4(centerVC + offsetVC, 1.0);
   }
+  // a point of the ray seen from the eye (the direction is all that is used)
+  rayVC = centerVC + offsetVC;
   positionDC.z = 0.0;
 }

@@ -377,6 +377,8 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     std::ostringstream dec;
     dec << "flat in float opticalDepthVSOutput;\n" PR_OPAQUE_DEFINE
            "uniform float prVolumeMix;\n"
+           "uniform vec2 prActorOpacity;\n"
+           "uniform int prCullMode;\n"
            "uniform float prMaximumIntegral;\n"
            "uniform float prHollowFraction2;\n"
            "uniform sampler2D prOpaqueDepth;\n"
@@ -390,17 +392,24 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
       "{\n"
       "    // vtkTransparentSphereMapper: Theta_i = Theta_a * opacity, as an optical depth\n"
       "    float kappaA = opticalDepthVSOutput;\n"
-      "    if (kappaA < 0.0 && opacity >= PR_OPAQUE)\n"
+      "    // the actor's opacity and transmittance: from the CPU in double when the opacity is\n"
+      "    // the actor's alone (no scalar alpha), else from VTK's interpolated opacity\n"
+      "    float thetaO = prActorOpacity.x >= 0.0 ? prActorOpacity.x : opacity;\n"
+      "    float tauO = prActorOpacity.x >= 0.0 ? prActorOpacity.y : 1.0 - opacity;\n"
+      "    if (prActorOpacity.x < 0.0 && opacity >= PR_OPAQUE)\n"
+      "    {\n"
+      "      thetaO = 1.0;\n"
+      "      tauO = 0.0;\n"
+      "    }\n"
+      "    float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);\n"
+      "    float tauA = kappaA < 0.0 ? 0.0 : exp(-kappaA);\n"
+      "    float kappa = (tauO == 0.0 && kappaA >= 0.0) ? kappaA\n"
+      "      : prCombinedOpticalDepth(thetaA, tauA, thetaO, tauO);\n"
+      "    if (kappa < 0.0 && prCullMode == 0)\n"
       "    {\n"
       "      discard; // opaque: drawn in the opaque stage\n"
       "    }\n"
-      "    float kappa = kappaA;\n"
-      "    if (opacity < PR_OPAQUE)\n"
-      "    {\n"
-      "      float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);\n"
-      "      kappa = -prLog1p(-opacity * thetaA);\n"
-      "    }\n"
-      "    if (!(kappa > 0.0))\n"
+      "    if (kappa == 0.0)\n"
       "    {\n"
       "      discard;\n"
       "    }\n"
@@ -450,7 +459,9 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
       "    float tn = -h + 2.0 * h * un;\n"
       "    float tf = -h + 2.0 * h * uf;\n"
       "    float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction2);\n"
-      "    float theta = prSegmentOpacity(kappa, integral, prMaximumIntegral);\n"
+      "    // kappa < 0: an opaque particle drawn here (the actor's opacity is not 1)\n"
+      "    float theta = kappa < 0.0 ? (integral > 0.0 ? 1.0 : 0.0)\n"
+      "      : prSegmentOpacity(kappa, integral, prMaximumIntegral);\n"
       "    // Eq. 2: surface reflection at the entry point mixed with the volume colour; without\n"
       "    // an entry surface (the segment starts inside) only the volume emits\n"
       "    vec3 radiance = clipN ? diffuseColor : mix(gl_FragData[0].rgb, diffuseColor, "
@@ -478,6 +489,13 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
   if (&cellBO == &this->Primitives[PrimitiveTriStrips])
   {
     program->SetUniformf("prVolumeMix", static_cast<float>(this->VolumeMix));
+    // Opacity and 1 - Opacity from double (Opacity = 1 - 1e-7 or 1e-6 does not survive 1 - x in
+    // float); (-1, -1) when scalar colours carry alpha and the shader uses VTK's opacity
+    const double opacity = std::min(1.0, std::max(0.0, act->GetProperty()->GetOpacity()));
+    const bool scalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
+    const float actorOpacity[2] = { scalarAlpha ? -1.0f : static_cast<float>(opacity),
+      scalarAlpha ? -1.0f : static_cast<float>(1.0 - opacity) };
+    program->SetUniform2f("prActorOpacity", actorOpacity);
     program->SetUniformf(
       "prHollowFraction2", static_cast<float>(this->HollowFraction * this->HollowFraction));
     program->SetUniformf("prMaximumIntegral",
