@@ -13,6 +13,8 @@
 //=========================================================================
 layout(local_size_x = 256) in;
 
+//PR::Include ComputeCommon
+
 layout(std430, binding = 0) readonly buffer prPositions { float positions[]; };
 layout(std430, binding = 1) readonly buffer prRadii { float radii[]; };
 layout(std430, binding = 2) writeonly buffer prKeys { float keys[]; };
@@ -26,7 +28,7 @@ uniform int parallelProjection;
 
 void main()
 {
-  uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 256u + gl_LocalInvocationID.x;
+  uint i = prLinearGroupID() * 256u + gl_LocalInvocationID.x;
   if (i >= count)
   {
     return;

@@ -20,6 +20,16 @@ vtkStandardNewMacro(vtkParticleFrontToBackTarget);
 namespace
 {
 const int MaxSavedDrawBuffers = 8;
+
+// Copy the depth of the bound (single-sample) read framebuffer into a depth texture.
+// vtkTextureObject::CopyFromFrameBuffer is not used: with a multisampled window it resolves
+// through its own 24-bit buffer whatever the bound framebuffer is.
+void CopyDepth(vtkTextureObject* texture, int x, int y, int width, int height)
+{
+  texture->Activate();
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+  texture->Deactivate();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -33,6 +43,13 @@ public:
   vtkNew<vtkTextureObject> OpaqueDepth;
   vtkNew<vtkOpenGLFramebufferObject> AccumulationFBO;
   vtkNew<vtkOpenGLFramebufferObject> MaskFBO;
+  // multisampled opaque images: their depth is resolved into a single-sample buffer of the
+  // window's depth format first (glBlitFramebuffer needs equal formats, glCopyTexSubImage2D a
+  // single-sample source)
+  vtkNew<vtkTextureObject> ResolvedDepth;
+  vtkNew<vtkOpenGLFramebufferObject> ResolveFBO;
+  bool ResolveAllocated = false;
+  int ResolveFormat = 0;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> BlendQuad;
   bool Allocated = false;
@@ -198,8 +215,62 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
   internals.Active = true;
 
   // the opaque depth
+  ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, outer);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
   ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, outer);
-  internals.OpaqueDepth->CopyFromFrameBuffer(vp[0], vp[1], 0, 0, vp[2], vp[3]);
+  if (samples > 0)
+  {
+    vtkTextureObject* resolved = internals.ResolvedDepth;
+    // the depth format of the opaque image, which the blit must match exactly
+    GLint depthBits = 0;
+    GLint stencilBits = 0;
+    GLint componentType = GL_UNSIGNED_NORMALIZED;
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+      GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+      GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
+    const int format = depthBits * 100 + stencilBits * 10 + (componentType == GL_FLOAT ? 1 : 0);
+    if (!internals.ResolveAllocated || internals.ResolveFormat != format)
+    {
+      resolved->ReleaseGraphicsResources(ctx);
+      resolved->SetContext(ctx);
+      if (stencilBits > 0)
+      {
+        resolved->AllocateDepthStencil(vp[2], vp[3]);
+      }
+      else
+      {
+        resolved->AllocateDepth(vp[2], vp[3],
+          componentType == GL_FLOAT
+            ? vtkTextureObject::Float32
+            : (depthBits == 32 ? vtkTextureObject::Fixed32
+                               : (depthBits == 16 ? vtkTextureObject::Fixed16
+                                                  : vtkTextureObject::Fixed24)));
+      }
+      internals.ResolveFormat = format;
+      internals.ResolveFBO->SetContext(ctx);
+      internals.ResolveFBO->Bind(GL_DRAW_FRAMEBUFFER);
+      internals.ResolveFBO->AddDepthAttachment(resolved);
+      internals.ResolveAllocated = true;
+    }
+    else if (resolved->GetWidth() != static_cast<unsigned int>(vp[2]) ||
+      resolved->GetHeight() != static_cast<unsigned int>(vp[3]))
+    {
+      resolved->Resize(vp[2], vp[3]);
+    }
+    internals.ResolveFBO->Bind(GL_DRAW_FRAMEBUFFER);
+    ostate->vtkglBlitFramebuffer(vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3], 0, 0, vp[2], vp[3],
+      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    internals.ResolveFBO->Bind(GL_READ_FRAMEBUFFER);
+    CopyDepth(internals.OpaqueDepth, 0, 0, vp[2], vp[3]);
+  }
+  else
+  {
+    CopyDepth(internals.OpaqueDepth, vp[0], vp[1], vp[2], vp[3]);
+  }
 
   internals.AccumulationFBO->Bind();
   internals.AccumulationFBO->ActivateDrawBuffer(0);
@@ -355,6 +426,9 @@ void vtkParticleFrontToBackTarget::ReleaseGraphicsResources(vtkWindow* window)
   internals.OpaqueDepth->ReleaseGraphicsResources(window);
   internals.AccumulationFBO->ReleaseGraphicsResources(window);
   internals.MaskFBO->ReleaseGraphicsResources(window);
+  internals.ResolvedDepth->ReleaseGraphicsResources(window);
+  internals.ResolveFBO->ReleaseGraphicsResources(window);
+  internals.ResolveAllocated = false;
   if (internals.MaskQuery)
   {
     glDeleteQueries(1, &internals.MaskQuery);

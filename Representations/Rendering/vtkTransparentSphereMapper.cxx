@@ -103,6 +103,8 @@ public:
   vtkNew<vtkParticleFrontToBackTarget> Target;
   vtkMTimeType LastPeelingStageTime = 0;
   bool SinglePeelingWarned = false;
+  bool UnsortedWarned = false;
+  vtkIdType FailedSortCount = -1;
 
   // timings
   vtkOpenGLRenderTimer TotalTimer;
@@ -626,9 +628,16 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     internals.TotalTimer.Start();
   }
   internals.SortTimed = false;
-  if (!this->UpdateSortedOrder(ren, act, numPts))
+  // Without a sort (too many particles for the GPU's buffers, compute shaders failing) the
+  // particles are still composited, in index order: a sane picture, with one warning.
+  const bool sorted = this->UpdateSortedOrder(ren, act, numPts);
+  if (!sorted && !internals.UnsortedWarned)
   {
-    return;
+    vtkWarningMacro(<< "The " << numPts
+                    << " particles could not be depth-sorted on this GPU (see the previous error): "
+                       "translucent particles are composited in input order, which is wrong "
+                       "where they overlap.");
+    internals.UnsortedWarned = true;
   }
   if (!internals.Target->Begin(ren, savedByPass))
   {
@@ -646,8 +655,11 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
   this->UpdateShaders(cellBO, ren, act);
   if (cellBO.Program)
   {
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, internals.Sort->GetIndexBuffer());
-    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
+    if (sorted)
+    {
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, internals.Sort->GetIndexBuffer());
+      glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
+    }
     if (this->CollectTimings)
     {
       internals.DrawTimer.Reset();
@@ -660,8 +672,15 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     {
       const vtkIdType first = numPts * c / chunks;
       const vtkIdType last = numPts * (c + 1) / chunks;
-      glDrawElements(GL_POINTS, static_cast<GLsizei>(last - first), GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(static_cast<size_t>(first) * sizeof(GLuint)));
+      if (sorted)
+      {
+        glDrawElements(GL_POINTS, static_cast<GLsizei>(last - first), GL_UNSIGNED_INT,
+          reinterpret_cast<const void*>(static_cast<size_t>(first) * sizeof(GLuint)));
+      }
+      else
+      {
+        glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(last - first));
+      }
       if (c + 1 < chunks)
       {
         internals.Target->MaskSaturatedPixels(this->TerminationOpacity);
@@ -724,9 +743,14 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
   }
 
   vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  if (count == internals.FailedSortCount)
+  {
+    return false; // said once already
+  }
   if (!internals.Sort->Reserve(ctx, count))
   {
     internals.SortState.clear();
+    internals.FailedSortCount = count;
     return false;
   }
   vtkParticleComputeProgram* keys = internals.KeyProgram;
