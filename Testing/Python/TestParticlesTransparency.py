@@ -1,0 +1,60 @@
+"""Translucent particles in ParaView (vtkTransparentSphereMapper through the Particles
+representation): the LAMMPS droplets (Testing/Data/lj_droplets.vtp, 11033 atoms) with the
+maximum opacity from the atoms' speed (Use Opacity Array, the fastest atoms opaque), one
+baseline image per density model -- Constant, and Squared Distance with a hollow core -- and
+the same images with ParaView's depth peeling switched off (VTK's order-independent pass then
+drives the translucent stage; the particles composite themselves either way). Also checks the
+properties the panel exposes and their defaults.
+
+usage: pvpython TestParticlesTransparency.py --plugin ParticleRendering.so --data DIR
+           --baseline-dir DIR --temp-dir DIR
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import prParaViewTesting as pr  # noqa: E402
+from paraview import simple  # noqa: E402
+
+args = pr.parse_arguments()
+pr.load_plugin(args)
+
+atoms, from_file = pr.open_particles(args, "lj_droplets.vtp")
+view = pr.setup_view(simple.CreateView("RenderView"), size=(500, 400))
+display = pr.show_particles(atoms, view, use_radius_array=False)
+display.Radius = 0.42
+
+ok = True
+defaults = {"DensityModel": "Constant", "HollowFraction": 0.0, "VolumeMix": 0.5,
+            "UseOpacityArray": 0, "EarlyTermination": 0}
+for name, value in defaults.items():
+    if display.GetPropertyValue(name) != value:
+        print("FAIL: %s is %r, expected %r" % (name, display.GetPropertyValue(name), value))
+        ok = False
+
+display.UseOpacityArray = 1
+display.OpacityArray = ["POINTS", "speed"]
+display.OpacityArrayRange = [0.0, 3.0]
+pr.set_camera(view, position=(95.0, 20.0, 95.0), focal_point=(40.0, 40.0, 40.0),
+              view_up=(0, 1, 0), view_angle=30.0)
+
+suffix = "" if from_file else "_synthetic"
+for model, hollow, mix in (("Constant", 0.0, 0.5), ("Squared Distance", 0.4, 0.3)):
+    display.DensityModel = model
+    display.HollowFraction = hollow
+    display.VolumeMix = mix
+    name = "TestParticlesTransparency_" + model.replace(" ", "")
+    view.EnableRenderOnInteraction = 0
+    view.DepthPeeling = 1
+    peeled_ok, peeled = pr.capture_and_compare(view, name + suffix, args)
+    ok = peeled_ok and ok
+    view.DepthPeeling = 0
+    unpeeled = pr.capture(view, os.path.join(args.temp_dir, name + "_nopeeling.png"))
+    difference = pr.max_abs_difference(peeled, unpeeled)
+    print("%s: max |depth peeling - no depth peeling| = %s/255" % (model, difference))
+    if difference is None or difference > 1:
+        print("FAIL: %s differs with and without depth peeling" % model)
+        ok = False
+    view.DepthPeeling = 1
+
+pr.finish(ok)
