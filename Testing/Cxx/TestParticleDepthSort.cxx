@@ -1,6 +1,6 @@
 // vtkParticleDepthSort and vtkParticleComputeProgram: every sort is compared exactly with
 // std::stable_sort of (mapped key, index) on the CPU, indices and keys, with the skipping of
-// uniform digits on and off. Needs OpenGL 4.3: an unsupported context is a failure, not a skip.
+// uniform digits on and off and with coalesced and direct writes. Needs OpenGL 4.3: an unsupported context is a failure, not a skip.
 // No baseline image (the -V argument of the driver is ignored).
 #include "prTestUtilities.h"
 
@@ -144,7 +144,8 @@ void CheckResult(
                 << "\n";
     }
   }
-  const std::string mode = skip ? " (skipping)" : " (8 passes)";
+  const std::string mode = std::string(skip ? " (skipping" : " (8 passes") +
+    (sort->GetCoalescedWrites() ? ")" : ", direct writes)");
   Expect(badIndices == 0,
     name + mode + ": " + std::to_string(badIndices) + " indices differ from std::stable_sort");
   Expect(badKeys == 0, name + mode + ": " + std::to_string(badKeys) + " sorted keys differ");
@@ -194,7 +195,8 @@ void TimeSorts(vtkParticleDepthSort* sort, const std::string& name, const std::v
     const double wall = vtkTimerLog::GetUniversalTime() - start;
     if (r == 0)
     {
-      std::cout << name << (skip ? "" : ", skipping off") << ": wall " << wall * 1e3 << " ms, ";
+      std::cout << name << (skip ? "" : ", skipping off")
+                << (sort->GetCoalescedWrites() ? "" : ", direct writes") << ": wall " << wall * 1e3 << " ms, ";
     }
   }
   std::sort(seconds.begin(), seconds.end());
@@ -358,8 +360,11 @@ int TestParticleDepthSort(int, char*[])
 
   vtkNew<vtkParticleDepthSort> sort;
   sort->SetCollectTimings(true);
-  for (bool skip : { true, false })
+  // (skipping, coalesced writes): the default, all 8 passes, direct writes
+  for (int configuration = 0; configuration < 3; ++configuration)
   {
+    const bool skip = configuration != 1;
+    sort->SetCoalescedWrites(configuration != 2);
     for (std::size_t n : { 0, 1, 2, 1023, 1024, 1025 })
     {
       SortAndCheck(context, sort, "random " + std::to_string(n), RandomKeys(n, 11 + n), skip);
@@ -390,7 +395,7 @@ int TestParticleDepthSort(int, char*[])
     const std::vector<float> million = RandomKeys(1000000, 1);
     SortAndCheck(context, sort, "random 1e6", million, skip);
     TimeSorts(sort, "1e6 random keys", million, skip);
-    if (skip)
+    if (configuration == 0)
     {
       const double start = vtkTimerLog::GetUniversalTime();
       std::vector<std::uint32_t> order(million.size());
