@@ -435,15 +435,12 @@ double vtkParticleDepthSort::GetLastSortGPUSeconds()
   {
     return 0.0;
   }
-  if (!timer.Ready())
+  // after glFinish the query results are available (bounded, in case a driver never says so)
+  for (int attempt = 0; attempt < 100 && !timer.Ready(); ++attempt)
   {
     glFinish();
-    while (!timer.Ready())
-    {
-      // after glFinish the query results are available; Ready() fetches them
-    }
   }
-  return timer.GetElapsedSeconds();
+  return timer.GetElapsedSeconds(); // 0 when still not ready
 }
 
 //------------------------------------------------------------------------------
