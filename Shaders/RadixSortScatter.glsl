@@ -13,15 +13,19 @@
 //      halves at once: no half exceeds 1024) in two levels: 256 invocations
 //      scan 8 words each, 8 invocations scan the 32 chunk sums of a pair.
 // Output position = scanned global count of (digit, tile) + local rank.
-// PR_LOCAL_REORDER: the keys are first placed in tile order in shared memory
-// (Harris et al.'s local sort), so that consecutive invocations write
-// consecutive addresses of one digit run (coalesced writes on GPUs).
+// PR_LOCAL_REORDER (default 1; vtkParticleDepthSort::CoalescedWrites): the
+// keys are first placed in tile order in shared memory (Harris et al.'s local
+// sort), so that consecutive invocations write consecutive addresses of one
+// digit run (coalesced writes on GPUs). 0 writes every key straight from its
+// invocation (16 partial runs per tile), which is 20 % faster on llvmpipe.
 // Shared memory: 9 KB counts + 1 KB chunk sums (+ 8 KB for the reorder).
 //=========================================================================
 //PR::Include RadixSortCommon
 layout(local_size_x = 256) in;
 
+#ifndef PR_LOCAL_REORDER
 #define PR_LOCAL_REORDER 1
+#endif
 
 uniform uint prShift;          // bit position of the digit
 uniform uint prReadB;          // 1: read side B, write side A; 0: the reverse

@@ -68,6 +68,7 @@ public:
   vtkNew<vtkParticleComputeProgram> Scatter;
   vtkOpenGLRenderTimer Timer;
   bool Timed = false;
+  bool BuiltCoalescedWrites = true;
 
   std::vector<std::pair<vtkParticleComputeProgram*, const char*>> Programs()
   {
@@ -105,14 +106,25 @@ vtkParticleDepthSort::~vtkParticleDepthSort()
 //------------------------------------------------------------------------------
 bool vtkParticleDepthSort::BuildPrograms()
 {
-  for (auto& program : this->Internals->Programs())
+  vtkInternals& internals = *this->Internals;
+  for (auto& program : internals.Programs())
   {
-    if (program.first->IsBuilt())
+    const bool scatter = program.first == internals.Scatter.GetPointer();
+    if (program.first->IsBuilt() &&
+      !(scatter && internals.BuiltCoalescedWrites != this->CoalescedWrites))
     {
       continue;
     }
-    program.first->SetSource(vtkParticleShaders::Get(program.second));
-    if (!program.first->Build(this->Internals->Context))
+    std::string source = vtkParticleShaders::Get(program.second);
+    if (scatter)
+    {
+      // after the #version line
+      source.insert(source.find('\n') + 1,
+        std::string("#define PR_LOCAL_REORDER ") + (this->CoalescedWrites ? "1\n" : "0\n"));
+      internals.BuiltCoalescedWrites = this->CoalescedWrites;
+    }
+    program.first->SetSource(source);
+    if (!program.first->Build(internals.Context))
     {
       vtkErrorMacro(<< "Could not build " << program.second << ".glsl.");
       return false;
@@ -290,6 +302,10 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
   {
     return true;
   }
+  if (!this->BuildPrograms()) // rebuilds the scatter stage when CoalescedWrites changed
+  {
+    return false;
+  }
 
   GLint previousProgram = 0;
   GLint previousBuffer = 0;
@@ -419,15 +435,12 @@ double vtkParticleDepthSort::GetLastSortGPUSeconds()
   {
     return 0.0;
   }
-  if (!timer.Ready())
+  // after glFinish the query results are available (bounded, in case a driver never says so)
+  for (int attempt = 0; attempt < 100 && !timer.Ready(); ++attempt)
   {
     glFinish();
-    while (!timer.Ready())
-    {
-      // after glFinish the query results are available; Ready() fetches them
-    }
   }
-  return timer.GetElapsedSeconds();
+  return timer.GetElapsedSeconds(); // 0 when still not ready
 }
 
 //------------------------------------------------------------------------------
@@ -460,6 +473,7 @@ void vtkParticleDepthSort::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KeyBuffer: " << this->Buffers[0] << "\n";
   os << indent << "IndexBuffer: " << this->Buffers[1] << "\n";
   os << indent << "SkipUniformDigits: " << this->SkipUniformDigits << "\n";
+  os << indent << "CoalescedWrites: " << this->CoalescedWrites << "\n";
   os << indent << "LastNumberOfPasses: " << this->LastNumberOfPasses << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
 }

@@ -1,6 +1,6 @@
 // vtkParticleDepthSort and vtkParticleComputeProgram: every sort is compared exactly with
 // std::stable_sort of (mapped key, index) on the CPU, indices and keys, with the skipping of
-// uniform digits on and off. Needs OpenGL 4.3: an unsupported context is a failure, not a skip.
+// uniform digits on and off and with coalesced and direct writes. Needs OpenGL 4.3: an unsupported context is a failure, not a skip.
 // No baseline image (the -V argument of the driver is ignored).
 #include "prTestUtilities.h"
 
@@ -144,7 +144,8 @@ void CheckResult(
                 << "\n";
     }
   }
-  const std::string mode = skip ? " (skipping)" : " (8 passes)";
+  const std::string mode = std::string(skip ? " (skipping" : " (8 passes") +
+    (sort->GetCoalescedWrites() ? ")" : ", direct writes)");
   Expect(badIndices == 0,
     name + mode + ": " + std::to_string(badIndices) + " indices differ from std::stable_sort");
   Expect(badKeys == 0, name + mode + ": " + std::to_string(badKeys) + " sorted keys differ");
@@ -194,7 +195,8 @@ void TimeSorts(vtkParticleDepthSort* sort, const std::string& name, const std::v
     const double wall = vtkTimerLog::GetUniversalTime() - start;
     if (r == 0)
     {
-      std::cout << name << (skip ? "" : ", skipping off") << ": wall " << wall * 1e3 << " ms, ";
+      std::cout << name << (skip ? "" : ", skipping off")
+                << (sort->GetCoalescedWrites() ? "" : ", direct writes") << ": wall " << wall * 1e3 << " ms, ";
     }
   }
   std::sort(seconds.begin(), seconds.end());
@@ -284,6 +286,53 @@ std::vector<float> WriteKeysWithShader(
   return keys;
 }
 
+// The index buffer drives a draw directly: glDrawElements(GL_POINTS) with it as the element
+// buffer, captured by transform feedback, must see gl_VertexID == index[i] for every i.
+void CheckDrawWithIndices(vtkParticleDepthSort* sort, std::size_t n)
+{
+  const char* source = "#version 430\n"
+                       "out uint vertexId;\n"
+                       "void main() { vertexId = uint(gl_VertexID); gl_Position = vec4(0.0); }\n";
+  GLuint shader = glCreateShader(GL_VERTEX_SHADER);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  const char* varyings[] = { "vertexId" };
+  glTransformFeedbackVaryings(program, 1, varyings, GL_INTERLEAVED_ATTRIBS);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  GLint linked = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &linked);
+  if (Expect(linked == GL_TRUE, "transform feedback program links"))
+  {
+    GLuint vao = 0, captured = 0;
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sort->GetIndexBuffer());
+    glGenBuffers(1, &captured);
+    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, captured);
+    glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, n * sizeof(std::uint32_t), nullptr, GL_STREAM_READ);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captured);
+    glUseProgram(program);
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBeginTransformFeedback(GL_POINTS);
+    glDrawElements(GL_POINTS, static_cast<GLsizei>(n), GL_UNSIGNED_INT, nullptr);
+    glEndTransformFeedback();
+    glDisable(GL_RASTERIZER_DISCARD);
+    glUseProgram(0);
+    glBindVertexArray(0);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+    const std::vector<std::uint32_t> drawn = ReadBuffer<std::uint32_t>(captured, n);
+    const std::vector<std::uint32_t> indices =
+      ReadBuffer<std::uint32_t>(sort->GetIndexBuffer(), n);
+    Expect(drawn == indices, "glDrawElements with the index buffer fetches the sorted indices");
+    glDeleteBuffers(1, &captured);
+    glDeleteVertexArrays(1, &vao);
+  }
+  glDeleteProgram(program);
+}
+
 // Dispatch(x) above the x limit is split into a 2D grid; the linear group id (as
 // prLinearGroupID() of Shaders/ComputeCommon.glsl) numbers the groups.
 void CheckDispatchSplit(vtkOpenGLRenderWindow* context)
@@ -358,14 +407,21 @@ int TestParticleDepthSort(int, char*[])
 
   vtkNew<vtkParticleDepthSort> sort;
   sort->SetCollectTimings(true);
-  for (bool skip : { true, false })
+  // (skipping, coalesced writes): the default, all 8 passes, direct writes
+  for (int configuration = 0; configuration < 3; ++configuration)
   {
+    const bool skip = configuration != 1;
+    sort->SetCoalescedWrites(configuration != 2);
     for (std::size_t n : { 0, 1, 2, 1023, 1024, 1025 })
     {
       SortAndCheck(context, sort, "random " + std::to_string(n), RandomKeys(n, 11 + n), skip);
     }
     const std::vector<float> hundredThousand = RandomKeys(100000, 5);
     SortAndCheck(context, sort, "random 1e5", hundredThousand, skip);
+    if (configuration == 0)
+    {
+      CheckDrawWithIndices(sort, hundredThousand.size());
+    }
     TimeSorts(sort, "1e5 random keys", hundredThousand, skip);
     SortAndCheck(context, sort, "all equal", std::vector<float>(5000, 3.5f), skip);
     SortAndCheck(context, sort, "all NaN",
@@ -390,7 +446,7 @@ int TestParticleDepthSort(int, char*[])
     const std::vector<float> million = RandomKeys(1000000, 1);
     SortAndCheck(context, sort, "random 1e6", million, skip);
     TimeSorts(sort, "1e6 random keys", million, skip);
-    if (skip)
+    if (configuration == 0)
     {
       const double start = vtkTimerLog::GetUniversalTime();
       std::vector<std::uint32_t> order(million.size());
@@ -408,7 +464,8 @@ int TestParticleDepthSort(int, char*[])
     SortAndCheck(context, sort, "random 3000 after 1e6", RandomKeys(3000, 2), skip);
     Expect(sort->GetCapacity() >= 1000000, "capacity kept after a smaller sort");
     // larger after smaller: growth keeps the buffer names
-    SortAndCheck(context, sort, "random 1.2e6 (growth)", RandomKeys(1200000, 3), skip);
+    SortAndCheck(context, sort, "random 1.2e6+ (growth)",
+      RandomKeys(1200000 + 100000 * configuration, 3), skip);
     Expect(sort->GetKeyBuffer() == keyBuffer && sort->GetIndexBuffer() == indexBuffer,
       "buffer names kept through growth");
   }
