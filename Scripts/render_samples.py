@@ -11,10 +11,11 @@ from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, Load
                              SaveScreenshot, Show, XMLPolyDataReader, Delete)
 
 SCENES = [
-    # file, colour array, direction from the focal point to the camera, zoom
-    ("lj_droplets.vtp", "type", (1.0, -1.6, 0.9), 2.2),
-    ("lj_film.vtp", "speed", (1.0, -1.8, 0.6), 1.4),
-    ("fcc_block.vtp", "type", (1.2, -1.5, 1.0), 1.1),
+    # file, colour array, direction from the focal point to the camera, zoom, translucent
+    ("lj_droplets.vtp", "type", (1.0, -1.6, 0.9), 2.2, False),
+    ("lj_droplets.vtp", "type", (1.0, -1.6, 0.9), 2.2, True),
+    ("lj_film.vtp", "speed", (1.0, -1.8, 0.6), 1.4, False),
+    ("fcc_block.vtp", "type", (1.2, -1.5, 1.0), 1.1, False),
 ]
 
 
@@ -30,7 +31,7 @@ def main():
     LoadPlugin(args.plugin, remote=False, ns=globals())
     os.makedirs(args.out, exist_ok=True)
     written = []
-    for name, color, direction, zoom in SCENES:
+    for name, color, direction, zoom, translucent in SCENES:
         path = os.path.join(args.data, name)
         if not os.path.exists(path):
             print("missing sample %s, skipped" % path, file=sys.stderr)
@@ -49,6 +50,13 @@ def main():
         display.UseRadiusArray = 1
         display.RadiusArray = ["POINTS", "radius"]
         display.Specular = 0.3
+        if translucent:
+            # emission-absorption glyphs: slow (liquid) atoms nearly clear, vapour opaque
+            display.UseOpacityArray = 1
+            display.OpacityArray = ["POINTS", "speed"]
+            display.OpacityArrayRange = [0.0, 3.0]
+            display.DensityModel = "Squared Distance"
+            display.HollowFraction = 0.4
         ColorBy(display, ("POINTS", color))
         lut = GetColorTransferFunction(color)
         lut.ApplyPreset("Jet" if color == "speed" else "Cool to Warm", True)
@@ -64,7 +72,8 @@ def main():
         view.ResetCamera()
         camera.Zoom(zoom)
         Render(view)
-        png = os.path.join(args.out, os.path.splitext(name)[0] + ".png")
+        png = os.path.join(args.out, os.path.splitext(name)[0] +
+                           ("_translucent" if translucent else "") + ".png")
         SaveScreenshot(png, view, ImageResolution=[width, height])
         written.append(png)
         Delete(view)
