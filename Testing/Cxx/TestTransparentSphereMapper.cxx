@@ -198,6 +198,18 @@ int TestTransparentSphereMapper(int argc, char* argv[])
   window->Render();
   ok &= prTest::Check(!opaqueMapper->HasTranslucentPolygonalGeometry(), "all opaque");
   ok &= prTest::Check(opaqueMapper->GetNumberOfSorts() == 0, "no sort when everything is opaque");
+  // ... and exactly the core's image
+  vtkNew<vtkUnsignedCharArray> opaqueImage;
+  window->GetRGBACharPixelData(0, 0, 399, 399, 1, opaqueImage);
+  vtkNew<vtkParticleSphereMapper> coreMapper;
+  coreMapper->SetInputData(particles);
+  coreMapper->SetRadius(0.42);
+  actor->SetMapper(coreMapper);
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> coreImage;
+  window->GetRGBACharPixelData(0, 0, 399, 399, 1, coreImage);
+  ok &= prTest::Check(MaxPixelDifference(opaqueImage, coreImage) == 0,
+    "opaque particles are drawn exactly as by vtkParticleSphereMapper");
 
   return (ok && baseline) ? EXIT_SUCCESS : EXIT_FAILURE;
 }
