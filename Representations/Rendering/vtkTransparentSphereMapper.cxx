@@ -111,6 +111,7 @@ public:
   vtkOpenGLRenderTimer SortTimer;
   vtkOpenGLRenderTimer DrawTimer;
   bool SortTimed = false;
+  bool TimingsPending = false;
 };
 
 //------------------------------------------------------------------------------
@@ -700,12 +701,58 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
   if (this->CollectTimings)
   {
     internals.TotalTimer.Stop();
-    const double total = internals.TotalTimer.GetElapsedSeconds();
-    this->LastSortGPUSeconds = internals.SortTimed ? internals.SortTimer.GetElapsedSeconds() : 0.0;
-    this->LastTranslucentDrawGPUSeconds = internals.DrawTimer.GetElapsedSeconds();
-    this->LastCompositeGPUSeconds =
-      std::max(0.0, total - this->LastSortGPUSeconds - this->LastTranslucentDrawGPUSeconds);
+    // the results are read when asked for (GetLast...GPUSeconds): reading them here would
+    // return 0 while the GPU is still working
+    internals.TimingsPending = true;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::FetchTimings()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.TimingsPending)
+  {
+    return;
+  }
+  internals.TimingsPending = false;
+  auto seconds = [](vtkOpenGLRenderTimer& timer) -> double {
+    if (!timer.Stopped())
+    {
+      return 0.0;
+    }
+    while (!timer.Ready())
+    {
+      // the timer queries complete with the frame; wait for them (benchmarks only)
+    }
+    return timer.GetElapsedSeconds();
+  };
+  const double total = seconds(internals.TotalTimer);
+  this->LastSortGPUSeconds = internals.SortTimed ? seconds(internals.SortTimer) : 0.0;
+  this->LastTranslucentDrawGPUSeconds = seconds(internals.DrawTimer);
+  this->LastCompositeGPUSeconds =
+    std::max(0.0, total - this->LastSortGPUSeconds - this->LastTranslucentDrawGPUSeconds);
+}
+
+//------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::GetLastSortGPUSeconds()
+{
+  this->FetchTimings();
+  return this->LastSortGPUSeconds;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::GetLastTranslucentDrawGPUSeconds()
+{
+  this->FetchTimings();
+  return this->LastTranslucentDrawGPUSeconds;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::GetLastCompositeGPUSeconds()
+{
+  this->FetchTimings();
+  return this->LastCompositeGPUSeconds;
 }
 
 //------------------------------------------------------------------------------
