@@ -12,33 +12,13 @@
 //                    [--frames 10] [--size 1024x768] [--csv out.csv] [--label text]
 //                    [--radius-array radius] [--color-array speed] [--screenshot DIR]
 // The CSV gets one row per mapper (header written when the file is new).
-#include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkDataArray.h"
-#include "vtkLookupTable.h"
-#include "vtkNew.h"
-#include "vtkOpenGLRenderTimer.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLSphereMapper.h"
-#include "vtkParticleSphereMapper.h"
-#include "vtkPointData.h"
-#include "vtkPointGaussianMapper.h"
-#include "vtkPolyData.h"
-#include "vtkProperty.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkTimerLog.h"
-#include "vtkPNGWriter.h"
-#include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
+#include "prBenchmarkCommon.h"
 
-#include <algorithm>
+#include "vtkActor.h"
+#include "vtkParticleSphereMapper.h"
+
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
-#include <iostream>
-#include <string>
-#include <vector>
 
 namespace
 {
@@ -66,17 +46,6 @@ struct Result
   double MedianDrawGPU = -1;
 };
 
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 bool Parse(int argc, char* argv[], Options& o)
 {
   for (int i = 1; i < argc; ++i)
@@ -91,8 +60,7 @@ bool Parse(int argc, char* argv[], Options& o)
       o.Frames = std::atoi(next().c_str());
     else if (a == "--size")
     {
-      const std::string s = next();
-      if (std::sscanf(s.c_str(), "%dx%d", &o.Width, &o.Height) != 2)
+      if (!prBench::ParseSize(next(), o.Width, o.Height))
         return false;
     }
     else if (a == "--csv")
@@ -118,15 +86,8 @@ bool Parse(int argc, char* argv[], Options& o)
   return !o.Data.empty() && o.Frames > 0;
 }
 
-// ParaView's Point Gaussian "Sphere" look: a disc with a radial darkening, no ray casting.
-const char* SphereSplat = "//VTK::Color::Impl\n"
-                          "float r2 = dot(offsetVCVSOutput.xy, offsetVCVSOutput.xy);\n"
-                          "if (r2 > 1.0) { discard; }\n"
-                          "ambientColor *= 1.0 - r2;\n"
-                          "diffuseColor *= 1.0 - r2;\n";
-
-Result Run(const std::string& kind, vtkPolyData* data, const Options& o, vtkLookupTable* lut,
-  const double range[2], vtkRenderWindow* window)
+Result Run(const std::string& kind, vtkPolyData* data, const Options& o,
+  const prBench::Coloring& coloring, vtkRenderWindow* window)
 {
   Result result;
   result.Mapper = kind;
@@ -143,18 +104,11 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o, vtkLook
   }
   else if (kind == "vtksphere")
   {
-    vtkNew<vtkOpenGLSphereMapper> m;
-    m->SetScaleArray(o.RadiusArray.c_str());
-    mapper = m;
+    mapper = prBench::MakeVTKSphereMapper(o.RadiusArray);
   }
   else if (kind == "pointgaussian")
   {
-    vtkNew<vtkPointGaussianMapper> m;
-    m->SetScaleArray(o.RadiusArray.c_str());
-    m->SetScaleFactor(1.0);
-    m->SetEmissive(0);
-    m->SetSplatShaderCode(SphereSplat);
-    mapper = m;
+    mapper = prBench::MakePointGaussianMapper(o.RadiusArray);
   }
   else
   {
@@ -162,24 +116,16 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o, vtkLook
     std::exit(2);
   }
   mapper->SetInputData(data);
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarModeToUsePointFieldData();
-  mapper->SelectColorArray(o.ColorArray.c_str());
-  mapper->SetScalarRange(range[0], range[1]);
-  mapper->ScalarVisibilityOn();
+  coloring.Apply(mapper);
 
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetSpecular(0.3);
-  actor->GetProperty()->SetSpecularPower(20);
+  prBench::SetupMaterial(actor->GetProperty());
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
-  renderer->SetBackground(0.1, 0.1, 0.15);
+  prBench::SetupRenderer(renderer);
   window->AddRenderer(renderer);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Elevation(20);
-  renderer->GetActiveCamera()->Zoom(1.3);
-  renderer->ResetCameraClippingRange();
+  prBench::SetupCamera(renderer);
 
   double t = vtkTimerLog::GetUniversalTime();
   window->Render();
@@ -194,18 +140,10 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o, vtkLook
   vtkOpenGLRenderTimer timer;
   for (int f = 0; f < o.Frames; ++f)
   {
-    renderer->GetActiveCamera()->Azimuth(360.0 / o.Frames / 4.0);
-    renderer->ResetCameraClippingRange();
-    t = vtkTimerLog::GetUniversalTime();
-    window->MakeCurrent();
-    timer.Reset();
-    timer.Start();
-    window->Render();
-    window->MakeCurrent();
-    timer.Stop();
-    window->WaitForCompletion();
-    frames.push_back(vtkTimerLog::GetUniversalTime() - t);
-    gpu.push_back(timer.GetElapsedSeconds());
+    prBench::OrbitStep(renderer, o.Frames);
+    const prBench::FrameTime frame = prBench::TimeFrame(window, timer);
+    frames.push_back(frame.Wall);
+    gpu.push_back(frame.GPU);
     if (particleMapper)
     {
       draw.push_back(particleMapper->GetLastDrawGPUSeconds());
@@ -214,25 +152,18 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o, vtkLook
   timer.ReleaseGraphicsResources();
   if (!o.ScreenshotDir.empty())
   {
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
     const std::string file = o.ScreenshotDir + "/" + o.Label + (o.Label.empty() ? "" : "_") +
       std::to_string(data->GetNumberOfPoints()) + "_" + kind + ".png";
-    writer->SetFileName(file.c_str());
-    writer->Write();
+    prBench::WriteScreenshot(window, file);
   }
   renderer->RemoveAllViewProps();
   mapper->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
-  result.MedianFrame = Median(frames);
-  result.MedianGPU = Median(gpu);
+  result.MedianFrame = prBench::Median(frames);
+  result.MedianGPU = prBench::Median(gpu);
   if (particleMapper)
   {
-    result.MedianDrawGPU = Median(draw);
+    result.MedianDrawGPU = prBench::Median(draw);
   }
   return result;
 }
@@ -247,24 +178,12 @@ int main(int argc, char* argv[])
                  "pointgaussian ...] [--frames N] [--size WxH] [--csv out.csv] [--label text]\n";
     return 2;
   }
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(o.Data.c_str());
-  reader->Update();
-  vtkPolyData* data = reader->GetOutput();
-  if (!data || data->GetNumberOfPoints() == 0)
+  vtkSmartPointer<vtkPolyData> data = prBench::ReadParticles(o.Data);
+  if (!data)
   {
-    std::cerr << "cannot read particles from " << o.Data << "\n";
     return 1;
   }
-  vtkDataArray* color = data->GetPointData()->GetArray(o.ColorArray.c_str());
-  double range[2] = { 0, 1 };
-  if (color)
-  {
-    color->GetRange(range);
-  }
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0);
-  lut->Build();
+  const prBench::Coloring coloring(data, o.ColorArray);
 
   // one window for all mappers: the same context, size and default framebuffer
   vtkNew<vtkRenderWindow> window;
@@ -273,7 +192,7 @@ int main(int argc, char* argv[])
   std::vector<Result> results;
   for (const std::string& kind : o.Mappers)
   {
-    results.push_back(Run(kind, data, o, lut, range, window));
+    results.push_back(Run(kind, data, o, coloring, window));
   }
 
   const bool newFile = !o.Csv.empty() && !std::ifstream(o.Csv).good();
