@@ -76,6 +76,37 @@ def main():
     if not os.path.exists(args.baseline) or result != vtkTesting.PASSED:
         print("FAIL: image differs from the baseline (see %s)" % args.temp)
         return 1
+
+    # The transparent mapper from plain VTK Python: the same droplets with the maximum opacity
+    # from the speed, composited by the mapper (one sort), visibly different from the opaque image
+    # but not the background.
+    from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+
+    opaque = vtkUnsignedCharArray()
+    window.GetRGBACharPixelData(0, 0, 499, 399, 1, opaque)
+    translucent_mapper = particlerendering.vtkTransparentSphereMapper()
+    translucent_mapper.SetInputConnection(reader.GetOutputPort())
+    translucent_mapper.SetRadiusArrayName("radius")
+    translucent_mapper.SetScalarModeToUsePointFieldData()
+    translucent_mapper.SelectColorArray("type")
+    translucent_mapper.SetLookupTable(lut)
+    translucent_mapper.UseLookupTableScalarRangeOn()
+    translucent_mapper.SetOpacityArrayName("speed")
+    translucent_mapper.SetOpacityRange(0.0, 3.0)
+    translucent_mapper.SetDensityModelToSquaredDistance()
+    translucent_mapper.SetHollowFraction(0.4)
+    actor.SetMapper(translucent_mapper)
+    window.Render()
+    translucent = vtkUnsignedCharArray()
+    window.GetRGBACharPixelData(0, 0, 499, 399, 1, translucent)
+    changed = sum(1 for i in range(0, translucent.GetNumberOfValues(), 4 * 7)
+                  if translucent.GetValue(i) != opaque.GetValue(i))
+    print("transparent mapper: %d sort(s), %d of %d sampled pixels differ from the opaque image"
+          % (translucent_mapper.GetNumberOfSorts(), changed,
+             translucent.GetNumberOfValues() // (4 * 7)))
+    if translucent_mapper.GetNumberOfSorts() != 1 or changed < 1000:
+        print("FAIL: the transparent mapper did not composite translucent particles")
+        return 1
     return 0
 
 
