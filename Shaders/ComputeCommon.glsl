@@ -16,3 +16,7 @@ uint prLinearGroupID()
 {
   return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
 }
+
+// The linear index of this invocation for one-dimensional work (a macro: gl_WorkGroupSize is only
+// known after the shader's layout declaration).
+#define PR_INVOCATION_INDEX (prLinearGroupID() * gl_WorkGroupSize.x + gl_LocalInvocationID.x)

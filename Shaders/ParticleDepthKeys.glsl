@@ -28,7 +28,7 @@ uniform int parallelProjection;
 
 void main()
 {
-  uint i = prLinearGroupID() * 256u + gl_LocalInvocationID.x;
+  uint i = PR_INVOCATION_INDEX;
   if (i >= count)
   {
     return;

@@ -1,0 +1,295 @@
+#include "vtkParticleDensityVolume.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleShaders.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkParticleDensityVolume);
+
+namespace
+{
+// fixed point of the GPU accumulation: 2^-20 voxel volumes
+const double FixedPointScale = 1048576.0;
+}
+
+//------------------------------------------------------------------------------
+class vtkParticleDensityVolume::vtkInternals
+{
+public:
+  vtkNew<vtkParticleComputeProgram> Splat;
+  vtkNew<vtkParticleComputeProgram> Convert;
+  unsigned int Counts = 0;
+  unsigned int VolumeBuffer = 0;
+  size_t Capacity = 0; // voxels
+};
+
+//------------------------------------------------------------------------------
+vtkParticleDensityVolume::vtkParticleDensityVolume()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticleDensityVolume::~vtkParticleDensityVolume()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::SetUpGrid(const double bounds[6], double meanRadius)
+{
+  if (!(meanRadius > 0.0) || !std::isfinite(meanRadius) || !vtkMath::AreBoundsInitialized(bounds))
+  {
+    vtkErrorMacro(<< "Cannot set up a density volume for mean radius " << meanRadius
+                  << " and bounds " << bounds[0] << " " << bounds[1] << " " << bounds[2] << " "
+                  << bounds[3] << " " << bounds[4] << " " << bounds[5] << ".");
+    this->Dimensions[0] = this->Dimensions[1] = this->Dimensions[2] = 0;
+    return false;
+  }
+  double extent[3];
+  double longest = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    extent[k] = std::max(0.0, bounds[2 * k + 1] - bounds[2 * k]);
+    longest = std::max(longest, extent[k]);
+  }
+  double edge = 4.0 * meanRadius;
+  if (this->Resolution > 0 && longest > 0.0)
+  {
+    edge = longest / this->Resolution;
+  }
+  // no axis beyond MaximumResolution: grow the (cubic) voxels instead
+  if (longest / edge > this->MaximumResolution)
+  {
+    vtkWarningMacro(<< "A density volume of " << std::ceil(longest / edge)
+                    << " voxels along the longest axis exceeds MaximumResolution "
+                    << this->MaximumResolution << ": using " << this->MaximumResolution << ".");
+    edge = longest / this->MaximumResolution;
+  }
+  this->VoxelSize = edge;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Dimensions[k] = std::max(1,
+      std::min(this->MaximumResolution, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
+    const double centre = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+    this->Origin[k] = centre - 0.5 * this->Dimensions[k] * edge;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArray* radii)
+{
+  const vtkIdType voxels =
+    static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  if (voxels <= 0 || !positions || !radii ||
+    radii->GetNumberOfTuples() != positions->GetNumberOfTuples())
+  {
+    vtkErrorMacro(<< "No grid (SetUpGrid) or mismatched positions and radii.");
+    this->Volume.clear();
+    return false;
+  }
+  const vtkIdType n = positions->GetNumberOfTuples();
+  const float* r = radii->GetPointer(0);
+  const double unit = 4.0 / 3.0 * vtkMath::Pi() / std::pow(this->VoxelSize, 3);
+  const int* dims = this->Dimensions;
+  const double* origin = this->Origin;
+  const double inverseEdge = 1.0 / this->VoxelSize;
+
+  // each thread into its own partial volume (no races), then a sum over the voxels
+  vtkSMPThreadLocal<std::vector<float>> partial;
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<float>& local = partial.Local();
+    if (local.empty())
+    {
+      local.assign(voxels, 0.0f);
+    }
+    double p[3];
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      if (!(r[i] > 0.0f))
+      {
+        continue;
+      }
+      positions->GetTuple(i, p);
+      int v[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        v[k] = std::min(dims[k] - 1,
+          std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) * inverseEdge))));
+      }
+      const double radius = r[i];
+      local[v[0] + dims[0] * (v[1] + static_cast<vtkIdType>(dims[1]) * v[2])] +=
+        static_cast<float>(unit * radius * radius * radius);
+    }
+  });
+  this->Volume.assign(voxels, 0.0f);
+  float* out = this->Volume.data();
+  std::vector<const float*> parts;
+  for (auto& local : partial)
+  {
+    if (!local.empty())
+    {
+      parts.push_back(local.data());
+    }
+  }
+  const double g = this->DensityFactor;
+  vtkSMPTools::For(0, voxels, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double sum = 0.0;
+      for (const float* part : parts)
+      {
+        sum += part[i];
+      }
+      out[i] = static_cast<float>(std::min(1.0, g * sum));
+    }
+  });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
+  unsigned int positionBuffer, unsigned int positionStride, const double shift[3],
+  const double scale[3], unsigned int radiusBuffer, vtkIdType count)
+{
+  vtkInternals& internals = *this->Internals;
+  const size_t voxels =
+    static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  std::string why;
+  if (voxels == 0 || !vtkParticleComputeProgram::IsSupported(context, &why))
+  {
+    vtkErrorMacro(<< (voxels == 0 ? std::string("No grid (SetUpGrid).") : why));
+    return false;
+  }
+  const std::string source = vtkParticleShaders::Get("DensityVolume");
+  const size_t afterVersion = source.find('\n') + 1;
+  internals.Splat->SetSource(
+    source.substr(0, afterVersion) + "#define PR_DENSITY_SPLAT\n" + source.substr(afterVersion));
+  internals.Convert->SetSource(source);
+  if (!internals.Splat->Build(context) || !internals.Convert->Build(context))
+  {
+    return false;
+  }
+  if (internals.Capacity < voxels)
+  {
+    if (!internals.Counts)
+    {
+      glGenBuffers(1, &internals.Counts);
+      glGenBuffers(1, &internals.VolumeBuffer);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Counts);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, voxels * sizeof(GLuint), nullptr, GL_DYNAMIC_COPY);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.VolumeBuffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, voxels * sizeof(float), nullptr, GL_DYNAMIC_COPY);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    internals.Capacity = voxels;
+  }
+  const GLuint zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Counts);
+  glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0, voxels * sizeof(GLuint),
+    GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+
+  // voxel coordinate = (p * scale + shift - origin) / edge, folded in double
+  float toVoxelScale[3];
+  float toVoxelOffset[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    toVoxelScale[k] = static_cast<float>(scale[k] / this->VoxelSize);
+    toVoxelOffset[k] = static_cast<float>((shift[k] - this->Origin[k]) / this->VoxelSize);
+  }
+  vtkParticleComputeProgram* splat = internals.Splat;
+  splat->Use();
+  splat->SetUniformui("count", static_cast<unsigned int>(count));
+  splat->SetUniformui("positionStride", positionStride);
+  splat->SetUniform3f("toVoxelScale", toVoxelScale[0], toVoxelScale[1], toVoxelScale[2]);
+  splat->SetUniform3f("toVoxelOffset", toVoxelOffset[0], toVoxelOffset[1], toVoxelOffset[2]);
+  glUniform3i(splat->GetUniformLocation("dimensions"), this->Dimensions[0], this->Dimensions[1],
+    this->Dimensions[2]);
+  splat->SetUniformf("unitContribution",
+    static_cast<float>(4.0 / 3.0 * vtkMath::Pi() / std::pow(this->VoxelSize, 3) * FixedPointScale));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positionBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, radiusBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, internals.Counts);
+  if (count > 0)
+  {
+    splat->Dispatch(static_cast<unsigned int>((count + 255) / 256));
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  vtkParticleComputeProgram* convert = internals.Convert;
+  convert->Use();
+  convert->SetUniformui("voxelCount", static_cast<unsigned int>(voxels));
+  convert->SetUniformf("toDensity", static_cast<float>(this->DensityFactor / FixedPointScale));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, internals.VolumeBuffer);
+  convert->Dispatch(static_cast<unsigned int>((voxels + 255) / 256));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_TEXTURE_UPDATE_BARRIER_BIT);
+  for (GLuint binding = 0; binding < 4; ++binding)
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+  }
+  glUseProgram(0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkParticleDensityVolume::GetVolumeBuffer()
+{
+  return this->Internals->VolumeBuffer;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::ReadVolumeBuffer()
+{
+  const size_t voxels =
+    static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  if (!this->Internals->VolumeBuffer || voxels > this->Internals->Capacity)
+  {
+    return false;
+  }
+  this->Volume.resize(voxels);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Internals->VolumeBuffer);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, voxels * sizeof(float), this->Volume.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDensityVolume::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Splat->ReleaseGraphicsResources(window);
+  internals.Convert->ReleaseGraphicsResources(window);
+  if (internals.Counts)
+  {
+    glDeleteBuffers(1, &internals.Counts);
+    glDeleteBuffers(1, &internals.VolumeBuffer);
+    internals.Counts = internals.VolumeBuffer = 0;
+  }
+  internals.Capacity = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDensityVolume::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "MaximumResolution: " << this->MaximumResolution << "\n";
+  os << indent << "DensityFactor: " << this->DensityFactor << "\n";
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
+     << this->Dimensions[2] << "\n";
+  os << indent << "VoxelSize: " << this->VoxelSize << "\n";
+}

@@ -1,0 +1,139 @@
+/**
+ * @class   vtkParticleDensityVolume
+ * @brief   coarse particle density volume of Grottel et al. 2012 (Eq. 5), on the CPU or the GPU
+ *
+ * vtkParticleDensityVolume aggregates particles into a coarse regular volume whose voxel value
+ * is the volume of the spheres whose centre lies in the voxel, relative to the voxel's volume,
+ * times a factor g and clamped to [0, 1] (Grottel, Krone, Scharnowski, Ertl 2012,
+ * "Object-Space Ambient Occlusion for Molecular Dynamics", Sec. 4, Eq. 5):
+ *
+ *   v = min(1, g * sum_{p in voxel} (4/3) pi r_p^3 / v_size^3).
+ *
+ * As in the paper a particle contributes entirely to the voxel of its centre (the trilinear
+ * filtering of the fetch smooths this). g = 1 by default; 1/0.74 makes a close-packed crystal
+ * exactly opaque.
+ *
+ * Geometry: cubic voxels over the bounding box of the particle centres. The automatic resolution
+ * (Resolution (0, 0, 0), the default) uses voxels of edge 4 mean radii, i.e. two particle
+ * diameters, so that the neighbourhood a single trilinear fetch sees (about half a voxel around
+ * the fetch point, paper Sec. 3) is the shell of nearest neighbours; each axis gets
+ * ceil(extent / edge) voxels, at least 1. A user resolution sets the number of voxels of the
+ * longest axis; the other axes get as many cubic voxels as they need. Either way no axis gets
+ * more than MaximumResolution voxels (the edge grows instead, with a warning) -- the GPU's 3D
+ * texture limit is checked by the user of the volume. Degenerate boxes (all particles in a
+ * plane, on a line or at one point) get one voxel across each flat axis, centred on the data.
+ *
+ * Generation:
+ * - ComputeOnCPU(): vtkSMPTools over the particles, each thread into its own partial volume,
+ *   then a parallel sum over the voxels (the paper's multi-core scheme, without races).
+ * - ComputeOnGPU(): one compute-shader invocation per particle adds its volume to its voxel
+ *   with an integer atomicAdd in fixed point (2^-20 of a voxel volume; float atomics are not in
+ *   core OpenGL), then a second pass converts, scales and clamps. It reads the positions and
+ *   radii straight from a mapper's vertex buffers (after VTK's VBO shift/scale). Needs
+ *   OpenGL 4.3.
+ * Both give the same volume up to the fixed-point rounding (tested).
+ *
+ * @sa vtkParticleSphereMapper
+ */
+#ifndef vtkParticleDensityVolume_h
+#define vtkParticleDensityVolume_h
+
+#include "vtkObject.h"
+#include "vtkParticleRenderingModule.h" // for export macro
+
+#include <vector> // for std::vector
+
+class vtkDataArray;
+class vtkFloatArray;
+class vtkOpenGLRenderWindow;
+class vtkWindow;
+
+class VTKPARTICLERENDERING_EXPORT vtkParticleDensityVolume : public vtkObject
+{
+public:
+  static vtkParticleDensityVolume* New();
+  vtkTypeMacro(vtkParticleDensityVolume, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of voxels along the longest axis of the bounding box; 0 (default): automatic (see the
+   * class description).
+   */
+  vtkSetClampMacro(Resolution, int, 0, 4096);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Largest number of voxels along any axis. Default 256.
+   */
+  vtkSetClampMacro(MaximumResolution, int, 1, 4096);
+  vtkGetMacro(MaximumResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * The factor g of the density (paper Sec. 4). Default 1.
+   */
+  vtkSetClampMacro(DensityFactor, double, 0.0, 1e6);
+  vtkGetMacro(DensityFactor, double);
+  ///@}
+
+  /**
+   * Set up the grid for particles with these centre bounds and mean radius: dimensions, origin
+   * and cubic voxel edge (GetDimensions, GetOrigin, GetVoxelSize). Returns false for invalid
+   * bounds or a mean radius <= 0.
+   */
+  bool SetUpGrid(const double centerBounds[6], double meanRadius);
+
+  vtkGetVector3Macro(Dimensions, int);
+  vtkGetVector3Macro(Origin, double);
+  vtkGetMacro(VoxelSize, double);
+
+  /**
+   * The density volume on the CPU from positions (3 components, any type) and radii (0 or less:
+   * skipped), for the grid of the last SetUpGrid(). The result, x fastest, is in GetVolume().
+   */
+  bool ComputeOnCPU(vtkDataArray* positions, vtkFloatArray* radii);
+
+  /**
+   * The same on the GPU, from buffer objects holding float positions (positionStride floats per
+   * particle, transformed by p * scale + shift per component to the grid's coordinates, e.g.
+   * undoing VTK's VBO shift/scale) and float radii. The result stays in GetVolumeBuffer() (floats,
+   * x fastest); ReadVolumeBuffer() copies it to GetVolume() (for tests).
+   */
+  bool ComputeOnGPU(vtkOpenGLRenderWindow* context, unsigned int positionBuffer,
+    unsigned int positionStride, const double shift[3], const double scale[3],
+    unsigned int radiusBuffer, vtkIdType count);
+  unsigned int GetVolumeBuffer();
+  bool ReadVolumeBuffer();
+
+  /**
+   * The last volume computed on the CPU or read back from the GPU.
+   */
+  const std::vector<float>& GetVolume() const { return this->Volume; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkParticleDensityVolume();
+  ~vtkParticleDensityVolume() override;
+
+  int Resolution = 0;
+  int MaximumResolution = 256;
+  double DensityFactor = 1.0;
+  int Dimensions[3] = { 0, 0, 0 };
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double VoxelSize = 0.0;
+  std::vector<float> Volume;
+
+private:
+  vtkParticleDensityVolume(const vtkParticleDensityVolume&) = delete;
+  void operator=(const vtkParticleDensityVolume&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif

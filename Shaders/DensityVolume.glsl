@@ -1,0 +1,69 @@
+#version 430
+//=========================================================================
+// DensityVolume.glsl -- compute stages of vtkParticleDensityVolume (Grottel et
+// al. 2012, Eq. 5). PR_DENSITY_SPLAT: one invocation per particle adds the
+// sphere's volume, in fixed point (2^-20 voxel volumes), to the voxel of its
+// centre with an integer atomicAdd (float atomics are not core OpenGL).
+// Otherwise: one invocation per voxel converts to the density, scaled by g and
+// clamped to [0, 1].
+//=========================================================================
+layout(local_size_x = 256) in;
+
+//PR::Include ComputeCommon
+
+layout(std430, binding = 2) buffer prCounts { uint counts[]; };
+
+#ifdef PR_DENSITY_SPLAT
+layout(std430, binding = 0) readonly buffer prPositions { float positions[]; };
+layout(std430, binding = 1) readonly buffer prRadii { float radii[]; };
+
+uniform uint count;
+uniform uint positionStride;
+// voxel coordinate of a buffer position p: p * toVoxelScale + toVoxelOffset (from double)
+uniform vec3 toVoxelScale;
+uniform vec3 toVoxelOffset;
+uniform ivec3 dimensions;
+// fixed-point volume of a sphere of radius 1, relative to a voxel: 4/3 pi / edge^3 * 2^20
+uniform float unitContribution;
+// no voxel needs more than this (the density is clamped at 1 anyway): no overflow
+const uint prCountCap = 1u << 26;
+
+void main()
+{
+  uint i = PR_INVOCATION_INDEX;
+  if (i >= count)
+  {
+    return;
+  }
+  float r = radii[i];
+  if (!(r > 0.0))
+  {
+    return;
+  }
+  uint j = i * positionStride;
+  vec3 v = vec3(positions[j], positions[j + 1u], positions[j + 2u]) * toVoxelScale + toVoxelOffset;
+  ivec3 voxel = clamp(ivec3(floor(v)), ivec3(0), dimensions - ivec3(1));
+  uint index = uint(voxel.x + dimensions.x * (voxel.y + dimensions.y * voxel.z));
+  if (counts[index] >= prCountCap)
+  {
+    return;
+  }
+  atomicAdd(counts[index], uint(r * r * r * unitContribution + 0.5));
+}
+#else
+layout(std430, binding = 3) writeonly buffer prVolume { float volume[]; };
+
+uniform uint voxelCount;
+// g / 2^20
+uniform float toDensity;
+
+void main()
+{
+  uint i = PR_INVOCATION_INDEX;
+  if (i >= voxelCount)
+  {
+    return;
+  }
+  volume[i] = min(1.0, float(counts[i]) * toDensity);
+}
+#endif
