@@ -1,0 +1,266 @@
+#include "vtkDensityVolumeAOPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkParticleDensityVolume.h"
+#include "vtkParticleShaders.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkPolyData.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+vtkStandardNewMacro(vtkDensityVolumeAOPass);
+
+//------------------------------------------------------------------------------
+class vtkDensityVolumeAOPass::vtkInternals
+{
+public:
+  vtkNew<vtkParticleDensityVolume> Volume;
+  vtkNew<vtkTextureObject> Texture;
+  // what the volume was built from
+  std::vector<double> BuiltState;
+  bool TextureValid = false;
+  // the renderer being drawn (between PreRender and PostRender)
+  vtkRenderer* Renderer = nullptr;
+};
+
+//------------------------------------------------------------------------------
+vtkDensityVolumeAOPass::vtkDensityVolumeAOPass()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkDensityVolumeAOPass::~vtkDensityVolumeAOPass()
+{
+  this->SetDelegatePass(nullptr);
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkDensityVolumeAOPass, DelegatePass, vtkRenderPass);
+
+//------------------------------------------------------------------------------
+vtkParticleDensityVolume* vtkDensityVolumeAOPass::GetDensityVolume()
+{
+  return this->Internals->Volume;
+}
+
+//------------------------------------------------------------------------------
+void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
+{
+  vtkInternals& internals = *this->Internals;
+  // the particle props and what their volume depends on
+  std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> particles;
+  std::vector<double> state;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    vtkParticleSphereMapper* mapper =
+      actor ? vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+    if (!mapper || !mapper->GetInput() || !actor->GetVisibility())
+    {
+      continue;
+    }
+    particles.emplace_back(actor, mapper);
+    state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(mapper)));
+    state.push_back(static_cast<double>(mapper->GetParticleGeometryTime()));
+    state.push_back(mapper->GetRadiusScaleVC(actor));
+    vtkMatrix4x4* m = actor->GetMatrix();
+    state.insert(state.end(), m->GetData(), m->GetData() + 16);
+  }
+  state.push_back(static_cast<double>(internals.Volume->GetMTime()));
+  if (state == internals.BuiltState && internals.TextureValid)
+  {
+    return;
+  }
+  internals.BuiltState = state;
+  internals.TextureValid = false;
+
+  // all particles in world coordinates
+  vtkIdType total = 0;
+  for (auto& item : particles)
+  {
+    total += item.second->GetParticleRadii()->GetNumberOfTuples();
+  }
+  vtkNew<vtkFloatArray> positions;
+  positions->SetNumberOfComponents(3);
+  positions->SetNumberOfTuples(total);
+  vtkNew<vtkFloatArray> radii;
+  radii->SetNumberOfTuples(total);
+  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double radiusSum = 0.0;
+  vtkIdType valid = 0;
+  vtkIdType next = 0;
+  for (auto& item : particles)
+  {
+    vtkFloatArray* r = item.second->GetParticleRadii();
+    vtkPolyData* input = item.second->GetInput();
+    const double scale = item.second->GetRadiusScaleVC(item.first);
+    vtkMatrix4x4* m = item.first->GetMatrix();
+    for (vtkIdType i = 0; i < r->GetNumberOfTuples(); ++i, ++next)
+    {
+      const double radius = r->GetValue(i) * scale;
+      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+      if (radius > 0.0)
+      {
+        input->GetPoint(i, p);
+        m->MultiplyPoint(p, p);
+        for (int k = 0; k < 3; ++k)
+        {
+          bounds[2 * k] = std::min(bounds[2 * k], p[k]);
+          bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
+        }
+        radiusSum += radius;
+        ++valid;
+      }
+      positions->SetTuple(next, p);
+      radii->SetValue(next, static_cast<float>(radius > 0.0 ? radius : 0.0));
+    }
+  }
+  if (valid == 0 || !internals.Volume->SetUpGrid(bounds, radiusSum / valid) ||
+    !internals.Volume->ComputeOnCPU(positions, radii))
+  {
+    return; // no particles: no occlusion
+  }
+  const int* dims = internals.Volume->GetDimensions();
+  vtkTextureObject* texture = internals.Texture;
+  texture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  // outside the volume there is nothing: density 0
+  texture->SetWrapS(vtkTextureObject::ClampToBorder);
+  texture->SetWrapT(vtkTextureObject::ClampToBorder);
+  texture->SetWrapR(vtkTextureObject::ClampToBorder);
+  texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
+  if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT,
+        const_cast<float*>(internals.Volume->GetVolume().data())))
+  {
+    vtkErrorMacro(<< "Cannot create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " density texture: ambient occlusion is off.");
+    return;
+  }
+  internals.TextureValid = true;
+  ++this->NumberOfVolumeBuilds;
+}
+
+//------------------------------------------------------------------------------
+void vtkDensityVolumeAOPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass: nothing is rendered.");
+    return;
+  }
+  this->UpdateVolume(s);
+  vtkInternals& internals = *this->Internals;
+  if (internals.TextureValid)
+  {
+    internals.Texture->Activate();
+    internals.Renderer = s->GetRenderer();
+    this->PreRender(s);
+  }
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  if (internals.TextureValid)
+  {
+    this->PostRender(s);
+    internals.Texture->Deactivate();
+    internals.Renderer = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (!vtkParticleSphereMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
+  vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::Sphere::Dec",
+    "uniform sampler3D prDensityVolume;\n"
+    "uniform mat4 prViewToVolume;\n"
+    "uniform float prFetchDistance;\n"
+    "//PR::Sphere::Dec");
+  // Eq. 4: A = 1 - D(p + eps n), the density fetched with trilinear filtering
+  vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::AmbientOcclusion::Impl",
+    "vec3 prFetchVolume = (prViewToVolume *\n"
+    "    vec4(vertexVC.xyz + prFetchDistance * normalVCVSOutput, 1.0)).xyz;\n"
+    "  prAmbientOcclusion = 1.0 - texture(prDensityVolume, prFetchVolume).r;\n"
+    "  //PR::AmbientOcclusion::Impl");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDensityVolumeAOPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!vtkParticleSphereMapper::SafeDownCast(mapper) || !internals.TextureValid ||
+    !program->IsUniformUsed("prDensityVolume"))
+  {
+    return true;
+  }
+  vtkCamera* camera = internals.Renderer ? internals.Renderer->GetActiveCamera() : nullptr;
+  if (!camera)
+  {
+    return true;
+  }
+  // view -> world -> volume texture coordinates, in double
+  vtkParticleDensityVolume* volume = internals.Volume;
+  vtkNew<vtkMatrix4x4> viewToWorld;
+  vtkMatrix4x4::Invert(camera->GetModelViewTransformMatrix(), viewToWorld);
+  vtkNew<vtkMatrix4x4> worldToVolume;
+  const double* origin = volume->GetOrigin();
+  const int* dims = volume->GetDimensions();
+  for (int k = 0; k < 3; ++k)
+  {
+    const double size = dims[k] * volume->GetVoxelSize();
+    worldToVolume->SetElement(k, k, 1.0 / size);
+    worldToVolume->SetElement(k, 3, -origin[k] / size);
+  }
+  vtkNew<vtkMatrix4x4> viewToVolume;
+  vtkMatrix4x4::Multiply4x4(worldToVolume, viewToWorld, viewToVolume);
+  vtkNew<vtkMatrix4x4> transposed; // vtkShaderProgram uploads row-major data as columns
+  vtkMatrix4x4::Transpose(viewToVolume, transposed);
+  program->SetUniformMatrix("prViewToVolume", transposed);
+  program->SetUniformi("prDensityVolume", internals.Texture->GetTextureUnit());
+  program->SetUniformf("prFetchDistance",
+    static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDensityVolumeAOPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Internals->Volume->ReleaseGraphicsResources(w);
+  this->Internals->Texture->ReleaseGraphicsResources(w);
+  this->Internals->TextureValid = false;
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "FetchDistance: " << this->FetchDistance << "\n";
+  os << indent << "NumberOfVolumeBuilds: " << this->NumberOfVolumeBuilds << "\n";
+}

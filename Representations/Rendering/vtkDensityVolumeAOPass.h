@@ -1,0 +1,99 @@
+/**
+ * @class   vtkDensityVolumeAOPass
+ * @brief   object-space ambient occlusion of particles from a coarse density volume
+ *
+ * vtkDensityVolumeAOPass implements the ambient occlusion of Grottel, Krone, Scharnowski, Ertl
+ * 2012, "Object-Space Ambient Occlusion for Molecular Dynamics": the particles of every
+ * vtkParticleSphereMapper (and vtkTransparentSphereMapper) among the renderer's props are
+ * aggregated into a coarse density volume (vtkParticleDensityVolume, Eq. 5, in world
+ * coordinates, all particle props together), and the sphere shading multiplies its lighting by
+ * the ambient-occlusion factor A = 1 - D(p + eps n) (Eq. 4): the density fetched with trilinear
+ * filtering one step eps along the normal from the visible point (per-fragment retrieval, Sec. 5).
+ * eps is FetchDistance voxel edges (default 1, the paper's "one voxel").
+ *
+ * The mappers know nothing about AO beyond their //PR::AmbientOcclusion::Impl hook: the pass
+ * fills it through vtkOpenGLRenderPass::PostReplaceShaderValues and binds the volume and the
+ * view-to-volume matrix in SetShaderParameters. It wraps a delegate pass
+ * (e.g. vtkRenderStepsPass; in ParaView the view's default pass) that renders the scene.
+ *
+ * The volume is rebuilt only when the particles' positions or radii, the set of particle props,
+ * their matrices or the pass's settings change -- never when only the camera moves
+ * (GetNumberOfVolumeBuilds counts). Generation on the CPU (vtkSMPTools); the GPU generator of
+ * vtkParticleDensityVolume is not wired in yet.
+ *
+ * Work in progress (issue 4): per-sphere retrieval, GPU generation, the ParaView view property,
+ * the ray-traced reference and the benchmark follow.
+ *
+ * @sa vtkParticleDensityVolume vtkParticleSphereMapper vtkSSAOPass
+ */
+#ifndef vtkDensityVolumeAOPass_h
+#define vtkDensityVolumeAOPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkParticleRenderingModule.h" // for export macro
+
+class vtkParticleDensityVolume;
+
+class VTKPARTICLERENDERING_EXPORT vtkDensityVolumeAOPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkDensityVolumeAOPass* New();
+  vtkTypeMacro(vtkDensityVolumeAOPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The pass that renders the scene.
+   */
+  virtual void SetDelegatePass(vtkRenderPass* pass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /**
+   * Fetch distance eps along the normal, in voxel edges. Default 1.
+   */
+  vtkSetClampMacro(FetchDistance, double, 0.0, 100.0);
+  vtkGetMacro(FetchDistance, double);
+  ///@}
+
+  /**
+   * The density volume (resolution, density factor g, ...). Changing its settings rebuilds it.
+   */
+  vtkParticleDensityVolume* GetDensityVolume();
+
+  /**
+   * Number of density-volume builds so far.
+   */
+  vtkGetMacro(NumberOfVolumeBuilds, vtkIdType);
+
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+
+protected:
+  vtkDensityVolumeAOPass();
+  ~vtkDensityVolumeAOPass() override;
+
+  /**
+   * Rebuild the volume and its texture when the particles or the settings changed.
+   */
+  void UpdateVolume(const vtkRenderState* s);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  double FetchDistance = 1.0;
+  vtkIdType NumberOfVolumeBuilds = 0;
+
+private:
+  vtkDensityVolumeAOPass(const vtkDensityVolumeAOPass&) = delete;
+  void operator=(const vtkDensityVolumeAOPass&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif
