@@ -184,23 +184,58 @@ void vtkDensityVolumeAOPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
   if (!vtkParticleSphereMapper::SafeDownCast(mapper))
   {
     return true;
   }
+  const char* uniforms = "uniform sampler3D prDensityVolume;\n"
+                         "uniform mat4 prViewToVolume;\n"
+                         "uniform mat3 prViewToWorld;\n"
+                         "uniform vec3 prFetchStep;\n"
+                         "uniform float prFetchDistance;\n";
+  if (this->RetrievalMode == PER_FRAGMENT)
+  {
+    vtkParticleShaders::ReplaceHook(
+      fragmentShader, "//PR::Sphere::Dec", std::string(uniforms) + "//PR::Sphere::Dec");
+    // Eq. 4: A = 1 - D(p + eps n), the density fetched with trilinear filtering
+    vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::AmbientOcclusion::Impl",
+      "vec3 prFetchVolume = (prViewToVolume *\n"
+      "    vec4(vertexVC.xyz + prFetchDistance * normalVCVSOutput, 1.0)).xyz;\n"
+      "  prAmbientOcclusion = 1.0 - texture(prDensityVolume, prFetchVolume).r;\n"
+      "  //PR::AmbientOcclusion::Impl");
+    return true;
+  }
+  // per sphere: six fetches in the vertex stage (once per sphere), through the geometry stage
+  vtkParticleShaders::ReplaceHook(vertexShader, "//PR::Sphere::Dec",
+    std::string(uniforms) +
+      "flat out vec3 prAOPlusVSOutput;\nflat out vec3 prAOMinusVSOutput;\n//PR::Sphere::Dec");
+  vtkParticleShaders::ReplaceHook(vertexShader, "//PR::Sphere::Impl",
+    "vec3 prCentreVolume = (prViewToVolume * vec4(centerVC, 1.0)).xyz;\n"
+    "  for (int k = 0; k < 3; ++k)\n"
+    "  {\n"
+    "    vec3 step = vec3(0.0);\n"
+    "    step[k] = prFetchStep[k];\n"
+    "    prAOPlusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume + step).r;\n"
+    "    prAOMinusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume - step).r;\n"
+    "  }\n"
+    "  //PR::Sphere::Impl");
+  vtkParticleShaders::ReplaceHook(geometryShader, "//PR::Sphere::Dec",
+    "flat in vec3 prAOPlusVSOutput[];\nflat in vec3 prAOMinusVSOutput[];\n"
+    "flat out vec3 prAOPlusGSOutput;\nflat out vec3 prAOMinusGSOutput;\n//PR::Sphere::Dec");
+  vtkParticleShaders::ReplaceHook(geometryShader, "//PR::Sphere::Impl",
+    "prAOPlusGSOutput = prAOPlusVSOutput[0];\n"
+    "    prAOMinusGSOutput = prAOMinusVSOutput[0];\n"
+    "    //PR::Sphere::Impl");
   vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::Sphere::Dec",
-    "uniform sampler3D prDensityVolume;\n"
-    "uniform mat4 prViewToVolume;\n"
-    "uniform float prFetchDistance;\n"
-    "//PR::Sphere::Dec");
-  // Eq. 4: A = 1 - D(p + eps n), the density fetched with trilinear filtering
+    std::string(uniforms) +
+      "flat in vec3 prAOPlusVSOutput;\nflat in vec3 prAOMinusVSOutput;\n//PR::Sphere::Dec");
   vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::AmbientOcclusion::Impl",
-    "vec3 prFetchVolume = (prViewToVolume *\n"
-    "    vec4(vertexVC.xyz + prFetchDistance * normalVCVSOutput, 1.0)).xyz;\n"
-    "  prAmbientOcclusion = 1.0 - texture(prDensityVolume, prFetchVolume).r;\n"
+    "vec3 prNormalWC = prViewToWorld * normalVCVSOutput;\n"
+    "  vec3 prSide = mix(prAOMinusVSOutput, prAOPlusVSOutput, step(0.0, prNormalWC));\n"
+    "  prAmbientOcclusion = dot(prNormalWC * prNormalWC, prSide);\n"
     "  //PR::AmbientOcclusion::Impl");
   return true;
 }
@@ -238,6 +273,22 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
   vtkNew<vtkMatrix4x4> transposed; // vtkShaderProgram uploads row-major data as columns
   vtkMatrix4x4::Transpose(viewToVolume, transposed);
   program->SetUniformMatrix("prViewToVolume", transposed);
+  // the rotation part, for normals (row-major data uploaded as columns: transposed)
+  float rotation[9];
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int col = 0; col < 3; ++col)
+    {
+      rotation[col * 3 + row] = static_cast<float>(viewToWorld->GetElement(row, col));
+    }
+  }
+  program->SetUniformMatrix3x3("prViewToWorld", rotation);
+  const float fetchStep[3] = {
+    static_cast<float>(this->FetchDistance / dims[0]),
+    static_cast<float>(this->FetchDistance / dims[1]),
+    static_cast<float>(this->FetchDistance / dims[2]),
+  };
+  program->SetUniform3f("prFetchStep", fetchStep);
   program->SetUniformi("prDensityVolume", internals.Texture->GetTextureUnit());
   program->SetUniformf("prFetchDistance",
     static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
@@ -261,6 +312,8 @@ void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "RetrievalMode: "
+     << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
   os << indent << "FetchDistance: " << this->FetchDistance << "\n";
   os << indent << "NumberOfVolumeBuilds: " << this->NumberOfVolumeBuilds << "\n";
 }

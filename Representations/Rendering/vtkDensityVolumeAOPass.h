@@ -11,6 +11,11 @@
  * filtering one step eps along the normal from the visible point (per-fragment retrieval, Sec. 5).
  * eps is FetchDistance voxel edges (default 1, the paper's "one voxel").
  *
+ * RetrievalMode PER_SPHERE is the paper's other variant: six fetches per sphere in the vertex
+ * stage at the centre +- eps along the world axes, blended per fragment by the squared
+ * components of the world normal (f = nx^2 A(+-x) + ny^2 A(+-y) + nz^2 A(+-z), the sign of each
+ * component choosing the side).
+ *
  * The mappers know nothing about AO beyond their //PR::AmbientOcclusion::Impl hook: the pass
  * fills it through vtkOpenGLRenderPass::PostReplaceShaderValues and binds the volume and the
  * view-to-volume matrix in SetShaderParameters. It wraps a delegate pass
@@ -21,7 +26,7 @@
  * (GetNumberOfVolumeBuilds counts). Generation on the CPU (vtkSMPTools); the GPU generator of
  * vtkParticleDensityVolume is not wired in yet.
  *
- * Work in progress (issue 4): per-sphere retrieval, GPU generation, the ParaView view property,
+ * Work in progress (issue 4): GPU generation, the ParaView view property,
  * the ray-traced reference and the benchmark follow.
  *
  * @sa vtkParticleDensityVolume vtkParticleSphereMapper vtkSSAOPass
@@ -52,9 +57,26 @@ public:
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
   ///@}
 
+  enum RetrievalModes
+  {
+    PER_FRAGMENT = 0, // one fetch at p + eps n per fragment (paper Sec. 5, second variant)
+    PER_SPHERE = 1    // six fetches per sphere at the centre +- eps along the world axes,
+                      // blended per fragment by the squared normal components (first variant)
+  };
+
   ///@{
   /**
-   * Fetch distance eps along the normal, in voxel edges. Default 1.
+   * How the occlusion is fetched (paper Sec. 5). Default PER_FRAGMENT, which the paper found
+   * slightly better looking and, for many small spheres, faster.
+   */
+  vtkSetClampMacro(RetrievalMode, int, PER_FRAGMENT, PER_SPHERE);
+  vtkGetMacro(RetrievalMode, int);
+  ///@}
+
+  ///@{
+  /**
+   * Fetch distance eps along the normal (per fragment) or the axes (per sphere), in voxel edges.
+   * Default 1.
    */
   vtkSetClampMacro(FetchDistance, double, 0.0, 100.0);
   vtkGetMacro(FetchDistance, double);
@@ -74,6 +96,10 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  /**
+   * The shader code depends on RetrievalMode: mappers rebuild their shaders when it changes.
+   */
+  vtkMTimeType GetShaderStageMTime() override { return this->GetMTime(); }
 
 protected:
   vtkDensityVolumeAOPass();
@@ -85,6 +111,7 @@ protected:
   void UpdateVolume(const vtkRenderState* s);
 
   vtkRenderPass* DelegatePass = nullptr;
+  int RetrievalMode = PER_FRAGMENT;
   double FetchDistance = 1.0;
   vtkIdType NumberOfVolumeBuilds = 0;
 

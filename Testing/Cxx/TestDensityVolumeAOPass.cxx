@@ -19,6 +19,7 @@
 #include "vtkTransparentSphereMapper.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -89,6 +90,30 @@ int TestDensityVolumeAOPass(int argc, char* argv[])
   window->Render();
 
   const bool baseline = prTest::CompareWithBaseline(argc, argv, window);
+
+  // per-sphere retrieval: six fetches per sphere, blended by the normal; no rebuild of the volume
+  vtkNew<vtkUnsignedCharArray> perFragment;
+  window->GetRGBACharPixelData(0, 0, 399, 299, 1, perFragment);
+  ao->SetRetrievalMode(vtkDensityVolumeAOPass::PER_SPHERE);
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> perSphere;
+  window->GetRGBACharPixelData(0, 0, 399, 299, 1, perSphere);
+  long long sphereDarker = 0;
+  long long sphereBrighter = 0;
+  double meanDifference = 0.0;
+  for (vtkIdType i = 0; i < plain->GetNumberOfValues(); i += 4)
+  {
+    sphereDarker += perSphere->GetValue(i) + 3 < plain->GetValue(i) ? 1 : 0;
+    sphereBrighter += perSphere->GetValue(i) > plain->GetValue(i) + 3 ? 1 : 0;
+    meanDifference += std::abs(perSphere->GetValue(i) - perFragment->GetValue(i));
+  }
+  meanDifference /= plain->GetNumberOfValues() / 4;
+  std::cout << "per sphere: " << sphereDarker << " pixels darker, " << sphereBrighter
+            << " brighter, mean |per sphere - per fragment| " << meanDifference << "/255\n";
+  ok &= prTest::Check(sphereDarker > 5000 && sphereBrighter == 0, "per-sphere AO darkens");
+  ok &= prTest::Check(meanDifference < 10.0, "per-sphere close to per-fragment AO");
+  ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 2, "no rebuild for the retrieval mode");
+  ao->SetRetrievalMode(vtkDensityVolumeAOPass::PER_FRAGMENT);
 
   // translucent particles get the occlusion at their entry point too
   vtkNew<vtkTransparentSphereMapper> translucent;
