@@ -216,10 +216,10 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
     "vec3 prCentreVolume = (prViewToVolume * vec4(centerVC, 1.0)).xyz;\n"
     "  for (int k = 0; k < 3; ++k)\n"
     "  {\n"
-    "    vec3 step = vec3(0.0);\n"
-    "    step[k] = prFetchStep[k];\n"
-    "    prAOPlusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume + step).r;\n"
-    "    prAOMinusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume - step).r;\n"
+    "    vec3 prStep = vec3(0.0);\n"
+    "    prStep[k] = prFetchStep[k];\n"
+    "    prAOPlusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume + prStep).r;\n"
+    "    prAOMinusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume - prStep).r;\n"
     "  }\n"
     "  //PR::Sphere::Impl");
   vtkParticleShaders::ReplaceHook(geometryShader, "//PR::Sphere::Dec",
