@@ -19,9 +19,9 @@ layout(std430, binding = 1) readonly buffer prRadii { float radii[]; };
 
 uniform uint count;
 uniform uint positionStride;
-// voxel coordinate of a buffer position p: p * toVoxelScale + toVoxelOffset (from double)
-uniform vec3 toVoxelScale;
-uniform vec3 toVoxelOffset;
+// voxel coordinate of a buffer position p (affine, composed in double on the CPU)
+uniform mat4 toVoxel;
+uniform float radiusScale;
 uniform ivec3 dimensions;
 // fixed-point volume of a sphere of radius 1, relative to a voxel: 4/3 pi / edge^3 * 2^20
 uniform float unitContribution;
@@ -35,13 +35,13 @@ void main()
   {
     return;
   }
-  float r = radii[i];
+  float r = radii[i] * radiusScale;
   if (!(r > 0.0))
   {
     return;
   }
   uint j = i * positionStride;
-  vec3 v = vec3(positions[j], positions[j + 1u], positions[j + 2u]) * toVoxelScale + toVoxelOffset;
+  vec3 v = (toVoxel * vec4(positions[j], positions[j + 1u], positions[j + 2u], 1.0)).xyz;
   ivec3 voxel = clamp(ivec3(floor(v)), ivec3(0), dimensions - ivec3(1));
   uint index = uint(voxel.x + dimensions.x * (voxel.y + dimensions.y * voxel.z));
   if (counts[index] >= prCountCap)

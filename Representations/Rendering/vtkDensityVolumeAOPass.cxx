@@ -6,6 +6,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkParticleComputeProgram.h"
 #include "vtkParticleDensityVolume.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
@@ -81,6 +82,7 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
     state.insert(state.end(), m->GetData(), m->GetData() + 16);
   }
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
+  state.push_back(this->GenerationMode);
   if (state == internals.BuiltState && internals.TextureValid)
   {
     return;
@@ -130,14 +132,15 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
       radii->SetValue(next, static_cast<float>(radius > 0.0 ? radius : 0.0));
     }
   }
-  if (valid == 0 || !internals.Volume->SetUpGrid(bounds, radiusSum / valid) ||
-    !internals.Volume->ComputeOnCPU(positions, radii))
+  if (valid == 0 || !internals.Volume->SetUpGrid(bounds, radiusSum / valid))
   {
     return; // no particles: no occlusion
   }
   const int* dims = internals.Volume->GetDimensions();
+  vtkOpenGLRenderWindow* ctx =
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   vtkTextureObject* texture = internals.Texture;
-  texture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
+  texture->SetContext(ctx);
   texture->SetMinificationFilter(vtkTextureObject::Linear);
   texture->SetMagnificationFilter(vtkTextureObject::Linear);
   // outside the volume there is nothing: density 0
@@ -145,8 +148,47 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   texture->SetWrapT(vtkTextureObject::ClampToBorder);
   texture->SetWrapR(vtkTextureObject::ClampToBorder);
   texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
-  if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT,
-        const_cast<float*>(internals.Volume->GetVolume().data())))
+
+  // GPU: splat every mapper's own vertex buffers into one volume
+  bool generated = false;
+  if (this->GenerationMode == GPU_GENERATION &&
+    vtkParticleComputeProgram::IsSupported(ctx, nullptr))
+  {
+    generated = texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT, nullptr);
+    bool first = true;
+    for (auto& item : particles)
+    {
+      unsigned int positionBuffer = 0;
+      unsigned int stride = 0;
+      unsigned int radiusBuffer = 0;
+      vtkIdType count = 0;
+      vtkNew<vtkMatrix4x4> bufferToModel;
+      if (!generated ||
+        !item.second->GetParticleBuffers(positionBuffer, stride, radiusBuffer, count, bufferToModel))
+      {
+        generated = false; // not drawn yet (first frame): the CPU builds this one
+        break;
+      }
+      vtkNew<vtkMatrix4x4> bufferToWorld;
+      vtkMatrix4x4::Multiply4x4(item.first->GetMatrix(), bufferToModel, bufferToWorld);
+      generated = internals.Volume->ComputeOnGPU(ctx, positionBuffer, stride,
+        bufferToWorld->GetData(), radiusBuffer, item.second->GetRadiusScaleVC(item.first), count,
+        !first);
+      first = false;
+    }
+    generated = generated && internals.Volume->CopyVolumeBufferToTexture(texture->GetHandle());
+  }
+  this->LastGenerationMode = generated ? GPU_GENERATION : CPU_GENERATION;
+  if (!generated)
+  {
+    if (!internals.Volume->ComputeOnCPU(positions, radii))
+    {
+      return;
+    }
+    generated = texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT,
+      const_cast<float*>(internals.Volume->GetVolume().data()));
+  }
+  if (!generated)
   {
     vtkErrorMacro(<< "Cannot create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
                   << " density texture: ambient occlusion is off.");
@@ -312,6 +354,8 @@ void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "GenerationMode: "
+     << (this->GenerationMode == CPU_GENERATION ? "CPU" : "GPU") << "\n";
   os << indent << "RetrievalMode: "
      << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
   os << indent << "FetchDistance: " << this->FetchDistance << "\n";

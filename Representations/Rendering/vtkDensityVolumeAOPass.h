@@ -23,10 +23,10 @@
  *
  * The volume is rebuilt only when the particles' positions or radii, the set of particle props,
  * their matrices or the pass's settings change -- never when only the camera moves
- * (GetNumberOfVolumeBuilds counts). Generation on the CPU (vtkSMPTools); the GPU generator of
- * vtkParticleDensityVolume is not wired in yet.
+ * (GetNumberOfVolumeBuilds counts). Generation on the CPU (vtkSMPTools) or the GPU (compute
+ * shader over the mappers' own vertex buffers), see GenerationMode.
  *
- * Work in progress (issue 4): GPU generation, the ParaView view property,
+ * Work in progress (issue 4): the ParaView view property,
  * the ray-traced reference and the benchmark follow.
  *
  * @sa vtkParticleDensityVolume vtkParticleSphereMapper vtkSSAOPass
@@ -63,6 +63,27 @@ public:
     PER_SPHERE = 1    // six fetches per sphere at the centre +- eps along the world axes,
                       // blended per fragment by the squared normal components (first variant)
   };
+
+  enum GenerationModes
+  {
+    CPU_GENERATION = 0,
+    GPU_GENERATION = 1
+  };
+
+  ///@{
+  /**
+   * Where the density volume is generated (paper Sec. 4): CPU_GENERATION (default; vtkSMPTools)
+   * or GPU_GENERATION (compute shader reading the mappers' vertex buffers; needs OpenGL 4.3 and
+   * falls back to the CPU for a build where a mapper has not drawn yet, e.g. the first frame).
+   */
+  vtkSetClampMacro(GenerationMode, int, CPU_GENERATION, GPU_GENERATION);
+  vtkGetMacro(GenerationMode, int);
+  ///@}
+
+  /**
+   * Where the last build ran: CPU_GENERATION or GPU_GENERATION.
+   */
+  vtkGetMacro(LastGenerationMode, int);
 
   ///@{
   /**
@@ -112,6 +133,8 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   int RetrievalMode = PER_FRAGMENT;
+  int GenerationMode = CPU_GENERATION;
+  int LastGenerationMode = CPU_GENERATION;
   double FetchDistance = 1.0;
   vtkIdType NumberOfVolumeBuilds = 0;
 

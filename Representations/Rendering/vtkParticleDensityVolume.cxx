@@ -161,8 +161,8 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
 
 //------------------------------------------------------------------------------
 bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
-  unsigned int positionBuffer, unsigned int positionStride, const double shift[3],
-  const double scale[3], unsigned int radiusBuffer, vtkIdType count)
+  unsigned int positionBuffer, unsigned int positionStride, const double bufferToGrid[16],
+  unsigned int radiusBuffer, double radiusScale, vtkIdType count, bool accumulate)
 {
   vtkInternals& internals = *this->Internals;
   const size_t voxels =
@@ -196,26 +196,35 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     internals.Capacity = voxels;
   }
-  const GLuint zero = 0;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Counts);
-  glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0, voxels * sizeof(GLuint),
-    GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-
-  // voxel coordinate = (p * scale + shift - origin) / edge, folded in double
-  float toVoxelScale[3];
-  float toVoxelOffset[3];
-  for (int k = 0; k < 3; ++k)
+  if (!accumulate)
   {
-    toVoxelScale[k] = static_cast<float>(scale[k] / this->VoxelSize);
-    toVoxelOffset[k] = static_cast<float>((shift[k] - this->Origin[k]) / this->VoxelSize);
+    const GLuint zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Counts);
+    glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0, voxels * sizeof(GLuint),
+      GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+
+  // voxel coordinate = (M p - origin) / edge, folded in double; column-major for GL
+  float toVoxel[16];
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int col = 0; col < 4; ++col)
+    {
+      double value = bufferToGrid[4 * row + col];
+      if (row < 3)
+      {
+        value = (value - (col == 3 ? this->Origin[row] : 0.0)) / this->VoxelSize;
+      }
+      toVoxel[4 * col + row] = static_cast<float>(value);
+    }
   }
   vtkParticleComputeProgram* splat = internals.Splat;
   splat->Use();
   splat->SetUniformui("count", static_cast<unsigned int>(count));
   splat->SetUniformui("positionStride", positionStride);
-  splat->SetUniform3f("toVoxelScale", toVoxelScale[0], toVoxelScale[1], toVoxelScale[2]);
-  splat->SetUniform3f("toVoxelOffset", toVoxelOffset[0], toVoxelOffset[1], toVoxelOffset[2]);
+  splat->SetUniformMatrix4x4("toVoxel", toVoxel);
+  splat->SetUniformf("radiusScale", static_cast<float>(radiusScale));
   glUniform3i(splat->GetUniformLocation("dimensions"), this->Dimensions[0], this->Dimensions[1],
     this->Dimensions[2]);
   splat->SetUniformf("unitContribution",
@@ -242,6 +251,23 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
   }
   glUseProgram(0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::CopyVolumeBufferToTexture(unsigned int texture3D)
+{
+  if (!this->Internals->VolumeBuffer || !texture3D)
+  {
+    return false;
+  }
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, this->Internals->VolumeBuffer);
+  glBindTexture(GL_TEXTURE_3D, texture3D);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, this->Dimensions[0], this->Dimensions[1],
+    this->Dimensions[2], GL_RED, GL_FLOAT, nullptr);
+  glBindTexture(GL_TEXTURE_3D, 0);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
   return true;
 }
 

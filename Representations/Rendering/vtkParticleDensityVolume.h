@@ -99,13 +99,16 @@ public:
 
   /**
    * The same on the GPU, from buffer objects holding float positions (positionStride floats per
-   * particle, transformed by p * scale + shift per component to the grid's coordinates, e.g.
-   * undoing VTK's VBO shift/scale) and float radii. The result stays in GetVolumeBuffer() (floats,
-   * x fastest); ReadVolumeBuffer() copies it to GetVolume() (for tests).
+   * particle, mapped by bufferToGrid -- row-major, e.g. VTK's VBO shift/scale undone and the
+   * actor's matrix -- to the grid's coordinates) and float radii (times radiusScale). With
+   * accumulate, the particles are added to those of the previous call (several props in one
+   * volume). The result stays in GetVolumeBuffer() (floats, x fastest); ReadVolumeBuffer()
+   * copies it to GetVolume() (for tests), CopyVolumeBufferToTexture() into a 3D texture.
    */
   bool ComputeOnGPU(vtkOpenGLRenderWindow* context, unsigned int positionBuffer,
-    unsigned int positionStride, const double shift[3], const double scale[3],
-    unsigned int radiusBuffer, vtkIdType count);
+    unsigned int positionStride, const double bufferToGrid[16], unsigned int radiusBuffer,
+    double radiusScale, vtkIdType count, bool accumulate = false);
+  bool CopyVolumeBufferToTexture(unsigned int texture3D);
   unsigned int GetVolumeBuffer();
   bool ReadVolumeBuffer();
 

@@ -368,6 +368,25 @@ double* vtkParticleSphereMapper::GetBounds()
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::GetParticleBuffers(unsigned int& positions,
+  unsigned int& positionStride, unsigned int& radii, vtkIdType& count,
+  vtkMatrix4x4* bufferToModel)
+{
+  vtkOpenGLVertexBufferObject* positionVBO = this->VBOs->GetVBO("vertexMC");
+  vtkOpenGLVertexBufferObject* radiusVBO = this->VBOs->GetVBO("radiusMC");
+  count = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
+  if (!positionVBO || !radiusVBO || count <= 0 || positionVBO->GetHandle() == 0)
+  {
+    return false;
+  }
+  positions = static_cast<unsigned int>(positionVBO->GetHandle());
+  positionStride = positionVBO->GetStride() / sizeof(float);
+  radii = static_cast<unsigned int>(radiusVBO->GetHandle());
+  vtkMatrix4x4::Transpose(this->VBOShiftScale, bufferToModel); // stored transposed
+  return true;
+}
+
+//------------------------------------------------------------------------------
 vtkMTimeType vtkParticleSphereMapper::GetParticleGeometryTime()
 {
   this->PrepareParticles();

@@ -59,6 +59,7 @@
 #include <vector> // for std::vector
 
 class vtkFloatArray;
+class vtkMatrix4x4;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleSphereMapper : public vtkOpenGLPolyDataMapper
 {
@@ -147,6 +148,15 @@ public:
    * GetBounds()). Used by the reference renderer and by passes that need the radii.
    */
   vtkFloatArray* GetParticleRadii();
+
+  /**
+   * The particle vertex buffers for compute passes: GL names of the positions (float, stride in
+   * floats) and radii (float, model-coordinate radius, 0 for skipped particles) and the matrix
+   * from buffer to model coordinates (VTK's VBO shift/scale undone), valid once the mapper has
+   * drawn. Returns false before that.
+   */
+  bool GetParticleBuffers(unsigned int& positions, unsigned int& positionStride,
+    unsigned int& radii, vtkIdType& count, vtkMatrix4x4* bufferToModel);
 
   /**
    * Time of the last change of the particles' positions or radii (the input's points, the radius

@@ -19,6 +19,7 @@
 #include "vtkTransparentSphereMapper.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -115,6 +116,26 @@ int TestDensityVolumeAOPass(int argc, char* argv[])
   ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 2, "no rebuild for the retrieval mode");
   ao->SetRetrievalMode(vtkDensityVolumeAOPass::PER_FRAGMENT);
 
+  // GPU generation (the mapper has drawn: its vertex buffers are splatted) gives the same image
+  ao->SetGenerationMode(vtkDensityVolumeAOPass::GPU_GENERATION);
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> gpuImage;
+  window->GetRGBACharPixelData(0, 0, 399, 299, 1, gpuImage);
+  int worstGPU = 0;
+  for (vtkIdType i = 0; i < gpuImage->GetNumberOfValues(); ++i)
+  {
+    worstGPU = std::max(worstGPU, std::abs(gpuImage->GetValue(i) - perFragment->GetValue(i)));
+  }
+  std::cout << "GPU generation: max |GPU - CPU image| " << worstGPU << "/255, built on the "
+            << (ao->GetLastGenerationMode() == vtkDensityVolumeAOPass::GPU_GENERATION ? "GPU"
+                                                                                      : "CPU")
+            << "\n";
+  ok &= prTest::Check(ao->GetLastGenerationMode() == vtkDensityVolumeAOPass::GPU_GENERATION,
+    "volume built on the GPU");
+  ok &= prTest::Check(worstGPU <= 2, "GPU-generated AO equals CPU-generated AO");
+  ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 3, "one rebuild for the generation mode");
+  ao->SetGenerationMode(vtkDensityVolumeAOPass::CPU_GENERATION);
+
   // translucent particles get the occlusion at their entry point too
   vtkNew<vtkTransparentSphereMapper> translucent;
   translucent->SetInputData(film);
@@ -135,7 +156,7 @@ int TestDensityVolumeAOPass(int argc, char* argv[])
   }
   std::cout << "translucent particles: " << darkerTranslucent << " pixels darker with AO\n";
   ok &= prTest::Check(darkerTranslucent > 5000, "AO darkens translucent particles");
-  ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 3, "a rebuild for the new mapper");
+  ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 4, "a rebuild for the new mapper (and the mode)");
   renderer->SetPass(nullptr);
   ao->ReleaseGraphicsResources(window);
   return (ok && baseline) ? EXIT_SUCCESS : EXIT_FAILURE;

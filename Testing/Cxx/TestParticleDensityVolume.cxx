@@ -105,9 +105,8 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
   glBufferData(GL_SHADER_STORAGE_BUFFER, std::max<vtkIdType>(4, n * 4), radii->GetPointer(0), GL_STATIC_DRAW);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  const double shift[3] = { 0, 0, 0 };
-  const double scale[3] = { 1, 1, 1 };
-  ok &= prTest::Check(volume->ComputeOnGPU(ctx, buffers[0], 3, shift, scale, buffers[1], n),
+  const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  ok &= prTest::Check(volume->ComputeOnGPU(ctx, buffers[0], 3, identity, buffers[1], 1.0, n),
     what + ": GPU volume");
   ok &= prTest::Check(volume->ReadVolumeBuffer(), what + ": GPU volume read back");
   glDeleteBuffers(2, buffers);
