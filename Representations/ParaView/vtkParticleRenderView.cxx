@@ -1,6 +1,8 @@
 #include "vtkParticleRenderView.h"
 
 #include "vtkCameraPass.h"
+#include "vtkDensityVolumeAOPass.h"
+#include "vtkParticleDensityVolume.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
@@ -22,6 +24,67 @@ vtkParticleRenderView::vtkParticleRenderView()
 
 //------------------------------------------------------------------------------
 vtkParticleRenderView::~vtkParticleRenderView() = default;
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeAmbientOcclusion(int on)
+{
+  const bool installed = this->ParticlePassChain->HasPass(this->DensityVolumeAOPass);
+  if (on && !installed)
+  {
+    this->ParticlePassChain->AddPass(this->DensityVolumeAOPass);
+  }
+  else if (!on && installed)
+  {
+    this->ParticlePassChain->RemovePass(this->DensityVolumeAOPass);
+  }
+  else
+  {
+    return;
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetDensityVolumeAmbientOcclusion()
+{
+  return this->ParticlePassChain->HasPass(this->DensityVolumeAOPass) ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeResolution(int resolution)
+{
+  this->DensityVolumeAOPass->GetDensityVolume()->SetResolution(resolution);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeFactor(double factor)
+{
+  this->DensityVolumeAOPass->GetDensityVolume()->SetDensityFactor(factor);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeFetchDistance(double distance)
+{
+  this->DensityVolumeAOPass->SetFetchDistance(distance);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeRetrieval(int mode)
+{
+  this->DensityVolumeAOPass->SetRetrievalMode(mode);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeGeneration(int mode)
+{
+  this->DensityVolumeAOPass->SetGenerationMode(mode);
+}
+
+//------------------------------------------------------------------------------
+vtkDensityVolumeAOPass* vtkParticleRenderView::GetDensityVolumeAOPass()
+{
+  return this->DensityVolumeAOPass;
+}
 
 //------------------------------------------------------------------------------
 vtkParticlePassChain* vtkParticleRenderView::GetParticlePassChain()

@@ -52,6 +52,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 
+class vtkDensityVolumeAOPass;
 class vtkParticlePassChain;
 
 class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleRenderView : public vtkPVRenderView
@@ -78,6 +79,21 @@ public:
    */
   int GetNumberOfParticlePasses();
 
+  ///@{
+  /**
+   * Object-space ambient occlusion of the particles from a coarse density volume
+   * (vtkDensityVolumeAOPass, Grottel et al. 2012): on/off and its parameters.
+   */
+  void SetDensityVolumeAmbientOcclusion(int on);
+  int GetDensityVolumeAmbientOcclusion();
+  void SetDensityVolumeResolution(int resolution);
+  void SetDensityVolumeFactor(double factor);
+  void SetDensityVolumeFetchDistance(double distance);
+  void SetDensityVolumeRetrieval(int mode);
+  void SetDensityVolumeGeneration(int mode);
+  vtkDensityVolumeAOPass* GetDensityVolumeAOPass();
+  ///@}
+
 protected:
   vtkParticleRenderView();
   ~vtkParticleRenderView() override;
@@ -88,6 +104,7 @@ protected:
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
   vtkNew<vtkParticlePassChain> ParticlePassChain;
+  vtkNew<vtkDensityVolumeAOPass> DensityVolumeAOPass;
 
 private:
   vtkParticleRenderView(const vtkParticleRenderView&) = delete;

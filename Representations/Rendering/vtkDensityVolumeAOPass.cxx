@@ -45,12 +45,8 @@ vtkDensityVolumeAOPass::vtkDensityVolumeAOPass()
 //------------------------------------------------------------------------------
 vtkDensityVolumeAOPass::~vtkDensityVolumeAOPass()
 {
-  this->SetDelegatePass(nullptr);
   delete this->Internals;
 }
-
-//------------------------------------------------------------------------------
-vtkCxxSetObjectMacro(vtkDensityVolumeAOPass, DelegatePass, vtkRenderPass);
 
 //------------------------------------------------------------------------------
 vtkParticleDensityVolume* vtkDensityVolumeAOPass::GetDensityVolume()
@@ -343,17 +339,13 @@ void vtkDensityVolumeAOPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Internals->Volume->ReleaseGraphicsResources(w);
   this->Internals->Texture->ReleaseGraphicsResources(w);
   this->Internals->TextureValid = false;
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(w);
-  }
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
 void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "GenerationMode: "
      << (this->GenerationMode == CPU_GENERATION ? "CPU" : "GPU") << "\n";
   os << indent << "RetrievalMode: "

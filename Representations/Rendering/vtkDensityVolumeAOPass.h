@@ -18,8 +18,9 @@
  *
  * The mappers know nothing about AO beyond their //PR::AmbientOcclusion::Impl hook: the pass
  * fills it through vtkOpenGLRenderPass::PostReplaceShaderValues and binds the volume and the
- * view-to-volume matrix in SetShaderParameters. It wraps a delegate pass
- * (e.g. vtkRenderStepsPass; in ParaView the view's default pass) that renders the scene.
+ * view-to-volume matrix in SetShaderParameters. It is a vtkImageProcessingPass (VTK's "render
+ * pass with a delegate") whose delegate (e.g. vtkRenderStepsPass; in ParaView the Particle Render
+ * View's pass chain) renders the scene directly, without an intermediate image.
  *
  * The volume is rebuilt only when the particles' positions or radii, the set of particle props,
  * their matrices or the pass's settings change -- never when only the camera moves
@@ -34,28 +35,20 @@
 #ifndef vtkDensityVolumeAOPass_h
 #define vtkDensityVolumeAOPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkImageProcessingPass.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
 class vtkParticleDensityVolume;
 
-class VTKPARTICLERENDERING_EXPORT vtkDensityVolumeAOPass : public vtkOpenGLRenderPass
+class VTKPARTICLERENDERING_EXPORT vtkDensityVolumeAOPass : public vtkImageProcessingPass
 {
 public:
   static vtkDensityVolumeAOPass* New();
-  vtkTypeMacro(vtkDensityVolumeAOPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkDensityVolumeAOPass, vtkImageProcessingPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
-
-  ///@{
-  /**
-   * The pass that renders the scene.
-   */
-  virtual void SetDelegatePass(vtkRenderPass* pass);
-  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
-  ///@}
 
   enum RetrievalModes
   {
@@ -131,7 +124,6 @@ protected:
    */
   void UpdateVolume(const vtkRenderState* s);
 
-  vtkRenderPass* DelegatePass = nullptr;
   int RetrievalMode = PER_FRAGMENT;
   int GenerationMode = CPU_GENERATION;
   int LastGenerationMode = CPU_GENERATION;
