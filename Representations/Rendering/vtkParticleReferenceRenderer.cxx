@@ -948,6 +948,7 @@ vtkParticleReferenceRenderer::vtkParticleReferenceRenderer()
   this->InsideImage = vtkSmartPointer<vtkUnsignedCharArray>::New();
   this->InsideImage->SetName("Inside");
   this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
+  this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
 }
 
 //------------------------------------------------------------------------------
@@ -979,6 +980,12 @@ vtkImageData* vtkParticleReferenceRenderer::GetNormalImage()
   return this->NormalImage;
 }
 
+vtkImageData* vtkParticleReferenceRenderer::GetAmbientOcclusionImage()
+{
+  return this->AmbientOcclusionImage;
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkParticleReferenceRenderer::GetTranslucentAlphaImage()
 {
   return this->TranslucentAlphaImage;
@@ -1100,6 +1107,8 @@ bool vtkParticleReferenceRenderer::Render()
     this->IdImage->SetNumberOfTuples(0);
     this->InsideImage->SetNumberOfTuples(0);
     this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
+    this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
+  this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
     return false;
   };
   if (!this->Renderer)
@@ -1483,6 +1492,10 @@ bool vtkParticleReferenceRenderer::Render()
   internals.ConeBits.assign(static_cast<size_t>(width) * height, 0);
   std::uint32_t* coneOut = internals.ConeBits.data();
   this->TranslucentAlphaImage = NewImage(width, height, 1, "TranslucentAlpha");
+  this->AmbientOcclusionImage = NewImage(width, height, 1, "AmbientOcclusion");
+  double* aoOut = vtkDoubleArray::SafeDownCast(
+    this->AmbientOcclusionImage->GetPointData()->GetScalars())->GetPointer(0);
+  std::fill(aoOut, aoOut + static_cast<size_t>(width) * height, 1.0);
   double* translucentAlphaOut = vtkDoubleArray::SafeDownCast(
     this->TranslucentAlphaImage->GetPointData()->GetScalars())
                                   ->GetPointer(0);
@@ -1803,9 +1816,98 @@ bool vtkParticleReferenceRenderer::Render()
     return true;
   }
 
+  // Ray-traced ambient occlusion: cosine-distributed rays from a visible point, binary
+  // visibility against the real spheres (all of them, the visible one excepted) up to the
+  // distance.
+  const int aoSamples = this->AmbientOcclusionSamples;
+  double aoDistance = this->AmbientOcclusionDistance;
+  if (aoSamples > 0 && !(aoDistance > 0.0))
+  {
+    double sum = 0.0;
+    for (const SphereVC& sv : spheres)
+    {
+      sum += sv.R;
+    }
+    aoDistance = spheres.empty() ? 1.0 : 4.0 * sum / spheres.size();
+  }
+  auto ambientOcclusion = [&](const double p[3], const double n[3], vtkIdType own, int px,
+                            int py, std::vector<std::uint32_t>& candidates) -> double {
+    // orthonormal basis around n
+    double t1[3];
+    const double helper[3] = { std::abs(n[0]) < 0.9 ? 1.0 : 0.0, std::abs(n[0]) < 0.9 ? 0.0 : 1.0,
+      0.0 };
+    vtkMath::Cross(n, helper, t1);
+    vtkMath::Normalize(t1);
+    double t2[3];
+    vtkMath::Cross(n, t1, t2);
+    // per-pixel Cranley-Patterson rotation from a hash of the pixel
+    std::uint32_t h = static_cast<std::uint32_t>(px) * 73856093u ^
+      static_cast<std::uint32_t>(py) * 19349663u;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    const double rotU = (h & 0xffffu) / 65536.0;
+    const double rotV = (h >> 16) / 65536.0;
+    int free = 0;
+    for (int k = 0; k < aoSamples; ++k)
+    {
+      // Hammersley point (k / N, radical inverse of k), rotated
+      std::uint32_t bits = static_cast<std::uint32_t>(k);
+      bits = (bits << 16u) | (bits >> 16u);
+      bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+      bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+      bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+      bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+      double u = (k + 0.5) / aoSamples + rotU;
+      double w = bits * 2.3283064365386963e-10 + rotV;
+      u -= std::floor(u);
+      w -= std::floor(w);
+      // cosine-weighted direction
+      const double sinTheta = std::sqrt(u);
+      const double cosTheta = std::sqrt(std::max(0.0, 1.0 - u));
+      const double phi = 2.0 * vtkMath::Pi() * w;
+      double dir[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        dir[c] = sinTheta * (std::cos(phi) * t1[c] + std::sin(phi) * t2[c]) + cosTheta * n[c];
+      }
+      candidates.clear();
+      grid.Collect(p, dir, 0.0, aoDistance, candidates);
+      bool blocked = false;
+      for (std::uint32_t j : candidates)
+      {
+        if (static_cast<vtkIdType>(j) == own)
+        {
+          continue;
+        }
+        const SphereVC& sv = spheres[j];
+        const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
+        const double b = vtkMath::Dot(oc, dir);
+        // closest approach relative to the centre (no cancellation), as everywhere here
+        const double q[3] = { oc[0] - b * dir[0], oc[1] - b * dir[1], oc[2] - b * dir[2] };
+        const double h2 = sv.R * sv.R - vtkMath::Dot(q, q);
+        if (!(h2 >= 0.0))
+        {
+          continue;
+        }
+        const double hh = std::sqrt(h2);
+        const double tIn = -b - hh;
+        const double tOut = -b + hh;
+        if (tOut > 1e-9 * sv.R && tIn < aoDistance)
+        {
+          blocked = true;
+          break;
+        }
+      }
+      free += blocked ? 0 : 1;
+    }
+    return static_cast<double>(free) / aoSamples;
+  };
+
   vtkSMPTools::For(0, height,
     [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
+      std::vector<std::uint32_t> aoCandidates;
       for (vtkIdType y = rowBegin; y < rowEnd; ++y)
       {
         for (int x = 0; x < width; ++x)
@@ -1845,10 +1947,23 @@ bool vtkParticleReferenceRenderer::Render()
             material(pid, amb, dif, alpha);
             double color[3];
             cones = shade(n, p, v, amb, dif, color);
+            double occlusion = 1.0;
+            if (aoSamples > 0)
+            {
+              occlusion = ambientOcclusion(p, n, hit.Index, x, y, aoCandidates);
+              if (this->ApplyAmbientOcclusion)
+              {
+                for (int k = 0; k < 3; ++k)
+                {
+                  color[k] *= occlusion;
+                }
+              }
+            }
             const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
               std::isfinite(color[2]) && std::isfinite(alpha);
             if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
             {
+              aoOut[pixel] = occlusion;
               for (int k = 0; k < 3; ++k)
               {
                 rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
