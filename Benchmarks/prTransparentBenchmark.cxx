@@ -207,28 +207,11 @@ struct Setup
   }
 };
 
-vtkSmartPointer<vtkImageData> RGBOf(vtkImageData* rgba)
-{
-  vtkNew<vtkImageData> rgb;
-  rgb->SetDimensions(rgba->GetDimensions());
-  rgb->AllocateScalars(VTK_DOUBLE, 3);
-  vtkDataArray* in = rgba->GetPointData()->GetScalars();
-  vtkDataArray* out = rgb->GetPointData()->GetScalars();
-  for (vtkIdType i = 0; i < in->GetNumberOfTuples(); ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      out->SetComponent(i, k, in->GetComponent(i, k));
-    }
-  }
-  return rgb;
-}
-
 vtkSmartPointer<vtkImageData> GrabRGB(vtkRenderWindow* window)
 {
   vtkNew<vtkImageData> rgba;
   vtkParticleImageComparison::GrabColorBuffer(window, rgba);
-  return RGBOf(rgba);
+  return vtkParticleImageComparison::ExtractRGB(rgba);
 }
 
 vtkParticleImageComparison::Result Compare(vtkImageData* a, vtkImageData* b)
@@ -594,7 +577,8 @@ int Errors(vtkPolyData* data, vtkIdType dropped, const Options& o, const prBench
     std::cerr << "the reference failed\n";
     return 1;
   }
-  vtkSmartPointer<vtkImageData> refImage = RGBOf(ref->GetColorImage());
+  vtkSmartPointer<vtkImageData> refImage =
+    vtkParticleImageComparison::ExtractRGB(ref->GetColorImage());
   renderer->RemoveActor(reference.Actor);
   if (!o.ScreenshotDir.empty())
   {

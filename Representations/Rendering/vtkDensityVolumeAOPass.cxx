@@ -86,7 +86,8 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   internals.BuiltState = state;
   internals.TextureValid = false;
 
-  // all particles in world coordinates
+  // All particles in world coordinates: their bounds and mean radius set up the grid; the
+  // positions and radii themselves are kept only for a CPU build.
   vtkIdType total = 0;
   for (auto& item : particles)
   {
@@ -94,40 +95,55 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   }
   vtkNew<vtkFloatArray> positions;
   positions->SetNumberOfComponents(3);
-  positions->SetNumberOfTuples(total);
   vtkNew<vtkFloatArray> radii;
-  radii->SetNumberOfTuples(total);
-  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
-    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double bounds[6];
   double radiusSum = 0.0;
   vtkIdType valid = 0;
-  vtkIdType next = 0;
-  for (auto& item : particles)
-  {
-    vtkFloatArray* r = item.second->GetParticleRadii();
-    vtkPolyData* input = item.second->GetInput();
-    const double scale = item.second->GetRadiusScaleVC(item.first);
-    vtkMatrix4x4* m = item.first->GetMatrix();
-    for (vtkIdType i = 0; i < r->GetNumberOfTuples(); ++i, ++next)
+  auto gather = [&](bool keep) {
+    for (int k = 0; k < 3; ++k)
     {
-      const double radius = r->GetValue(i) * scale;
-      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
-      if (radius > 0.0)
-      {
-        input->GetPoint(i, p);
-        m->MultiplyPoint(p, p);
-        for (int k = 0; k < 3; ++k)
-        {
-          bounds[2 * k] = std::min(bounds[2 * k], p[k]);
-          bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
-        }
-        radiusSum += radius;
-        ++valid;
-      }
-      positions->SetTuple(next, p);
-      radii->SetValue(next, static_cast<float>(radius > 0.0 ? radius : 0.0));
+      bounds[2 * k] = VTK_DOUBLE_MAX;
+      bounds[2 * k + 1] = VTK_DOUBLE_MIN;
     }
-  }
+    radiusSum = 0.0;
+    valid = 0;
+    positions->SetNumberOfTuples(keep ? total : 0);
+    radii->SetNumberOfTuples(keep ? total : 0);
+    vtkIdType next = 0;
+    for (auto& item : particles)
+    {
+      vtkFloatArray* r = item.second->GetParticleRadii();
+      vtkPolyData* input = item.second->GetInput();
+      const double scale = item.second->GetRadiusScaleVC(item.first);
+      vtkMatrix4x4* m = item.first->GetMatrix();
+      for (vtkIdType i = 0; i < r->GetNumberOfTuples(); ++i, ++next)
+      {
+        const double radius = r->GetValue(i) * scale;
+        double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+        if (radius > 0.0)
+        {
+          input->GetPoint(i, p);
+          m->MultiplyPoint(p, p);
+          for (int k = 0; k < 3; ++k)
+          {
+            bounds[2 * k] = std::min(bounds[2 * k], p[k]);
+            bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
+          }
+          radiusSum += radius;
+          ++valid;
+        }
+        if (keep)
+        {
+          positions->SetTuple(next, p);
+          radii->SetValue(next, static_cast<float>(radius > 0.0 ? radius : 0.0));
+        }
+      }
+    }
+  };
+  const bool tryGPU = this->GenerationMode == GPU_GENERATION &&
+    vtkParticleComputeProgram::IsSupported(
+      vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()), nullptr);
+  gather(!tryGPU);
   if (valid == 0 || !internals.Volume->SetUpGrid(bounds, radiusSum / valid))
   {
     return; // no particles: no occlusion
@@ -147,8 +163,7 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
 
   // GPU: splat every mapper's own vertex buffers into one volume
   bool generated = false;
-  if (this->GenerationMode == GPU_GENERATION &&
-    vtkParticleComputeProgram::IsSupported(ctx, nullptr))
+  if (tryGPU)
   {
     generated = texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT, nullptr);
     bool first = true;
@@ -177,6 +192,10 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   this->LastGenerationMode = generated ? GPU_GENERATION : CPU_GENERATION;
   if (!generated)
   {
+    if (tryGPU)
+    {
+      gather(true); // the GPU could not build it: the CPU needs the particles after all
+    }
     if (!internals.Volume->ComputeOnCPU(positions, radii))
     {
       return;

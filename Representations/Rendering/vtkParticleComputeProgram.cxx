@@ -20,28 +20,28 @@ public:
 
 namespace
 {
-std::string ShaderLog(GLuint shader)
+// The info log of a shader or program (the GL query functions of either).
+template <class GetIv, class GetLog>
+std::string InfoLog(GLuint object, GetIv getIv, GetLog getLog)
 {
   GLint length = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  getIv(object, GL_INFO_LOG_LENGTH, &length);
   std::vector<char> log(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
   if (length > 0)
   {
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    getLog(object, length, nullptr, log.data());
   }
   return log.data();
 }
 
+std::string ShaderLog(GLuint shader)
+{
+  return InfoLog(shader, glGetShaderiv, glGetShaderInfoLog);
+}
+
 std::string ProgramLog(GLuint program)
 {
-  GLint length = 0;
-  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-  std::vector<char> log(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
-  if (length > 0)
-  {
-    glGetProgramInfoLog(program, length, nullptr, log.data());
-  }
-  return log.data();
+  return InfoLog(program, glGetProgramiv, glGetProgramInfoLog);
 }
 
 std::string NumberedSource(const std::string& source)

@@ -173,11 +173,14 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
     vtkErrorMacro(<< (voxels == 0 ? std::string("No grid (SetUpGrid).") : why));
     return false;
   }
-  const std::string source = vtkParticleShaders::Get("DensityVolume");
-  const size_t afterVersion = source.find('\n') + 1;
-  internals.Splat->SetSource(
-    source.substr(0, afterVersion) + "#define PR_DENSITY_SPLAT\n" + source.substr(afterVersion));
-  internals.Convert->SetSource(source);
+  if (!internals.Splat->IsBuilt() || !internals.Convert->IsBuilt())
+  {
+    const std::string source = vtkParticleShaders::Get("DensityVolume");
+    const size_t afterVersion = source.find('\n') + 1;
+    internals.Splat->SetSource(
+      source.substr(0, afterVersion) + "#define PR_DENSITY_SPLAT\n" + source.substr(afterVersion));
+    internals.Convert->SetSource(source);
+  }
   if (!internals.Splat->Build(context) || !internals.Convert->Build(context))
   {
     return false;

@@ -356,6 +356,25 @@ bool vtkParticleImageComparison::WriteErrorMap(
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkParticleImageComparison::ExtractRGB(vtkImageData* rgba)
+{
+  auto rgb = vtkSmartPointer<vtkImageData>::New();
+  rgb->SetDimensions(rgba->GetDimensions());
+  rgb->AllocateScalars(VTK_DOUBLE, 3);
+  vtkDataArray* in = rgba->GetPointData()->GetScalars();
+  vtkDataArray* out = rgb->GetPointData()->GetScalars();
+  const int components = std::min(3, in->GetNumberOfComponents());
+  for (vtkIdType i = 0; i < in->GetNumberOfTuples(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      out->SetComponent(i, k, in->GetComponent(i, std::min(k, components - 1)));
+    }
+  }
+  return rgb;
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleImageComparison::WritePNG(vtkImageData* image, const char* fileName)
 {
   ImageValues values;

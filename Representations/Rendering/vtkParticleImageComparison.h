@@ -25,6 +25,7 @@
 
 #include "vtkObject.h"
 #include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkSmartPointer.h"            // for vtkSmartPointer
 
 class vtkDataArray;
 class vtkIdTypeArray;
@@ -118,6 +119,12 @@ public:
    */
   static bool WriteErrorMap(
     vtkImageData* a, vtkImageData* b, vtkDataArray* excluded, const char* fileName, double scale);
+
+  /**
+   * The first three components (RGB) of a colour image, as a new 3-component double image (e.g.
+   * to compare RGB only, when the alphas of two images mean different things).
+   */
+  static vtkSmartPointer<vtkImageData> ExtractRGB(vtkImageData* rgba);
 
   /**
    * Write a colour image (any type/scale accepted by Compare, 1-4 components) as an 8-bit PNG.

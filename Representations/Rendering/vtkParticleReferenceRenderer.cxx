@@ -379,85 +379,16 @@ public:
     {
       IntersectSphere(cam, o, d, spheres[i], i, best);
     }
-    if (this->Cells.empty())
-    {
-      return;
-    }
-    // clip the ray to the grid box
-    double t0 = tMin;
-    double t1 = tMax;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (d[k] != 0.0)
-      {
-        double a = (this->Lo[k] - o[k]) / d[k];
-        double b = (this->Hi[k] - o[k]) / d[k];
-        if (a > b)
-        {
-          std::swap(a, b);
-        }
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-      }
-      else if (o[k] < this->Lo[k] || o[k] > this->Hi[k])
-      {
-        return;
-      }
-    }
-    if (!(t0 <= t1))
-    {
-      return;
-    }
-    int cell[3];
-    int step[3];
-    double tNext[3];
-    double tDelta[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      cell[k] = this->CellIndex(o[k] + t0 * d[k], k);
-      if (d[k] > 0.0)
-      {
-        step[k] = 1;
-        tNext[k] = (this->Lo[k] + (cell[k] + 1) * this->CellSize[k] - o[k]) / d[k];
-        tDelta[k] = this->CellSize[k] / d[k];
-      }
-      else if (d[k] < 0.0)
-      {
-        step[k] = -1;
-        tNext[k] = (this->Lo[k] + cell[k] * this->CellSize[k] - o[k]) / d[k];
-        tDelta[k] = -this->CellSize[k] / d[k];
-      }
-      else
-      {
-        step[k] = 0;
-        tNext[k] = std::numeric_limits<double>::infinity();
-        tDelta[k] = std::numeric_limits<double>::infinity();
-      }
-    }
-    for (;;)
-    {
-      const size_t c = this->Flat(cell[0], cell[1], cell[2]);
+    this->Walk(o, d, tMin, tMax, [&](size_t c, double cellExit, double t1) {
       for (std::uint64_t r = this->Cells[c]; r < this->Cells[c + 1]; ++r)
       {
         const std::uint32_t i = this->References[r];
         IntersectSphere(cam, o, d, spheres[i], i, best);
       }
-      const int axis =
-        (tNext[0] < tNext[1]) ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2);
-      const double cellExit = tNext[axis];
       // a hit inside this cell cannot be beaten by spheres of later cells; the margin covers
       // the rounding of the cell boundaries
-      if (best.T <= cellExit - 1e-12 * std::abs(cellExit) || cellExit > t1)
-      {
-        return;
-      }
-      cell[axis] += step[axis];
-      if (cell[axis] < 0 || cell[axis] >= this->N[axis])
-      {
-        return;
-      }
-      tNext[axis] += tDelta[axis];
-    }
+      return !(best.T <= cellExit - 1e-12 * std::abs(cellExit) || cellExit > t1);
+    });
   }
 
   // Every sphere referenced by a cell the ray crosses between tMin and tMax, plus the large
@@ -466,6 +397,25 @@ public:
     std::vector<std::uint32_t>& out) const
   {
     out.insert(out.end(), this->Large.begin(), this->Large.end());
+    this->Walk(o, d, tMin, tMax, [&](size_t c, double cellExit, double t1) {
+      out.insert(out.end(), this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c]),
+        this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c + 1]));
+      // the cell boundaries are rounded: continue a little past t1
+      return !(cellExit > t1 + 1e-12 * std::abs(t1));
+    });
+  }
+
+  const int* GetResolution() const { return this->N; }
+  size_t GetNumberOfReferences() const { return this->References.size(); }
+  size_t GetNumberOfLarge() const { return this->Large.size(); }
+
+private:
+  // 3D-DDA through the cells the ray crosses between tMin and tMax (clipped to the grid box),
+  // front to back: visit(cell, t where the ray leaves it, end of the clipped ray) returns
+  // whether to go on.
+  template <class Visit>
+  void Walk(const double o[3], const double d[3], double tMin, double tMax, Visit visit) const
+  {
     if (this->Cells.empty())
     {
       return;
@@ -522,13 +472,9 @@ public:
     }
     for (;;)
     {
-      const size_t c = this->Flat(cell[0], cell[1], cell[2]);
-      out.insert(out.end(), this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c]),
-        this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c + 1]));
       const int axis =
         (tNext[0] < tNext[1]) ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2);
-      // the cell boundaries are rounded: continue a little past t1
-      if (tNext[axis] > t1 + 1e-12 * std::abs(t1))
+      if (!visit(this->Flat(cell[0], cell[1], cell[2]), tNext[axis], t1))
       {
         return;
       }
@@ -541,11 +487,6 @@ public:
     }
   }
 
-  const int* GetResolution() const { return this->N; }
-  size_t GetNumberOfReferences() const { return this->References.size(); }
-  size_t GetNumberOfLarge() const { return this->Large.size(); }
-
-private:
   int CellIndex(double x, int k) const
   {
     const double f = (x - this->Lo[k]) / this->CellSize[k];

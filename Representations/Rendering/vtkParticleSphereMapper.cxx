@@ -451,7 +451,17 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
   // would otherwise use gl_PrimitiveID plus the offset of a polygon mapper's cell batches).
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "particleIdVSOutput", true);
+  // A particle's colour is one value for its whole imposter: pass VTK's scalar colour flat, not
+  // interpolated (interpolating a constant rounds, e.g. an alpha of 1 to 1 - 6e-8).
+  vtkShaderProgram::Substitute(fs, "in vec4 vertexColorVSOutput;", "flat in vec4 vertexColorVSOutput;");
   shaders[vtkShader::Fragment]->SetSource(fs);
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vs, "out vec4 vertexColorVSOutput;", "flat out vec4 vertexColorVSOutput;");
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  std::string gs = shaders[vtkShader::Geometry]->GetSource();
+  vtkShaderProgram::Substitute(gs, "in vec4 vertexColorVSOutput[];", "flat in vec4 vertexColorVSOutput[];");
+  vtkShaderProgram::Substitute(gs, "out vec4 vertexColorGSOutput;", "flat out vec4 vertexColorGSOutput;");
+  shaders[vtkShader::Geometry]->SetSource(gs);
   // Includes added by the replacements and render passes.
   for (auto type : { vtkShader::Vertex, vtkShader::Geometry, vtkShader::Fragment })
   {

@@ -51,11 +51,6 @@ enum class Variant
   Translucent // the emission-absorption composite of the translucent stage
 };
 
-// VTK's fragment opacity is interpolated (vertexColorVSOutput is smooth): a constant 1 comes out
-// as 1 - 6e-8 at some fragments. Opacities this close to 1 are 1; the next lower value VTK can
-// produce from colours is 254/255.
-#define PR_OPAQUE_DEFINE "#define PR_OPAQUE 0.999999\n"
-
 // GS culling modes (uniform prCullMode)
 const int CullOpaqueStage = 0;    // opaque variant: only Theta_a = 1
 const int CullAllVisible = 1;     // either variant: everything with Theta_a > 0
@@ -90,6 +85,8 @@ public:
   // shader variant being built and the culling mode of the next draw
   Variant Building = Variant::Opaque;
   int CullMode = CullOpaqueStage;
+  // scalar colours carry alpha < 1 (set per translucent frame)
+  bool ScalarAlpha = false;
 
   // sorting
   vtkNew<vtkParticleComputeProgram> KeyProgram;
@@ -363,11 +360,10 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
   if (!translucent)
   {
     vtkParticleShaders::ReplaceHook(fs, "//PR::Sphere::Dec",
-      "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n" PR_OPAQUE_DEFINE
-      "//PR::Sphere::Dec");
+      "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n//PR::Sphere::Dec");
     // the opaque stage keeps Theta_i = Theta_a * opacity = 1 only; picking keeps all
     vtkParticleShaders::ReplaceHook(fs, "//PR::Shading::Impl",
-      "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= PR_OPAQUE))\n"
+      "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= 1.0))\n"
       "  {\n"
       "    discard;\n"
       "  }\n"
@@ -378,7 +374,7 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     // no depth writes: the early-termination mask is tested before shading
     vtkShaderProgram::Substitute(fs, "gl_FragDepth = depth;", "");
     std::ostringstream dec;
-    dec << "flat in float opticalDepthVSOutput;\n" PR_OPAQUE_DEFINE
+    dec << "flat in float opticalDepthVSOutput;\n"
            "uniform float prVolumeMix;\n"
            "uniform vec2 prActorOpacity;\n"
            "uniform int prCullMode;\n"
@@ -396,14 +392,9 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
       "    // vtkTransparentSphereMapper: Theta_i = Theta_a * opacity, as an optical depth\n"
       "    float kappaA = opticalDepthVSOutput;\n"
       "    // the actor's opacity and transmittance: from the CPU in double when the opacity is\n"
-      "    // the actor's alone (no scalar alpha), else from VTK's interpolated opacity\n"
+      "    // the actor's alone (no scalar alpha), else from VTK's opacity\n"
       "    float thetaO = prActorOpacity.x >= 0.0 ? prActorOpacity.x : opacity;\n"
       "    float tauO = prActorOpacity.x >= 0.0 ? prActorOpacity.y : 1.0 - opacity;\n"
-      "    if (prActorOpacity.x < 0.0 && opacity >= PR_OPAQUE)\n"
-      "    {\n"
-      "      thetaO = 1.0;\n"
-      "      tauO = 0.0;\n"
-      "    }\n"
       "    float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);\n"
       "    float tauA = kappaA < 0.0 ? 0.0 : exp(-kappaA);\n"
       "    float kappa = (tauO == 0.0 && kappaA >= 0.0) ? kappaA\n"
@@ -475,10 +466,6 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     fs = vtkParticleShaders::ResolveIncludes(fs);
   }
   shaders[vtkShader::Fragment]->SetSource(fs);
-  if (getenv("PR_DUMP_SHADERS"))
-  {
-    std::cerr << "=== VS\n" << vs << "\n=== GS\n" << gs << "\n=== FS\n" << fs << "\n";
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -495,7 +482,7 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
     // Opacity and 1 - Opacity from double (Opacity = 1 - 1e-7 or 1e-6 does not survive 1 - x in
     // float); (-1, -1) when scalar colours carry alpha and the shader uses VTK's opacity
     const double opacity = std::min(1.0, std::max(0.0, act->GetProperty()->GetOpacity()));
-    const bool scalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
+    const bool scalarAlpha = internals.ScalarAlpha;
     const float actorOpacity[2] = { scalarAlpha ? -1.0f : static_cast<float>(opacity),
       scalarAlpha ? -1.0f : static_cast<float>(1.0 - opacity) };
     program->SetUniform2f("prActorOpacity", actorOpacity);
@@ -650,8 +637,10 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
   vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTriStrips];
   internals.Building = Variant::Translucent;
   // Theta_a = 1 particles are drawn opaque unless the actor or its colours lower the opacity
-  const bool opaqueDrawnSeparately = act->GetProperty()->GetOpacity() >= 1.0 &&
-    !this->Superclass::HasTranslucentPolygonalGeometry();
+  // (scalar colours with alpha < 1: asked once per frame, used here and by the shader uniforms)
+  internals.ScalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
+  const bool opaqueDrawnSeparately =
+    act->GetProperty()->GetOpacity() >= 1.0 && !internals.ScalarAlpha;
   internals.CullMode = opaqueDrawnSeparately ? CullTranslucentOnly : CullAllVisible;
   this->UpdateShaders(cellBO, ren, act);
   if (cellBO.Program)
@@ -801,7 +790,10 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
     return false;
   }
   vtkParticleComputeProgram* keys = internals.KeyProgram;
-  keys->SetSource(vtkParticleShaders::Get("ParticleDepthKeys"));
+  if (!keys->IsBuilt())
+  {
+    keys->SetSource(vtkParticleShaders::Get("ParticleDepthKeys"));
+  }
   if (!keys->Build(ctx))
   {
     internals.SortState.clear();

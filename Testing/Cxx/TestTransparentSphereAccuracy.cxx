@@ -133,23 +133,6 @@ void MarkSilhouettes(vtkParticleReferenceRenderer* reference, vtkRenderer* rende
   }
 }
 
-vtkSmartPointer<vtkImageData> RGB(vtkImageData* rgba)
-{
-  vtkNew<vtkImageData> rgb;
-  rgb->SetDimensions(rgba->GetDimensions());
-  rgb->AllocateScalars(VTK_DOUBLE, 3);
-  vtkDataArray* in = rgba->GetPointData()->GetScalars();
-  vtkDataArray* out = rgb->GetPointData()->GetScalars();
-  for (vtkIdType i = 0; i < in->GetNumberOfTuples(); ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      out->SetComponent(i, k, in->GetComponent(i, k));
-    }
-  }
-  return rgb;
-}
-
 struct Scene
 {
   std::string Name;
@@ -255,8 +238,9 @@ bool RunScene(const Scene& scene, vtkPolyData* particles, double radius, double 
       mask->SetValue(i, mask->GetValue(i) | edges->GetValue(i));
     }
   }
-  vtkSmartPointer<vtkImageData> gpuRGB = RGB(gpu);
-  vtkSmartPointer<vtkImageData> refRGB = RGB(reference->GetColorImage());
+  vtkSmartPointer<vtkImageData> gpuRGB = vtkParticleImageComparison::ExtractRGB(gpu);
+  vtkSmartPointer<vtkImageData> refRGB =
+    vtkParticleImageComparison::ExtractRGB(reference->GetColorImage());
   vtkParticleImageComparison::Result result;
   vtkParticleImageComparison::Compare(gpuRGB, refRGB, mask, 2.0 / 255.0, result);
   // how much of the image is translucent particles (where the comparison is meaningful)
