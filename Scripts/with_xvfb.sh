@@ -8,7 +8,9 @@ if [ "${PR_USE_EXISTING_DISPLAY:-0}" = 1 ] && [ -n "${DISPLAY:-}" ]; then
 fi
 fifo=$(mktemp -u)
 mkfifo "$fifo"
-Xvfb -displayfd 3 -screen 0 1600x1200x24 -nolisten tcp 3>"$fifo" >/dev/null 2>&1 &
+# -noreset: without it Xvfb resets when its last client disconnects, and a window opened
+# during the reset aborts with "bad X server connection" (tests that close and reopen windows)
+Xvfb -noreset -displayfd 3 -screen 0 1600x1200x24 -nolisten tcp 3>"$fifo" >/dev/null 2>&1 &
 xvfb_pid=$!
 trap 'kill $xvfb_pid 2>/dev/null || true; rm -f "$fifo"' EXIT
 read -r display <"$fifo"

@@ -69,6 +69,12 @@ void vtkParticleRenderView::SetDensityVolumeFetchDistance(double distance)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeSplat(int mode)
+{
+  this->DensityVolumeAOPass->GetDensityVolume()->SetSplatMode(mode);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRenderView::SetDensityVolumeRetrieval(int mode)
 {
   this->DensityVolumeAOPass->SetRetrievalMode(mode);

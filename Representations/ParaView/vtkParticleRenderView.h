@@ -89,6 +89,7 @@ public:
   void SetDensityVolumeResolution(int resolution);
   void SetDensityVolumeFactor(double factor);
   void SetDensityVolumeFetchDistance(double distance);
+  void SetDensityVolumeSplat(int mode);
   void SetDensityVolumeRetrieval(int mode);
   void SetDensityVolumeGeneration(int mode);
   vtkDensityVolumeAOPass* GetDensityVolumeAOPass();

@@ -17,6 +17,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "vtk_glew.h"
+
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -32,6 +34,7 @@ public:
   // what the volume was built from
   std::vector<double> BuiltState;
   bool TextureValid = false;
+  bool Attempted = false; // a build was attempted for BuiltState
   // the renderer being drawn (between PreRender and PostRender)
   vtkRenderer* Renderer = nullptr;
 };
@@ -79,12 +82,19 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   }
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
   state.push_back(this->GenerationMode);
-  if (state == internals.BuiltState && internals.TextureValid)
+  if (state == internals.BuiltState && internals.Attempted)
   {
-    return;
+    return; // built already (or failed for the same input: no retry, no repeated message)
   }
   internals.BuiltState = state;
+  internals.Attempted = true;
   internals.TextureValid = false;
+  if (particles.empty())
+  {
+    vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
+                       "in the renderer: no ambient occlusion to compute.");
+    return;
+  }
 
   // All particles in world coordinates: their bounds and mean radius set up the grid; the
   // positions and radii themselves are kept only for a CPU build.
@@ -120,10 +130,10 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
       {
         const double radius = r->GetValue(i) * scale;
         double p[4] = { 0.0, 0.0, 0.0, 1.0 };
-        if (radius > 0.0)
+        input->GetPoint(i, p);
+        m->MultiplyPoint(p, p);
+        if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
         {
-          input->GetPoint(i, p);
-          m->MultiplyPoint(p, p);
           for (int k = 0; k < 3; ++k)
           {
             bounds[2 * k] = std::min(bounds[2 * k], p[k]);
@@ -144,9 +154,18 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
     vtkParticleComputeProgram::IsSupported(
       vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()), nullptr);
   gather(!tryGPU);
-  if (valid == 0 || !internals.Volume->SetUpGrid(bounds, radiusSum / valid))
+  if (valid == 0)
   {
-    return; // no particles: no occlusion
+    vtkWarningMacro(<< "The particle props have no particle with a finite position and a "
+                       "radius > 0: no ambient occlusion.");
+    return;
+  }
+  // the GPU's largest 3D texture bounds the voxels per axis
+  GLint maxTexture3D = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxTexture3D);
+  if (!internals.Volume->SetUpGrid(bounds, radiusSum / valid, maxTexture3D))
+  {
+    return;
   }
   const int* dims = internals.Volume->GetDimensions();
   vtkOpenGLRenderWindow* ctx =
@@ -358,6 +377,7 @@ void vtkDensityVolumeAOPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Internals->Volume->ReleaseGraphicsResources(w);
   this->Internals->Texture->ReleaseGraphicsResources(w);
   this->Internals->TextureValid = false;
+  this->Internals->Attempted = false;
   this->Superclass::ReleaseGraphicsResources(w);
 }
 

@@ -47,9 +47,15 @@ vtkParticleDensityVolume::~vtkParticleDensityVolume()
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleDensityVolume::SetUpGrid(const double bounds[6], double meanRadius)
+bool vtkParticleDensityVolume::SetUpGrid(
+  const double bounds[6], double meanRadius, int deviceAxisLimit)
 {
-  if (!(meanRadius > 0.0) || !std::isfinite(meanRadius) || !vtkMath::AreBoundsInitialized(bounds))
+  bool finite = std::isfinite(meanRadius);
+  for (int k = 0; k < 6; ++k)
+  {
+    finite = finite && std::isfinite(bounds[k]);
+  }
+  if (!(meanRadius > 0.0) || !finite || !vtkMath::AreBoundsInitialized(bounds))
   {
     vtkErrorMacro(<< "Cannot set up a density volume for mean radius " << meanRadius
                   << " and bounds " << bounds[0] << " " << bounds[1] << " " << bounds[2] << " "
@@ -69,19 +75,46 @@ bool vtkParticleDensityVolume::SetUpGrid(const double bounds[6], double meanRadi
   {
     edge = longest / this->Resolution;
   }
-  // no axis beyond MaximumResolution: grow the (cubic) voxels instead
-  if (longest / edge > this->MaximumResolution)
+  // no axis beyond MaximumResolution or the device's limit: grow the (cubic) voxels instead
+  int axisLimit = this->MaximumResolution;
+  if (deviceAxisLimit > 0 && deviceAxisLimit < axisLimit)
+  {
+    axisLimit = deviceAxisLimit;
+  }
+  if (longest / edge > axisLimit)
   {
     vtkWarningMacro(<< "A density volume of " << std::ceil(longest / edge)
-                    << " voxels along the longest axis exceeds MaximumResolution "
-                    << this->MaximumResolution << ": using " << this->MaximumResolution << ".");
-    edge = longest / this->MaximumResolution;
+                    << " voxels along the longest axis exceeds the limit of " << axisLimit
+                    << (axisLimit == this->MaximumResolution ? " (MaximumResolution)"
+                                                            : " (the GPU's largest 3D texture)")
+                    << ": using " << axisLimit << ".");
+    edge = longest / axisLimit;
+  }
+  auto count = [&](double e) {
+    double voxels = 1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      voxels *= std::max(1.0, std::ceil(extent[k] / e - 1e-9));
+    }
+    return voxels;
+  };
+  if (count(edge) > static_cast<double>(this->MaximumVoxelCount))
+  {
+    const double requested = count(edge);
+    // grow the edge until the grid fits (the flat axes keep one voxel)
+    while (count(edge) > static_cast<double>(this->MaximumVoxelCount))
+    {
+      edge *= std::max(1.001, 0.999 * std::cbrt(count(edge) / this->MaximumVoxelCount));
+    }
+    vtkWarningMacro(<< "A density volume of " << requested << " voxels exceeds MaximumVoxelCount "
+                    << this->MaximumVoxelCount << ": using voxels of edge " << edge << " ("
+                    << count(edge) << " voxels).");
   }
   this->VoxelSize = edge;
   for (int k = 0; k < 3; ++k)
   {
     this->Dimensions[k] = std::max(1,
-      std::min(this->MaximumResolution, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
+      std::min(axisLimit, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
     const double centre = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
     this->Origin[k] = centre - 0.5 * this->Dimensions[k] * edge;
   }
@@ -106,6 +139,7 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
   const int* dims = this->Dimensions;
   const double* origin = this->Origin;
   const double inverseEdge = 1.0 / this->VoxelSize;
+  const bool trilinear = this->SplatMode == TRILINEAR_SPLAT;
 
   // each thread into its own partial volume (no races), then a sum over the voxels
   vtkSMPThreadLocal<std::vector<float>> partial;
@@ -123,15 +157,49 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
         continue;
       }
       positions->GetTuple(i, p);
-      int v[3];
-      for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       {
-        v[k] = std::min(dims[k] - 1,
-          std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) * inverseEdge))));
+        continue; // NaN/Inf positions are not drawn either
       }
       const double radius = r[i];
-      local[v[0] + dims[0] * (v[1] + static_cast<vtkIdType>(dims[1]) * v[2])] +=
-        static_cast<float>(unit * radius * radius * radius);
+      const double contribution = unit * radius * radius * radius;
+      if (!trilinear)
+      {
+        int v[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          v[k] = std::min(dims[k] - 1,
+            std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) * inverseEdge))));
+        }
+        local[v[0] + dims[0] * (v[1] + static_cast<vtkIdType>(dims[1]) * v[2])] +=
+          static_cast<float>(contribution);
+        continue;
+      }
+      // cloud in cell: the 8 voxels whose centres surround p, tent weights; corners beyond the
+      // grid fold onto its boundary voxels (nothing is lost)
+      int lower[3];
+      double weight[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const double v = (p[k] - origin[k]) * inverseEdge - 0.5;
+        const double f = std::floor(v);
+        lower[k] = static_cast<int>(std::max(-1.0, std::min(f, static_cast<double>(dims[k]))));
+        weight[k] = std::min(1.0, std::max(0.0, v - f));
+      }
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        double w = contribution;
+        vtkIdType index = 0;
+        vtkIdType step = 1;
+        for (int k = 0; k < 3; ++k)
+        {
+          const int high = (corner >> k) & 1;
+          w *= high ? weight[k] : 1.0 - weight[k];
+          index += step * std::min(dims[k] - 1, std::max(0, lower[k] + high));
+          step *= dims[k];
+        }
+        local[index] += static_cast<float>(w);
+      }
     }
   });
   this->Volume.assign(voxels, 0.0f);
@@ -228,6 +296,7 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   splat->SetUniformui("positionStride", positionStride);
   splat->SetUniformMatrix4x4("toVoxel", toVoxel);
   splat->SetUniformf("radiusScale", static_cast<float>(radiusScale));
+  splat->SetUniformi("trilinear", this->SplatMode == TRILINEAR_SPLAT ? 1 : 0);
   glUniform3i(splat->GetUniformLocation("dimensions"), this->Dimensions[0], this->Dimensions[1],
     this->Dimensions[2]);
   splat->SetUniformf("unitContribution",
@@ -317,7 +386,10 @@ void vtkParticleDensityVolume::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "MaximumResolution: " << this->MaximumResolution << "\n";
+  os << indent << "MaximumVoxelCount: " << this->MaximumVoxelCount << "\n";
   os << indent << "DensityFactor: " << this->DensityFactor << "\n";
+  os << indent << "SplatMode: "
+     << (this->SplatMode == TRILINEAR_SPLAT ? "Trilinear" : "NearestVoxel") << "\n";
   os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
      << this->Dimensions[2] << "\n";
   os << indent << "VoxelSize: " << this->VoxelSize << "\n";

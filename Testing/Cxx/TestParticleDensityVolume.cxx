@@ -1,8 +1,9 @@
 // vtkParticleDensityVolume (Grottel et al. 2012, Eq. 5): the automatic grid (cubic voxels of four
-// mean radii, degenerate boxes), the CPU volume against a direct evaluation of Eq. 5, and the GPU
+// mean radii, degenerate boxes), the CPU volume against a direct evaluation of Eq. 5 (nearest
+// voxel, the paper's splat, and the cloud-in-cell splat written out as tent weights), and the GPU
 // volume against the CPU one (equal up to the GPU's fixed point, 2^-20 voxel volumes per
 // particle) on the LAMMPS droplets, a user resolution, all particles in a plane, at one point
-// (saturated voxel, no overflow), one particle and none.
+// (saturated voxel, no overflow), NaN/Inf positions, one particle and none.
 #include "prTestUtilities.h"
 
 #include "vtkDoubleArray.h"
@@ -38,7 +39,7 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   {
     double p[3];
     points->GetTuple(i, p);
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3 && std::isfinite(p[0] + p[1] + p[2]); ++k)
     {
       bounds[2 * k] = std::min(bounds[2 * k], p[k]);
       bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
@@ -71,14 +72,47 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   {
     double p[3];
     points->GetTuple(i, p);
-    int v[3];
-    for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(p[0] + p[1] + p[2]))
     {
-      v[k] = std::min(dims[k] - 1, std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) / edge))));
+      continue; // skipped, like the mappers skip them
     }
     const double r = radii->GetValue(i);
-    direct[v[0] + dims[0] * (v[1] + dims[1] * v[2])] +=
-      4.0 / 3.0 * vtkMath::Pi() * r * r * r / (edge * edge * edge);
+    const double amount = 4.0 / 3.0 * vtkMath::Pi() * r * r * r / (edge * edge * edge);
+    if (volume->GetSplatMode() == vtkParticleDensityVolume::NEAREST_VOXEL_SPLAT)
+    {
+      int v[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        v[k] = std::min(dims[k] - 1,
+          std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) / edge))));
+      }
+      direct[v[0] + dims[0] * (v[1] + dims[1] * v[2])] += amount;
+      continue;
+    }
+    // cloud in cell, written out: the tent weight max(0, 1 - |c - t|) of every voxel centre c
+    // near the particle (t: its position in voxel-centre units, clamped into the grid, which
+    // folds the outside onto the boundary voxels)
+    double t[3];
+    int from[3];
+    int to[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      t[k] = std::min(dims[k] - 1.0, std::max(0.0, (p[k] - origin[k]) / edge - 0.5));
+      from[k] = std::max(0, static_cast<int>(t[k]) - 2);
+      to[k] = std::min(dims[k] - 1, static_cast<int>(t[k]) + 2);
+    }
+    for (int z = from[2]; z <= to[2]; ++z)
+    {
+      for (int y = from[1]; y <= to[1]; ++y)
+      {
+        for (int x = from[0]; x <= to[0]; ++x)
+        {
+          const double w = std::max(0.0, 1.0 - std::abs(t[0] - x)) *
+            std::max(0.0, 1.0 - std::abs(t[1] - y)) * std::max(0.0, 1.0 - std::abs(t[2] - z));
+          direct[x + dims[0] * (y + dims[1] * z)] += amount * w;
+        }
+      }
+    }
   }
   double worstDirect = 0.0;
   for (size_t j = 0; j < cpu.size(); ++j)
@@ -156,6 +190,70 @@ vtkSmartPointer<vtkFloatArray> Radii(vtkIdType n, float r)
   radii->Fill(r);
   return radii;
 }
+
+bool Cases(int argc, char* argv[], vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume,
+  const std::string& prefix)
+{
+  bool ok = true;
+
+  vtkSmartPointer<vtkPolyData> droplets =
+    prTest::ReadPolyData(prTest::DataFile(argc, argv, "lj_droplets.vtp"));
+  if (!droplets)
+  {
+    return false;
+  }
+  vtkDataArray* points = droplets->GetPoints()->GetData();
+  const vtkIdType n = droplets->GetNumberOfPoints();
+  // LAMMPS droplets, automatic grid: voxels of 4 mean radii = 2.0 over a ~80 sigma box
+  int automatic[3] = { 40, 40, 40 };
+  ok &= Compare(ctx, volume, points, Radii(n, 0.5), prefix + "droplets, automatic", automatic);
+  volume->SetDensityFactor(1.0 / 0.74);
+  ok &= Compare(ctx, volume, points, Radii(n, 0.5), prefix + "droplets, g = 1/0.74");
+  volume->SetDensityFactor(1.0);
+  volume->SetResolution(16);
+  int user[3] = { 16, 16, 16 };
+  ok &= Compare(ctx, volume, points, Radii(n, 0.5), prefix + "droplets, resolution 16", user);
+  volume->SetResolution(0);
+
+  // all particles in the plane z = 3: one voxel across z
+  vtkNew<vtkDoubleArray> plane;
+  plane->SetNumberOfComponents(3);
+  for (int i = 0; i < 30; ++i)
+  {
+    for (int j = 0; j < 20; ++j)
+    {
+      plane->InsertNextTuple3(i * 1.1, j * 1.1, 3.0);
+    }
+  }
+  int flat[3] = { 16, 11, 1 };
+  ok &= Compare(ctx, volume, plane, Radii(600, 0.5), prefix + "plane", flat);
+  // NaN and Inf positions are skipped
+  plane->InsertNextTuple3(std::nan(""), 1.0, 3.0);
+  plane->InsertNextTuple3(1.0, HUGE_VAL, 3.0);
+  ok &= Compare(ctx, volume, plane, Radii(602, 0.5), prefix + "plane with NaN and Inf", flat);
+
+  // all at one point: one voxel, saturated, no integer overflow on the GPU
+  vtkNew<vtkDoubleArray> point;
+  point->SetNumberOfComponents(3);
+  for (int i = 0; i < 5000; ++i)
+  {
+    point->InsertNextTuple3(1.0, 2.0, 3.0);
+  }
+  int single[3] = { 1, 1, 1 };
+  ok &= Compare(ctx, volume, point, Radii(5000, 0.5), prefix + "one point", single);
+  ok &= prTest::Check(volume->GetVolume()[0] == 1.0f, prefix + "one point: saturated at 1");
+
+  // one particle, and none
+  vtkNew<vtkDoubleArray> one;
+  one->SetNumberOfComponents(3);
+  one->InsertNextTuple3(0.0, 0.0, 0.0);
+  ok &= Compare(ctx, volume, one, Radii(1, 0.5), prefix + "one particle", single);
+  vtkNew<vtkDoubleArray> none;
+  none->SetNumberOfComponents(3);
+  ok &= Compare(ctx, volume, none, Radii(0, 0.5), prefix + "no particle");
+
+  return ok;
+}
 }
 
 int TestParticleDensityVolume(int argc, char* argv[])
@@ -172,63 +270,20 @@ int TestParticleDensityVolume(int argc, char* argv[])
   }
   bool ok = true;
   vtkNew<vtkParticleDensityVolume> volume;
-
-  vtkSmartPointer<vtkPolyData> droplets =
-    prTest::ReadPolyData(prTest::DataFile(argc, argv, "lj_droplets.vtp"));
-  if (!droplets)
+  for (int mode : { vtkParticleDensityVolume::NEAREST_VOXEL_SPLAT,
+         vtkParticleDensityVolume::TRILINEAR_SPLAT })
   {
-    return EXIT_FAILURE;
+    volume->SetSplatMode(mode);
+    ok &= Cases(argc, argv, ctx, volume,
+      mode == vtkParticleDensityVolume::TRILINEAR_SPLAT ? "trilinear, " : "nearest, ");
   }
-  vtkDataArray* points = droplets->GetPoints()->GetData();
-  const vtkIdType n = droplets->GetNumberOfPoints();
-  // LAMMPS droplets, automatic grid: voxels of 4 mean radii = 2.0 over a ~80 sigma box
-  int automatic[3] = { 40, 40, 40 };
-  ok &= Compare(ctx, volume, points, Radii(n, 0.5), "droplets, automatic", automatic);
-  volume->SetDensityFactor(1.0 / 0.74);
-  ok &= Compare(ctx, volume, points, Radii(n, 0.5), "droplets, g = 1/0.74");
-  volume->SetDensityFactor(1.0);
-  volume->SetResolution(16);
-  int user[3] = { 16, 16, 16 };
-  ok &= Compare(ctx, volume, points, Radii(n, 0.5), "droplets, resolution 16", user);
-  volume->SetResolution(0);
-
-  // all particles in the plane z = 3: one voxel across z
-  vtkNew<vtkDoubleArray> plane;
-  plane->SetNumberOfComponents(3);
-  for (int i = 0; i < 30; ++i)
-  {
-    for (int j = 0; j < 20; ++j)
-    {
-      plane->InsertNextTuple3(i * 1.1, j * 1.1, 3.0);
-    }
-  }
-  int flat[3] = { 16, 11, 1 };
-  ok &= Compare(ctx, volume, plane, Radii(600, 0.5), "plane", flat);
-
-  // all at one point: one voxel, saturated, no integer overflow on the GPU
-  vtkNew<vtkDoubleArray> point;
-  point->SetNumberOfComponents(3);
-  for (int i = 0; i < 5000; ++i)
-  {
-    point->InsertNextTuple3(1.0, 2.0, 3.0);
-  }
-  int single[3] = { 1, 1, 1 };
-  ok &= Compare(ctx, volume, point, Radii(5000, 0.5), "one point", single);
-  ok &= prTest::Check(volume->GetVolume()[0] == 1.0f, "one point: saturated at 1");
-
-  // one particle, and none
-  vtkNew<vtkDoubleArray> one;
-  one->SetNumberOfComponents(3);
-  one->InsertNextTuple3(0.0, 0.0, 0.0);
-  ok &= Compare(ctx, volume, one, Radii(1, 0.5), "one particle", single);
-  vtkNew<vtkDoubleArray> none;
-  none->SetNumberOfComponents(3);
-  ok &= Compare(ctx, volume, none, Radii(0, 0.5), "no particle");
 
   // invalid input to SetUpGrid: an error, no grid
   const double bad[6] = { 0, 1, 0, 1, 0, 1 };
   volume->GlobalWarningDisplayOff();
   ok &= prTest::Check(!volume->SetUpGrid(bad, 0.0), "mean radius 0 refused");
+  const double infinite[6] = { 0, 1, 0, HUGE_VAL, 0, 1 };
+  ok &= prTest::Check(!volume->SetUpGrid(infinite, 0.5), "infinite bounds refused");
   volume->ReleaseGraphicsResources(window);
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
