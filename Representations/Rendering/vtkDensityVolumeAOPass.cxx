@@ -10,15 +10,19 @@
 #include "vtkParticleDensityVolume.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -109,6 +113,14 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   double bounds[6];
   double radiusSum = 0.0;
   vtkIdType valid = 0;
+  // in parallel (vtkSMPTools): per thread bounds, radius sum and count, merged afterwards
+  struct Partial
+  {
+    double Bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    double RadiusSum = 0.0;
+    vtkIdType Valid = 0;
+  };
   auto gather = [&](bool keep) {
     for (int k = 0; k < 3; ++k)
     {
@@ -119,35 +131,81 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
     valid = 0;
     positions->SetNumberOfTuples(keep ? total : 0);
     radii->SetNumberOfTuples(keep ? total : 0);
-    vtkIdType next = 0;
+    float* outPositions = keep ? positions->GetPointer(0) : nullptr;
+    float* outRadii = keep ? radii->GetPointer(0) : nullptr;
+    vtkIdType offset = 0;
     for (auto& item : particles)
     {
-      vtkFloatArray* r = item.second->GetParticleRadii();
-      vtkPolyData* input = item.second->GetInput();
-      const double scale = item.second->GetRadiusScaleVC(item.first);
-      vtkMatrix4x4* m = item.first->GetMatrix();
-      for (vtkIdType i = 0; i < r->GetNumberOfTuples(); ++i, ++next)
+      const vtkIdType n = item.second->GetParticleRadii()->GetNumberOfTuples();
+      vtkPoints* inputPoints = item.second->GetInput()->GetPoints();
+      if (n == 0 || !inputPoints || inputPoints->GetNumberOfPoints() < n)
       {
-        const double radius = r->GetValue(i) * scale;
-        double p[4] = { 0.0, 0.0, 0.0, 1.0 };
-        input->GetPoint(i, p);
-        m->MultiplyPoint(p, p);
-        if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
+        if (outRadii)
         {
+          std::fill(outRadii + offset, outRadii + offset + n, 0.0f); // skipped
+        }
+        offset += n; // nothing drawn (the mapper reported why)
+        continue;
+      }
+      const float* r = item.second->GetParticleRadii()->GetPointer(0);
+      vtkDataArray* points = inputPoints->GetData();
+      vtkFloatArray* floatPoints = vtkFloatArray::FastDownCast(points);
+      const float* xyz = floatPoints ? floatPoints->GetPointer(0) : nullptr;
+      const double scale = item.second->GetRadiusScaleVC(item.first);
+      const double* m = item.first->GetMatrix()->GetData();
+      vtkSMPThreadLocal<Partial> partials;
+      vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+        Partial& partial = partials.Local();
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const double radius = r[i] * scale;
+          double q[3];
+          if (xyz)
+          {
+            q[0] = xyz[3 * i];
+            q[1] = xyz[3 * i + 1];
+            q[2] = xyz[3 * i + 2];
+          }
+          else
+          {
+            points->GetTuple(i, q);
+          }
+          double p[3];
           for (int k = 0; k < 3; ++k)
           {
-            bounds[2 * k] = std::min(bounds[2 * k], p[k]);
-            bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
+            p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
           }
-          radiusSum += radius;
-          ++valid;
+          if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              partial.Bounds[2 * k] = std::min(partial.Bounds[2 * k], p[k]);
+              partial.Bounds[2 * k + 1] = std::max(partial.Bounds[2 * k + 1], p[k]);
+            }
+            partial.RadiusSum += radius;
+            ++partial.Valid;
+          }
+          if (outPositions)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              outPositions[3 * (offset + i) + k] = static_cast<float>(p[k]);
+            }
+            outRadii[offset + i] = static_cast<float>(radius > 0.0 ? radius : 0.0);
+          }
         }
-        if (keep)
+      });
+      for (const Partial& partial : partials)
+      {
+        for (int k = 0; k < 3; ++k)
         {
-          positions->SetTuple(next, p);
-          radii->SetValue(next, static_cast<float>(radius > 0.0 ? radius : 0.0));
+          bounds[2 * k] = std::min(bounds[2 * k], partial.Bounds[2 * k]);
+          bounds[2 * k + 1] = std::max(bounds[2 * k + 1], partial.Bounds[2 * k + 1]);
         }
+        radiusSum += partial.RadiusSum;
+        valid += partial.Valid;
       }
+      offset += n;
     }
   };
   const bool tryGPU = this->GenerationMode == GPU_GENERATION &&

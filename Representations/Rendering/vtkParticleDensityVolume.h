@@ -15,9 +15,10 @@
  * proposes as future work against its Fig. 6 artefact: with nearest-voxel splatting a crystal
  * whose lattice constant does not divide the voxel edge puts 2 or 3 atomic planes into
  * alternate voxels, and the AO of its faces shows a blocky beat pattern. On the FCC block of
- * Testing/Data (voxel edge 1.26 lattice constants) the interior density varies by a coefficient
- * of variation of 0.36 with the nearest-voxel splat and 0.20 with the trilinear one (0.20 is the
- * real variation: the block has a cylinder of smaller atoms); see Benchmarks/README.md. The total
+ * Testing/Data (automatic grid, voxel edge 1.26 lattice constants) the density of the interior
+ * voxels away from the cylinder of smaller atoms -- a uniform crystal -- varies with a
+ * coefficient of variation of 0.32 (0.28 ... 0.99) with the nearest-voxel splat and 0.019 with the
+ * trilinear one (Benchmarks/README.md, Benchmarks/results/ao_fcc_volume.csv). The total
  * is the same; near the grid's faces the weights of outside voxel centres fold onto the
  * boundary voxels. g = 1 by default; 1/0.74 makes a close-packed crystal
  * exactly opaque.
