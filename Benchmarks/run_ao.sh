@@ -15,6 +15,6 @@ results=${RESULTS_DIR:-$top/Benchmarks/results}
 mkdir -p "$results"
 export PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
 "$top/Scripts/with_xvfb.sh" /usr/bin/python3 "$top/Benchmarks/ao_study.py" \
-  --data "$top/Testing/Data" --out "$results" --samples "${SAMPLES:-256}"
+  --data "$top/Testing/Data" --out "$results" --samples "${SAMPLES:-256}" --frames 9
 "$top/Scripts/with_xvfb.sh" /usr/bin/python3 "$top/Benchmarks/ao_benchmark.py" \
   --out "$results" --counts "${COUNTS:-1e4,1e5,1e6}" --frames "${FRAMES:-9}"
