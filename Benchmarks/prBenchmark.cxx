@@ -22,19 +22,7 @@
 
 namespace
 {
-struct Options
-{
-  std::string Data;
-  std::vector<std::string> Mappers;
-  int Frames = 10;
-  int Width = 1024;
-  int Height = 768;
-  std::string Csv;
-  std::string Label;
-  std::string RadiusArray = "radius";
-  std::string ColorArray = "speed";
-  std::string ScreenshotDir;
-};
+using Options = prBench::CommonOptions;
 
 struct Result
 {
@@ -52,28 +40,10 @@ bool Parse(int argc, char* argv[], Options& o)
   {
     const std::string a = argv[i];
     auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--data")
-      o.Data = next();
-    else if (a == "--mapper")
-      o.Mappers.push_back(next());
-    else if (a == "--frames")
-      o.Frames = std::atoi(next().c_str());
-    else if (a == "--size")
-    {
-      if (!prBench::ParseSize(next(), o.Width, o.Height))
-        return false;
-    }
-    else if (a == "--csv")
-      o.Csv = next();
-    else if (a == "--label")
-      o.Label = next();
-    else if (a == "--radius-array")
-      o.RadiusArray = next();
-    else if (a == "--color-array")
-      o.ColorArray = next();
-    else if (a == "--screenshot")
-      o.ScreenshotDir = next();
-    else
+    const int common = prBench::ParseCommonOption(a, next, o);
+    if (common < 0)
+      return false;
+    if (common == 0)
     {
       std::cerr << "unknown argument " << a << "\n";
       return false;

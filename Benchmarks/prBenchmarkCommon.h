@@ -25,6 +25,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -45,6 +47,49 @@ inline double Median(std::vector<double> v)
 inline bool ParseSize(const std::string& s, int& width, int& height)
 {
   return std::sscanf(s.c_str(), "%dx%d", &width, &height) == 2 && width > 0 && height > 0;
+}
+
+// The command-line options both drivers have.
+struct CommonOptions
+{
+  std::string Data;
+  std::vector<std::string> Mappers;
+  int Frames = 10;
+  int Width = 1024;
+  int Height = 768;
+  std::string Csv;
+  std::string Label;
+  std::string RadiusArray = "radius";
+  std::string ColorArray = "speed";
+  std::string ScreenshotDir;
+};
+
+// Parses argument a if it is one of CommonOptions (next() returns its value): 1 if it was,
+// 0 if it is not a common option, -1 if its value is invalid.
+inline int ParseCommonOption(
+  const std::string& a, const std::function<std::string()>& next, CommonOptions& o)
+{
+  if (a == "--data")
+    o.Data = next();
+  else if (a == "--mapper")
+    o.Mappers.push_back(next());
+  else if (a == "--frames")
+    o.Frames = std::atoi(next().c_str());
+  else if (a == "--size")
+    return ParseSize(next(), o.Width, o.Height) ? 1 : -1;
+  else if (a == "--csv")
+    o.Csv = next();
+  else if (a == "--label")
+    o.Label = next();
+  else if (a == "--radius-array")
+    o.RadiusArray = next();
+  else if (a == "--color-array")
+    o.ColorArray = next();
+  else if (a == "--screenshot")
+    o.ScreenshotDir = next();
+  else
+    return 0;
+  return 1;
 }
 
 inline vtkSmartPointer<vtkPolyData> ReadParticles(const std::string& file)

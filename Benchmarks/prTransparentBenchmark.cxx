@@ -70,26 +70,16 @@
 
 namespace
 {
-struct Options
+struct Options : prBench::CommonOptions
 {
-  std::string Data;
-  std::vector<std::string> Mappers;
-  int Frames = 10;
   int StaticFrames = 3;
-  int Width = 1024;
-  int Height = 768;
   double Opacity = 0.5;
   int Chunks = 20;
-  std::string Csv;
   std::string Errors;
   int ConvergedPeels = 200;
   bool DropIntersecting = false;
   vtkIdType MaxParticles = 0;
-  std::string Label;
   std::string Peer;
-  std::string RadiusArray = "radius";
-  std::string ColorArray = "speed";
-  std::string ScreenshotDir;
 };
 
 bool Parse(int argc, char* argv[], Options& o)
@@ -98,25 +88,17 @@ bool Parse(int argc, char* argv[], Options& o)
   {
     const std::string a = argv[i];
     auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--data")
-      o.Data = next();
-    else if (a == "--mapper")
-      o.Mappers.push_back(next());
-    else if (a == "--frames")
-      o.Frames = std::atoi(next().c_str());
-    else if (a == "--static-frames")
+    const int common = prBench::ParseCommonOption(a, next, o);
+    if (common < 0)
+      return false;
+    if (common > 0)
+      continue;
+    if (a == "--static-frames")
       o.StaticFrames = std::atoi(next().c_str());
-    else if (a == "--size")
-    {
-      if (!prBench::ParseSize(next(), o.Width, o.Height))
-        return false;
-    }
     else if (a == "--opacity")
       o.Opacity = std::atof(next().c_str());
     else if (a == "--chunks")
       o.Chunks = std::atoi(next().c_str());
-    else if (a == "--csv")
-      o.Csv = next();
     else if (a == "--errors")
       o.Errors = next();
     else if (a == "--converged-peels")
@@ -125,16 +107,8 @@ bool Parse(int argc, char* argv[], Options& o)
       o.DropIntersecting = true;
     else if (a == "--max-particles")
       o.MaxParticles = std::atoll(next().c_str());
-    else if (a == "--label")
-      o.Label = next();
     else if (a == "--peer")
       o.Peer = next();
-    else if (a == "--radius-array")
-      o.RadiusArray = next();
-    else if (a == "--color-array")
-      o.ColorArray = next();
-    else if (a == "--screenshot")
-      o.ScreenshotDir = next();
     else
     {
       std::cerr << "unknown argument " << a << "\n";

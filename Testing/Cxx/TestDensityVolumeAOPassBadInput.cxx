@@ -7,7 +7,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkDensityVolumeAOPass.h"
 #include "vtkNew.h"
@@ -33,36 +32,13 @@
 
 namespace
 {
-// counts warnings and errors and keeps the last message
-class MessageCounter : public vtkCommand
-{
-public:
-  static MessageCounter* New() { return new MessageCounter; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)++;
-    this->Last = data ? static_cast<const char*>(data) : "";
-    this->All += this->Last;
-  }
-  void Reset()
-  {
-    this->Errors = this->Warnings = 0;
-    this->Last.clear();
-    this->All.clear();
-  }
-  int Errors = 0;
-  int Warnings = 0;
-  std::string Last;
-  std::string All;
-};
-
 struct Scene
 {
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkDensityVolumeAOPass> AO;
-  vtkNew<MessageCounter> Messages;
+  vtkNew<prTest::MessageCounter> Messages;
   Scene()
   {
     this->Window->SetSize(120, 100);
@@ -70,10 +46,8 @@ struct Scene
     this->Window->AddRenderer(this->Renderer);
     this->Renderer->SetBackground(0.1, 0.2, 0.3);
     this->AO->SetDelegatePass(this->Steps);
-    this->AO->AddObserver(vtkCommand::WarningEvent, this->Messages);
-    this->AO->AddObserver(vtkCommand::ErrorEvent, this->Messages);
-    this->AO->GetDensityVolume()->AddObserver(vtkCommand::WarningEvent, this->Messages);
-    this->AO->GetDensityVolume()->AddObserver(vtkCommand::ErrorEvent, this->Messages);
+    this->Messages->Observe(this->AO);
+    this->Messages->Observe(this->AO->GetDensityVolume());
   }
   std::vector<int> Render(bool withAO)
   {
@@ -135,7 +109,7 @@ long long CompareOnOff(Scene& scene, const std::string& what, bool& ok, int* dar
             << " darker with AO (by up to " << maxDarkening << "/765), " << brighter << " brighter, " << changedBackground
             << " background pixels changed; " << scene.Messages->Warnings << " warning(s), "
             << scene.Messages->Errors << " error(s)"
-            << (scene.Messages->Last.empty() ? "" : "; last: " + scene.Messages->Last) << "\n";
+            << (scene.Messages->All.empty() ? "" : "; " + scene.Messages->All) << "\n";
   ok &= prTest::Check(changedBackground == 0, what + ": background untouched");
   ok &= prTest::Check(brighter == 0, what + ": AO never brightens");
   ok &= prTest::Check(background > 1000 && background < static_cast<long long>(plain.size() / 4),

@@ -4,7 +4,6 @@
 // No baseline image (the -V argument of the driver is ignored).
 #include "prTestUtilities.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
@@ -40,26 +39,6 @@ bool Expect(bool condition, const std::string& what)
   return condition;
 }
 
-// Records the last error of an object instead of printing it (for the expected failures).
-class ErrorCatcher
-{
-public:
-  explicit ErrorCatcher(vtkObject* object)
-    : Object(object)
-  {
-    this->Callback->SetClientData(&this->LastError);
-    this->Callback->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-      *static_cast<std::string*>(clientData) = callData ? static_cast<const char*>(callData) : "";
-    });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-  }
-  ~ErrorCatcher() { this->Object->RemoveObserver(this->Callback); }
-  std::string LastError;
-
-private:
-  vtkObject* Object;
-  vtkNew<vtkCallbackCommand> Callback;
-};
 
 std::uint32_t Bits(float f)
 {
@@ -365,10 +344,12 @@ void CheckDispatchSplit(vtkOpenGLRenderWindow* context)
   program->SetUniformui("groups", groups);
   Expect(program->Dispatch(groups), "Dispatch above the x limit");
   {
-    ErrorCatcher catcher(program);
+    vtkNew<prTest::MessageCounter> catcher; // errors only, while expected
+    catcher->Observe(program, false, true);
     Expect(!program->Dispatch(limits[0] + 1, 2) &&
-        catcher.LastError.find("GL_MAX_COMPUTE_WORK_GROUP_COUNT") != std::string::npos,
+        catcher->LastError.find("GL_MAX_COMPUTE_WORK_GROUP_COUNT") != std::string::npos,
       "Dispatch above the x limit with y > 1 fails and names the limit");
+    catcher->StopObserving();
   }
   glUseProgram(0);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -485,8 +466,9 @@ int TestParticleDepthSort(int, char*[])
 
   // errors: beyond the capacity, beyond the GPU limits (the message names the limit)
   {
-    ErrorCatcher catcher(sort);
-    std::string& lastError = catcher.LastError;
+    vtkNew<prTest::MessageCounter> catcher; // errors only, while expected
+    catcher->Observe(sort, false, true);
+    std::string& lastError = catcher->LastError;
     const vtkIdType capacity = sort->GetCapacity();
     Expect(!sort->Sort(capacity + 1), "Sort beyond the capacity fails");
     Expect(!lastError.empty(), "Sort beyond the capacity reports an error");
@@ -500,6 +482,7 @@ int TestParticleDepthSort(int, char*[])
         lastError.find(std::to_string(blockLimit)) != std::string::npos,
       "the over-limit message names the limit and its value");
     Expect(sort->GetCapacity() == capacity, "a failed Reserve keeps the buffers");
+    catcher->StopObserving();
   }
 
   sort->ReleaseGraphicsResources(context);

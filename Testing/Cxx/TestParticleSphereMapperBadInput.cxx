@@ -25,31 +25,6 @@
 
 namespace
 {
-// Counts warnings and errors and keeps the last message of each.
-class MessageCounter : public vtkCommand
-{
-public:
-  static MessageCounter* New() { return new MessageCounter; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    const std::string text = data ? static_cast<const char*>(data) : "";
-    if (event == vtkCommand::WarningEvent)
-    {
-      ++this->Warnings;
-      this->LastWarning = text;
-    }
-    else
-    {
-      ++this->Errors;
-      this->LastError = text;
-    }
-  }
-  int Warnings = 0;
-  int Errors = 0;
-  std::string LastWarning;
-  std::string LastError;
-};
-
 struct Case
 {
   vtkSmartPointer<vtkPolyData> Data;
@@ -137,12 +112,11 @@ int TestParticleSphereMapperBadInput(int argc, char* argv[])
 
   bool ok = true;
   vtkNew<vtkParticleSphereMapper> mappers[6];
-  vtkNew<MessageCounter> observers[6];
+  vtkNew<prTest::MessageCounter> observers[6];
   for (int c = 0; c < 6; ++c)
   {
     vtkParticleSphereMapper* mapper = mappers[c];
-    mapper->AddObserver(vtkCommand::WarningEvent, observers[c]);
-    mapper->AddObserver(vtkCommand::ErrorEvent, observers[c]);
+    observers[c]->Observe(mapper);
     mapper->SetInputData(cases[c].Data);
     mapper->SetRadiusArrayName(cases[c].RadiusArray);
     mapper->SetRadius(0.25);
@@ -167,7 +141,7 @@ int TestParticleSphereMapperBadInput(int argc, char* argv[])
 
   for (int c = 0; c < 6; ++c)
   {
-    MessageCounter* obs = observers[c];
+    prTest::MessageCounter* obs = observers[c];
     const std::string label = "case " + std::to_string(c) + ": ";
     ok &= prTest::Check(obs->Errors == 0, label + "unexpected error " + obs->LastError);
     if (cases[c].ExpectedWarning)

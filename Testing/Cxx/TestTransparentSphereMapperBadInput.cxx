@@ -6,7 +6,6 @@
 #include "prTestUtilities.h"
 
 #include "vtkActor.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -29,12 +28,6 @@
 
 namespace
 {
-int Warnings = 0;
-void CountWarning(vtkObject*, unsigned long, void*, void*)
-{
-  ++Warnings;
-}
-
 vtkSmartPointer<vtkPolyData> Particles(int n, vtkIdType& count)
 {
   auto data = vtkSmartPointer<vtkPolyData>::New();
@@ -95,9 +88,8 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   mapper->SetRadius(0.5);
   mapper->ScalarVisibilityOff();
   mapper->GetFrontToBackTarget()->SetKeepAccumulation(true);
-  vtkNew<vtkCallbackCommand> warnings;
-  warnings->SetCallback(CountWarning);
-  mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkNew<prTest::MessageCounter> messages;
+  messages->Observe(mapper, true, false);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.9, 0.8, 0.3);
@@ -112,13 +104,13 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   // a usable array first
   mapper->SetOpacityArrayName("opacity");
   ok &= Sane(window, mapper, "valid opacity array", true);
-  ok &= prTest::Check(Warnings == 0, "no warning for a valid array");
+  ok &= prTest::Check(messages->Warnings == 0, "no warning for a valid array");
 
   // missing array: maximum opacity 1 for everyone, one warning even over several frames
   mapper->SetOpacityArrayName("nope");
   ok &= Sane(window, mapper, "missing opacity array", true);
   window->Render();
-  ok &= prTest::Check(Warnings == 1, "one warning for a missing array (" + std::to_string(Warnings) + ")");
+  ok &= prTest::Check(messages->Warnings == 1, "one warning for a missing array (" + std::to_string(messages->Warnings) + ")");
   ok &= prTest::Check(!mapper->HasTranslucentPolygonalGeometry(), "missing array: all opaque");
 
   // non-numeric array
@@ -128,7 +120,7 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   data->GetPointData()->AddArray(names);
   mapper->SetOpacityArrayName("names");
   ok &= Sane(window, mapper, "string opacity array", true);
-  ok &= prTest::Check(Warnings == 2, "a warning for a string array");
+  ok &= prTest::Check(messages->Warnings == 2, "a warning for a string array");
 
   // three components
   vtkNew<vtkDoubleArray> vectors;
@@ -139,7 +131,7 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   data->GetPointData()->AddArray(vectors);
   mapper->SetOpacityArrayName("vectors");
   ok &= Sane(window, mapper, "3-component opacity array", true);
-  ok &= prTest::Check(Warnings == 3, "a warning for a 3-component array");
+  ok &= prTest::Check(messages->Warnings == 3, "a warning for a 3-component array");
 
   // NaN opacities: those particles are not drawn, the rest are
   vtkNew<vtkFloatArray> withNaN;
@@ -152,7 +144,7 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   data->GetPointData()->AddArray(withNaN);
   mapper->SetOpacityArrayName("withNaN");
   ok &= Sane(window, mapper, "NaN opacities", true);
-  ok &= prTest::Check(Warnings == 4, "a warning for NaN opacities");
+  ok &= prTest::Check(messages->Warnings == 4, "a warning for NaN opacities");
   ok &= prTest::Check(mapper->GetParticleOpacities()->GetValue(1) == 0.0, "NaN -> opacity 0");
 
   // reversed range (high values transparent) and an empty range (a threshold)
@@ -177,7 +169,7 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   data->GetPoints()->SetPoint(3, std::nan(""), 0, 0);
   data->GetPoints()->Modified();
   ok &= Sane(window, mapper, "NaN position", true);
-  const int before = Warnings;
+  const int before = messages->Warnings;
   ok &= prTest::Check(before >= 5, "warning for the NaN position");
 
   // a time step with fewer, then more particles (re-sorted, no stale indices)

@@ -140,6 +140,54 @@ vtkSmartPointer<vtkPolyData> MakeLattice(int n, double spacing, unsigned int see
   return poly;
 }
 
+void MessageCounter::Observe(vtkObject* object, bool warnings, bool errors)
+{
+  if (warnings)
+  {
+    this->Tags.emplace_back(object, object->AddObserver(vtkCommand::WarningEvent, this));
+  }
+  if (errors)
+  {
+    this->Tags.emplace_back(object, object->AddObserver(vtkCommand::ErrorEvent, this));
+  }
+}
+
+void MessageCounter::StopObserving()
+{
+  for (auto& tag : this->Tags)
+  {
+    if (tag.first)
+    {
+      tag.first->RemoveObserver(tag.second);
+    }
+  }
+  this->Tags.clear();
+}
+
+void MessageCounter::Reset()
+{
+  this->Warnings = this->Errors = 0;
+  this->LastWarning.clear();
+  this->LastError.clear();
+  this->All.clear();
+}
+
+void MessageCounter::Execute(vtkObject*, unsigned long event, void* callData)
+{
+  const std::string text = callData ? static_cast<const char*>(callData) : "";
+  if (event == vtkCommand::WarningEvent)
+  {
+    ++this->Warnings;
+    this->LastWarning = text;
+  }
+  else
+  {
+    ++this->Errors;
+    this->LastError = text;
+  }
+  this->All += text;
+}
+
 bool Check(bool condition, const std::string& what)
 {
   if (!condition)
