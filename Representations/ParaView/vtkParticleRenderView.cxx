@@ -151,6 +151,18 @@ int vtkParticleRenderView::GetNumberOfParticlePasses()
 }
 
 //------------------------------------------------------------------------------
+int vtkParticleRenderView::GetDensityVolumeLastGeneration()
+{
+  return this->DensityVolumeAOPass->GetLastGenerationMode();
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetNumberOfDensityVolumeBuilds()
+{
+  return static_cast<int>(this->DensityVolumeAOPass->GetNumberOfVolumeBuilds());
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -81,6 +81,16 @@ public:
 
   ///@{
   /**
+   * Where the density volume of the AO pass was last built (vtkDensityVolumeAOPass::
+   * CPU_GENERATION or GPU_GENERATION) and how many volumes it has built (information properties
+   * for tests: they show that the generation property reaches the pass).
+   */
+  int GetDensityVolumeLastGeneration();
+  int GetNumberOfDensityVolumeBuilds();
+  ///@}
+
+  ///@{
+  /**
    * Object-space ambient occlusion of the particles from a coarse density volume
    * (vtkDensityVolumeAOPass, Grottel et al. 2012): on/off and its parameters.
    */

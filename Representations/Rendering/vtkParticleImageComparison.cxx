@@ -19,6 +19,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleImageComparison);
@@ -101,8 +105,8 @@ void ResizeMask(vtkUnsignedCharArray* mask, vtkIdType pixels)
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleImageComparison::Compare(
-  vtkImageData* a, vtkImageData* b, vtkDataArray* excluded, double tolerance, Result& result)
+bool vtkParticleImageComparison::Compare(vtkImageData* a, vtkImageData* b,
+  vtkDataArray* excluded, double tolerance, Result& result, int maxComponents)
 {
   result = Result();
   ImageValues va;
@@ -122,9 +126,10 @@ bool vtkParticleImageComparison::Compare(
   {
     return false;
   }
-  const int nc = std::min(std::min(va.Components, vb.Components), 4);
+  const int nc = std::max(1, std::min(std::min(va.Components, vb.Components), std::min(maxComponents, 4)));
   result.NumberOfComponents = nc;
   double sum2 = 0.0;
+  double sum[4] = { 0, 0, 0, 0 };
   for (vtkIdType pixel = 0; pixel < pixels; ++pixel)
   {
     if (Excluded(excluded, pixel))
@@ -142,6 +147,7 @@ bool vtkParticleImageComparison::Compare(
         e = 1.0; // a NaN or Inf in an image is an error, never a pass
       }
       sum2 += e * e;
+      sum[c] += e;
       over |= e > tolerance;
       result.ChannelMaxAbsError[c] = std::max(result.ChannelMaxAbsError[c], e);
       if (e > result.MaxAbsError)
@@ -151,10 +157,30 @@ bool vtkParticleImageComparison::Compare(
         result.MaxErrorPixel[1] = static_cast<int>(pixel / va.Width);
       }
     }
-    result.NumberOfPixelsOverTolerance += over ? 1 : 0;
+    if (over)
+    {
+      const int x = static_cast<int>(pixel % va.Width);
+      const int y = static_cast<int>(pixel / va.Width);
+      int* box = result.OverToleranceBox;
+      if (result.NumberOfPixelsOverTolerance == 0)
+      {
+        box[0] = box[1] = x;
+        box[2] = box[3] = y;
+      }
+      box[0] = std::min(box[0], x);
+      box[1] = std::max(box[1], x);
+      box[2] = std::min(box[2], y);
+      box[3] = std::max(box[3], y);
+      ++result.NumberOfPixelsOverTolerance;
+    }
   }
   const double values = static_cast<double>(result.NumberOfComparedPixels) * nc;
   result.RMSE = values > 0 ? std::sqrt(sum2 / values) : 0.0;
+  for (int c = 0; c < nc; ++c)
+  {
+    result.ChannelMeanAbsError[c] =
+      result.NumberOfComparedPixels > 0 ? sum[c] / result.NumberOfComparedPixels : 0.0;
+  }
   return true;
 }
 
@@ -163,10 +189,11 @@ bool vtkParticleImageComparison::CompareImages(
   vtkImageData* a, vtkImageData* b, vtkDataArray* excluded)
 {
   Result r;
-  const bool ok = Compare(a, b, excluded, this->Tolerance, r);
+  const bool ok = Compare(a, b, excluded, this->Tolerance, r, this->ComparedComponents);
   this->RMSE = r.RMSE;
   this->MaxAbsError = r.MaxAbsError;
   std::copy(r.ChannelMaxAbsError, r.ChannelMaxAbsError + 4, this->ChannelMaxAbsError);
+  std::copy(r.ChannelMeanAbsError, r.ChannelMeanAbsError + 4, this->ChannelMeanAbsError);
   this->MaxErrorPixel[0] = r.MaxErrorPixel[0];
   this->MaxErrorPixel[1] = r.MaxErrorPixel[1];
   this->NumberOfComponents = r.NumberOfComponents;
@@ -175,6 +202,326 @@ bool vtkParticleImageComparison::CompareImages(
   this->NumberOfPixelsOverTolerance = static_cast<vtkIdType>(r.NumberOfPixelsOverTolerance);
   this->Modified();
   return ok;
+}
+
+
+//------------------------------------------------------------------------------
+// Image tests
+//------------------------------------------------------------------------------
+namespace
+{
+std::string Format255(double v)
+{
+  std::ostringstream os;
+  os << std::setprecision(3) << v * 255.0 << "/255";
+  return os.str();
+}
+}
+
+double vtkParticleImageComparison::Evaluate(const Result& r, std::string& reason) const
+{
+  reason.clear();
+  double worstMean = 0.0;
+  int meanChannel = 0;
+  for (int c = 0; c < r.NumberOfComponents; ++c)
+  {
+    if (r.ChannelMeanAbsError[c] > worstMean)
+    {
+      worstMean = r.ChannelMeanAbsError[c];
+      meanChannel = c;
+    }
+  }
+  const double share = r.NumberOfComparedPixels > 0
+    ? static_cast<double>(r.NumberOfPixelsOverTolerance) / r.NumberOfComparedPixels
+    : 0.0;
+  const double terms[3] = { worstMean / this->MaximumMeanError, r.MaxAbsError / this->MaximumError,
+    share / this->MaximumOverToleranceFraction };
+  const double score = std::max(terms[0], std::max(terms[1], terms[2]));
+  std::ostringstream why;
+  const char* separator = "";
+  if (terms[0] > 1.0)
+  {
+    why << "mean error " << Format255(worstMean) << " (channel " << meanChannel << ") > "
+        << Format255(this->MaximumMeanError);
+    separator = "; ";
+  }
+  if (terms[1] > 1.0)
+  {
+    why << separator << "max error " << Format255(r.MaxAbsError) << " at (" << r.MaxErrorPixel[0]
+        << ", " << r.MaxErrorPixel[1] << ") > " << Format255(this->MaximumError);
+    separator = "; ";
+  }
+  if (terms[2] > 1.0)
+  {
+    why << separator << r.NumberOfPixelsOverTolerance << " pixels ("
+        << std::setprecision(3) << 100.0 * share << " %) over " << Format255(this->Tolerance)
+        << " > " << 100.0 * this->MaximumOverToleranceFraction << " %";
+  }
+  if (r.NumberOfComparedPixels == 0)
+  {
+    why << separator << "no pixel compared";
+    reason = why.str();
+    return std::numeric_limits<double>::infinity();
+  }
+  reason = why.str();
+  return score;
+}
+
+vtkSmartPointer<vtkUnsignedCharArray> vtkParticleImageComparison::CriteriaMask(
+  vtkImageData* expected, vtkDataArray* excluded)
+{
+  if (this->MaskRadius <= 0 && !excluded)
+  {
+    return nullptr;
+  }
+  auto mask = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  if (this->MaskRadius > 0)
+  {
+    if (!MakeEdgeMask(expected, nullptr, this->MaskRadius, this->EdgeThreshold, mask))
+    {
+      return nullptr;
+    }
+  }
+  else
+  {
+    ResizeMask(mask, excluded->GetNumberOfTuples());
+  }
+  if (excluded)
+  {
+    if (excluded->GetNumberOfTuples() != mask->GetNumberOfTuples())
+    {
+      vtkErrorMacro(<< "The exclusion mask has " << excluded->GetNumberOfTuples()
+                    << " values for " << mask->GetNumberOfTuples() << " pixels.");
+      return nullptr;
+    }
+    for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+    {
+      mask->SetValue(i, (mask->GetValue(i) || Excluded(excluded, i)) ? 1 : 0);
+    }
+  }
+  return mask;
+}
+
+bool vtkParticleImageComparison::Judge(vtkImageData* image, vtkImageData* expected,
+  vtkDataArray* excluded, Result& result, double& score, std::string& reason)
+{
+  score = std::numeric_limits<double>::infinity();
+  vtkSmartPointer<vtkUnsignedCharArray> mask = this->CriteriaMask(expected, excluded);
+  if ((this->MaskRadius > 0 || excluded) && !mask)
+  {
+    reason = "the exclusion mask could not be made";
+    return false;
+  }
+  if (!Compare(image, expected, mask, this->Tolerance, result, this->ComparedComponents))
+  {
+    reason = "the images cannot be compared (size or scalars)";
+    return false;
+  }
+  score = this->Evaluate(result, reason);
+  return true;
+}
+
+bool vtkParticleImageComparison::TestImages(vtkImageData* image, vtkImageData* expected,
+  vtkDataArray* excluded, const char* tempDirectory, const char* name)
+{
+  const std::string label = name ? name : "image";
+  Result r;
+  std::string reason;
+  const bool compared = this->Judge(image, expected, excluded, r, this->Score, reason);
+  this->FailureReason = reason;
+  this->RMSE = r.RMSE;
+  this->MaxAbsError = r.MaxAbsError;
+  std::copy(r.ChannelMaxAbsError, r.ChannelMaxAbsError + 4, this->ChannelMaxAbsError);
+  std::copy(r.ChannelMeanAbsError, r.ChannelMeanAbsError + 4, this->ChannelMeanAbsError);
+  this->MaxErrorPixel[0] = r.MaxErrorPixel[0];
+  this->MaxErrorPixel[1] = r.MaxErrorPixel[1];
+  this->NumberOfComponents = r.NumberOfComponents;
+  this->NumberOfComparedPixels = static_cast<vtkIdType>(r.NumberOfComparedPixels);
+  this->NumberOfExcludedPixels = static_cast<vtkIdType>(r.NumberOfExcludedPixels);
+  this->NumberOfPixelsOverTolerance = static_cast<vtkIdType>(r.NumberOfPixelsOverTolerance);
+  this->Modified();
+  const bool passed = compared && this->Score <= 1.0;
+  if (!compared)
+  {
+    this->FailureReason = reason;
+  }
+  else if (passed)
+  {
+    this->FailureReason.clear();
+  }
+
+  double worstMean = 0.0;
+  for (int c = 0; c < r.NumberOfComponents; ++c)
+  {
+    worstMean = std::max(worstMean, r.ChannelMeanAbsError[c]);
+  }
+  std::cout << "image test " << label << ": " << (passed ? "passed" : "FAILED") << ", score "
+            << std::setprecision(4) << this->Score << " (pass <= 1)\n"
+            << "  criteria: mean <= " << Format255(this->MaximumMeanError)
+            << ", max <= " << Format255(this->MaximumError) << ", pixels over "
+            << Format255(this->Tolerance) << " <= " << 100.0 * this->MaximumOverToleranceFraction
+            << " %, mask radius " << this->MaskRadius << "\n";
+  if (compared)
+  {
+    std::cout << "  measured: mean " << Format255(worstMean) << ", max "
+              << Format255(r.MaxAbsError) << " at (" << r.MaxErrorPixel[0] << ", "
+              << r.MaxErrorPixel[1] << "), " << r.NumberOfPixelsOverTolerance
+              << " pixels over tolerance";
+    if (r.NumberOfPixelsOverTolerance > 0)
+    {
+      std::cout << " in x " << r.OverToleranceBox[0] << ".." << r.OverToleranceBox[1] << ", y "
+                << r.OverToleranceBox[2] << ".." << r.OverToleranceBox[3];
+    }
+    std::cout << " (of " << r.NumberOfComparedPixels << " compared, " << r.NumberOfExcludedPixels
+              << " masked), RMSE " << Format255(r.RMSE) << "\n";
+  }
+  if (!passed)
+  {
+    std::cout << "  reason: " << this->FailureReason << "\n";
+  }
+  if (compared && tempDirectory && *tempDirectory)
+  {
+    const std::string diff = std::string(tempDirectory) + "/" + label + ".diff.png";
+    vtkSmartPointer<vtkUnsignedCharArray> mask = this->CriteriaMask(expected, excluded);
+    if (WriteErrorMap(image, expected, mask, diff.c_str(), 8.0))
+    {
+      std::cout << "  difference image (|error| x 8, masked grey): " << diff << "\n";
+    }
+  }
+  std::cout.flush();
+  return passed;
+}
+
+bool vtkParticleImageComparison::TestRejects(
+  vtkImageData* wrong, vtkImageData* expected, vtkDataArray* excluded, const char* name)
+{
+  Result r;
+  double score;
+  std::string reason;
+  const bool compared = this->Judge(wrong, expected, excluded, r, score, reason);
+  const bool rejected = compared && score > 1.0;
+  std::cout << "MUST-FAIL " << (name ? name : "picture") << ": "
+            << (rejected ? "rejected" : (compared ? "ACCEPTED (the criteria cannot see it)"
+                                                  : "NOT COMPARED (wrong reason)"))
+            << ", score " << std::setprecision(4) << score;
+  if (!reason.empty())
+  {
+    std::cout << " (" << reason << ")";
+  }
+  std::cout << "\n";
+  std::cout.flush();
+  this->Score = score;
+  this->FailureReason = reason;
+  return rejected;
+}
+
+bool vtkParticleImageComparison::TestImage(
+  vtkImageData* image, const char* baselineFile, const char* tempDirectory, const char* name)
+{
+  const std::string label = name ? name : "image";
+  const std::string temp = (tempDirectory && *tempDirectory) ? tempDirectory : ".";
+  const std::string written = temp + "/" + label + ".png";
+  if (image)
+  {
+    WritePNG(image, written.c_str());
+  }
+  vtkNew<vtkImageData> baseline;
+  if (!baselineFile || !*baselineFile || !std::ifstream(baselineFile).good())
+  {
+    std::cout << "image test " << label << ": FAILED, baseline "
+              << (baselineFile ? baselineFile : "(none)") << " does not exist (the image is "
+              << written << ")\n";
+    this->Score = std::numeric_limits<double>::infinity();
+    this->FailureReason = "no baseline";
+    return false;
+  }
+  if (!ReadImage(baselineFile, baseline))
+  {
+    std::cout << "image test " << label << ": FAILED, cannot read " << baselineFile << "\n";
+    this->Score = std::numeric_limits<double>::infinity();
+    this->FailureReason = "unreadable baseline";
+    return false;
+  }
+  std::cout << "image test " << label << ": " << written << " against " << baselineFile << "\n";
+  bool ok = this->TestImages(image, baseline, nullptr, temp.c_str(), label.c_str());
+  const double score = this->Score;
+  const std::string reason = this->FailureReason;
+
+  // The criteria must see what a baseline test exists for: a 10 % darker picture and an edge
+  // one pixel outside the mask.
+  const bool darkened = this->TestRejects(Scaled(baseline, 0.9), baseline, nullptr,
+    (label + " (baseline 10 % darker)").c_str());
+  this->DarkenedScore = this->Score;
+  const int shift = this->MaskRadius + 1;
+  const bool shifted = this->TestRejects(Shifted(baseline, shift, 0), baseline, nullptr,
+    (label + " (baseline shifted " + std::to_string(shift) + " px)").c_str());
+  this->ShiftedScore = this->Score;
+  if (!darkened || !shifted)
+  {
+    std::cout << "FAIL: the criteria of " << label << " accept a wrong picture\n";
+    ok = false;
+  }
+  std::cout << "  margin: image score " << std::setprecision(4) << score
+            << ", nearest built-in must-fail score "
+            << std::min(this->DarkenedScore, this->ShiftedScore) << "\n";
+  std::cout.flush();
+  this->Score = score;
+  this->FailureReason = reason;
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkParticleImageComparison::Scaled(vtkImageData* image, double factor)
+{
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  if (!image || !image->GetPointData()->GetScalars())
+  {
+    return out;
+  }
+  out->DeepCopy(image);
+  vtkDataArray* values = out->GetPointData()->GetScalars();
+  const int nc = values->GetNumberOfComponents();
+  const int colour = nc == 4 || nc == 2 ? nc - 1 : nc; // alpha stays
+  const bool bytes = values->GetDataType() == VTK_UNSIGNED_CHAR;
+  const double top = bytes ? 255.0 : values->GetDataTypeMax();
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < colour; ++c)
+    {
+      double v = values->GetComponent(i, c) * factor;
+      if (bytes)
+      {
+        v = std::min(top, std::max(0.0, std::round(v)));
+      }
+      values->SetComponent(i, c, v);
+    }
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkImageData> vtkParticleImageComparison::Shifted(vtkImageData* image, int dx, int dy)
+{
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  if (!image || !image->GetPointData()->GetScalars())
+  {
+    return out;
+  }
+  out->DeepCopy(image);
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* in = image->GetPointData()->GetScalars();
+  vtkDataArray* values = out->GetPointData()->GetScalars();
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    const int sy = std::min(dims[1] - 1, std::max(0, y - dy));
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      const int sx = std::min(dims[0] - 1, std::max(0, x - dx));
+      values->SetTuple(static_cast<vtkIdType>(y) * dims[0] + x,
+        static_cast<vtkIdType>(sy) * dims[0] + sx, in);
+    }
+  }
+  return out;
 }
 
 //------------------------------------------------------------------------------
@@ -525,6 +872,16 @@ void vtkParticleImageComparison::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "MaximumOverToleranceFraction: " << this->MaximumOverToleranceFraction << "\n";
+  os << indent << "MaximumMeanError: " << this->MaximumMeanError << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "MaskRadius: " << this->MaskRadius << "\n";
+  os << indent << "EdgeThreshold: " << this->EdgeThreshold << "\n";
+  os << indent << "ComparedComponents: " << this->ComparedComponents << "\n";
+  os << indent << "Score: " << this->Score << "\n";
+  os << indent << "FailureReason: " << this->FailureReason << "\n";
+  os << indent << "DarkenedScore: " << this->DarkenedScore << "\n";
+  os << indent << "ShiftedScore: " << this->ShiftedScore << "\n";
   os << indent << "RMSE: " << this->RMSE << "\n";
   os << indent << "MaxAbsError: " << this->MaxAbsError << "\n";
   os << indent << "ChannelMaxAbsError: " << this->ChannelMaxAbsError[0] << " "

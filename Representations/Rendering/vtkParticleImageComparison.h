@@ -1,22 +1,42 @@
 /**
  * @class   vtkParticleImageComparison
- * @brief   per-pixel comparison of rendered images (GPU framebuffer vs. reference renderer)
+ * @brief   per-pixel image comparison: the one image test of the whole suite
  *
  * vtkParticleImageComparison compares two colour images pixel by pixel, in [0,1] units, and
- * reports the root-mean-square error, the maximum absolute error (per channel and overall), the
- * number of compared pixels and the number of pixels whose error exceeds a tolerance. An
- * optional exclusion mask (one value per pixel, non-zero = excluded) removes pixels from the
- * comparison, typically silhouettes and sphere/sphere intersection curves where a sub-pixel
- * difference legitimately changes the colour (MakeSilhouetteMask, MakeEdgeMask).
+ * reports the root-mean-square error, the mean and maximum absolute error per channel, the
+ * number of compared pixels and the number (and bounding box) of pixels whose error exceeds a
+ * tolerance. An optional exclusion mask (one value per pixel, non-zero = excluded) removes pixels
+ * from the comparison, typically silhouettes and sphere/sphere intersection curves where a
+ * sub-pixel difference legitimately changes the colour (MakeSilhouetteMask, MakeEdgeMask).
+ *
+ * Image test (TestImage, TestImages, TestRejects): every C++, VTK Python and pvpython image test
+ * of ParticleRendering goes through these methods, with criteria the test states:
+ * - Tolerance: per pixel and channel; a pixel whose largest channel error exceeds it is
+ *   "over tolerance".
+ * - MaximumOverToleranceFraction: the largest share of compared pixels over tolerance.
+ * - MaximumMeanError: the largest mean absolute error of any channel over the compared pixels.
+ * - MaximumError: the largest absolute error of any channel at any compared pixel.
+ * - MaskRadius: 0 compares every pixel; r > 0 excludes the pixels within r pixels of a colour
+ *   edge (a neighbour differing by more than EdgeThreshold) of the expected image only, so a
+ *   silhouette that moves by up to r pixels is tolerated and one that moves farther is not.
+ * The test's score is the largest of mean/MaximumMeanError, max/MaximumError and
+ * share/MaximumOverToleranceFraction: the image passes when the score is <= 1, and the score of
+ * a wrong picture tells by how much it is rejected. Images are compared in RGB (the first
+ * ComparedComponents channels): the alpha of a screenshot is not what a user sees.
+ *
+ * TestImage also checks the criteria themselves: the expected image darkened by 10 % and the
+ * expected image shifted by MaskRadius + 1 pixels (an edge one pixel outside the mask) must both be
+ * rejected, otherwise the test fails ("the criteria cannot see ..."). The report (printed to
+ * stdout) gives each score, so every image test shows its margin.
  *
  * Images: vtkImageData with point scalars of w x h pixels (x fastest, rows bottom-up like
  * vtkRenderWindow::GetRGBAPixelData and vtkPNGReader's output). Unsigned char values are divided
- * by 255, unsigned short by 65535, floating-point values are used as they are. The number of
- * compared channels is the smaller of the two images' component counts (at most 4): an RGB
- * image against an RGBA image compares RGB.
+ * by 255, unsigned short by 65535, floating-point values are used as they are. A NaN or Inf in
+ * either image is an error of 1 (never a pass).
  *
  * Static helpers grab a render window's colour and depth buffers into double images, write
- * error heat maps and PNGs, and read images.
+ * error heat maps and PNGs, read images, and make the wrong pictures of must-fail tests
+ * (Scaled, Shifted).
  *
  * @sa vtkParticleReferenceRenderer
  */
@@ -26,6 +46,8 @@
 #include "vtkObject.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 #include "vtkSmartPointer.h"            // for vtkSmartPointer
+
+#include <string> // for std::string
 
 class vtkDataArray;
 class vtkIdTypeArray;
@@ -50,7 +72,9 @@ public:
     double RMSE = 0.0;        // over every compared channel value
     double MaxAbsError = 0.0; // over every compared channel
     double ChannelMaxAbsError[4] = { 0, 0, 0, 0 };
+    double ChannelMeanAbsError[4] = { 0, 0, 0, 0 };
     int MaxErrorPixel[2] = { -1, -1 }; // (x, y) of the largest error
+    int OverToleranceBox[4] = { -1, -1, -1, -1 }; // x0, x1, y0, y1 of the pixels over tolerance
     int NumberOfComponents = 0;        // channels compared
     long long NumberOfComparedPixels = 0;
     long long NumberOfExcludedPixels = 0;
@@ -59,10 +83,11 @@ public:
 
   /**
    * Compare a and b (same dimensions). excluded: optional, one value per pixel, non-zero
-   * excludes the pixel. Returns false (and reports why) when the images cannot be compared.
+   * excludes the pixel. At most maxComponents channels are compared. Returns false (and
+   * reports why) when the images cannot be compared.
    */
-  static bool Compare(
-    vtkImageData* a, vtkImageData* b, vtkDataArray* excluded, double tolerance, Result& result);
+  static bool Compare(vtkImageData* a, vtkImageData* b, vtkDataArray* excluded, double tolerance,
+    Result& result, int maxComponents = 4);
 #endif
 
   ///@{
@@ -74,9 +99,88 @@ public:
   ///@}
 
   /**
-   * Compare a and b like the static Compare and keep the results below (for wrapped languages).
+   * Compare a and b like the static Compare (Tolerance, the first ComparedComponents channels)
+   * and keep the results below (for wrapped languages). No criteria, no report.
    */
   bool CompareImages(vtkImageData* a, vtkImageData* b, vtkDataArray* excluded = nullptr);
+
+  ///@{
+  /**
+   * Criteria of TestImage/TestImages/TestRejects (see the class description), in [0,1] units.
+   * Defaults: Tolerance 2/255, MaximumOverToleranceFraction 1e-3, MaximumMeanError 0.5/255,
+   * MaximumError 1 (no limit), MaskRadius 0, EdgeThreshold 0.1, ComparedComponents 3. Limits
+   * are clamped to at least 1e-9 so that scores stay finite.
+   */
+  vtkSetClampMacro(MaximumOverToleranceFraction, double, 1e-9, 1.0);
+  vtkGetMacro(MaximumOverToleranceFraction, double);
+  vtkSetClampMacro(MaximumMeanError, double, 1e-9, 1.0);
+  vtkGetMacro(MaximumMeanError, double);
+  vtkSetClampMacro(MaximumError, double, 1e-9, 1.0);
+  vtkGetMacro(MaximumError, double);
+  vtkSetClampMacro(MaskRadius, int, 0, 16);
+  vtkGetMacro(MaskRadius, int);
+  vtkSetClampMacro(EdgeThreshold, double, 0.0, 1.0);
+  vtkGetMacro(EdgeThreshold, double);
+  vtkSetClampMacro(ComparedComponents, int, 1, 4);
+  vtkGetMacro(ComparedComponents, int);
+  ///@}
+
+  /**
+   * The image test of the suite: compare image with the baseline file (PNG) under the criteria,
+   * print a report named name, write <tempDirectory>/<name>.png (the image, so that a new
+   * baseline can be taken from there after looking at it) and <tempDirectory>/<name>.diff.png
+   * (heat map of the largest channel error x 8, excluded pixels grey), and check that the
+   * criteria reject the baseline darkened by 10 % and shifted by MaskRadius + 1 pixels.
+   * Returns true when the image passes and both wrong pictures are rejected; a missing or
+   * unreadable baseline or a size mismatch is a failure.
+   */
+  bool TestImage(
+    vtkImageData* image, const char* baselineFile, const char* tempDirectory, const char* name);
+
+  /**
+   * Compare image with expected under the criteria (the MaskRadius mask, built from expected,
+   * is combined with the optional exclusion mask excluded) and print the report. Returns true
+   * when the score is <= 1. With a tempDirectory, writes <name>.diff.png there.
+   */
+  bool TestImages(vtkImageData* image, vtkImageData* expected, vtkDataArray* excluded,
+    const char* tempDirectory, const char* name);
+
+  /**
+   * Must-fail check: returns true when the wrong picture is rejected by the criteria for its
+   * pixels (score > 1), false when it passes or cannot be compared (size mismatch, no scalars:
+   * a rejection for the wrong reason). Prints "MUST-FAIL name: rejected/ACCEPTED, score ...".
+   */
+  bool TestRejects(
+    vtkImageData* wrong, vtkImageData* expected, vtkDataArray* excluded, const char* name);
+
+  /**
+   * Score, failure reason (empty when passed) and mean absolute error per channel of the last
+   * TestImages/TestRejects/TestImage comparison of the image itself.
+   */
+  vtkGetMacro(Score, double);
+  const char* GetFailureReason() { return this->FailureReason.c_str(); }
+  vtkGetVector4Macro(ChannelMeanAbsError, double);
+
+  ///@{
+  /**
+   * Scores of the built-in must-fail pictures of the last TestImage (the baseline darkened by
+   * 10 %, and shifted by MaskRadius + 1 pixels): both must be > 1.
+   */
+  vtkGetMacro(DarkenedScore, double);
+  vtkGetMacro(ShiftedScore, double);
+  ///@}
+
+  /**
+   * A copy of image (any scalar type) with every channel but alpha multiplied by factor, in the
+   * image's own type (unsigned char values rounded and clamped).
+   */
+  static vtkSmartPointer<vtkImageData> Scaled(vtkImageData* image, double factor);
+
+  /**
+   * A copy of image moved by (dx, dy) pixels; the pixels uncovered at the border repeat the
+   * nearest edge pixel.
+   */
+  static vtkSmartPointer<vtkImageData> Shifted(vtkImageData* image, int dx, int dy);
 
   ///@{
   /**
@@ -155,6 +259,17 @@ protected:
   ~vtkParticleImageComparison() override = default;
 
   double Tolerance = 2.0 / 255.0;
+  double MaximumOverToleranceFraction = 1e-3;
+  double MaximumMeanError = 0.5 / 255.0;
+  double MaximumError = 1.0;
+  int MaskRadius = 0;
+  double EdgeThreshold = 0.1;
+  int ComparedComponents = 3;
+  double Score = 0.0;
+  std::string FailureReason;
+  double ChannelMeanAbsError[4] = { 0, 0, 0, 0 };
+  double DarkenedScore = 0.0;
+  double ShiftedScore = 0.0;
   double RMSE = 0.0;
   double MaxAbsError = 0.0;
   double ChannelMaxAbsError[4] = { 0, 0, 0, 0 };
@@ -163,6 +278,14 @@ protected:
   vtkIdType NumberOfComparedPixels = 0;
   vtkIdType NumberOfExcludedPixels = 0;
   vtkIdType NumberOfPixelsOverTolerance = 0;
+
+  // Score and reason of a result under the criteria.
+  double Evaluate(const Result& result, std::string& reason) const;
+  // The mask of the criteria (MaskRadius around the edges of expected) or'ed with excluded.
+  vtkSmartPointer<vtkUnsignedCharArray> CriteriaMask(vtkImageData* expected, vtkDataArray* excluded);
+  // Compare under the criteria; false when the images cannot be compared.
+  bool Judge(vtkImageData* image, vtkImageData* expected, vtkDataArray* excluded, Result& result,
+    double& score, std::string& reason);
 
 private:
   vtkParticleImageComparison(const vtkParticleImageComparison&) = delete;

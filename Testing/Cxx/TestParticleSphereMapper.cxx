@@ -31,6 +31,10 @@ int TestParticleSphereMapper(int argc, char* argv[])
   actor->SetMapper(mapper);
   actor->GetProperty()->SetSpecular(0.4);
   actor->GetProperty()->SetSpecularPower(30);
+  if (prTest::MustFail(argc, argv, "darker"))
+  {
+    actor->GetProperty()->SetDiffuse(0.9); // spheres 10 % darker: must be rejected
+  }
 
   // an opaque polygon cutting through the cloud
   vtkNew<vtkPlaneSource> plane;
@@ -60,5 +64,14 @@ int TestParticleSphereMapper(int argc, char* argv[])
   renderer->ResetCameraClippingRange();
   window->Render();
 
-  return prTest::CompareWithBaseline(argc, argv, window) ? EXIT_SUCCESS : EXIT_FAILURE;
+  // Criteria: the GPU's own image on the same platform matches to rounding; silhouettes are
+  // compared too (MaskRadius 0): a sphere edge that moves is an error of the core. A tenth of a
+  // per cent of the pixels may differ by more than 2/255 (rounding of steep shading), the mean
+  // by at most 0.5/255. The must-fail case "darker" (diffuse 0.9) differs by a mean of 1.6/255
+  // with 11 % of the pixels over 2/255 (score 113).
+  prTest::ImageCriteria criteria;
+  criteria.Tolerance = 2.0;
+  criteria.MaxOverToleranceShare = 1e-3;
+  criteria.MaxMean = 0.5;
+  return prTest::CompareWithBaseline(argc, argv, window, criteria) ? EXIT_SUCCESS : EXIT_FAILURE;
 }

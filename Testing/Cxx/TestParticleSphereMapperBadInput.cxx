@@ -167,6 +167,13 @@ int TestParticleSphereMapperBadInput(int argc, char* argv[])
     }
   }
 
-  ok &= prTest::CompareWithBaseline(argc, argv, window);
+  // Criteria: the GPU's own image on the same platform; what matters is which particles are drawn
+  // (a skipped or extra sphere changes hundreds of pixels by far more than 2/255), so at most a
+  // tenth of a per cent of the pixels may differ by more than 2/255 and the mean by 0.5/255.
+  prTest::ImageCriteria criteria;
+  criteria.Tolerance = 2.0;
+  criteria.MaxOverToleranceShare = 1e-3;
+  criteria.MaxMean = 0.5;
+  ok &= prTest::CompareWithBaseline(argc, argv, window, criteria);
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

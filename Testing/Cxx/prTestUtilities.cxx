@@ -1,6 +1,9 @@
 #include "prTestUtilities.h"
 
 #include "vtkCellArray.h"
+#include "vtkImageData.h"
+#include "vtkParticleImageComparison.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkMinimalStandardRandomSequence.h"
@@ -9,8 +12,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
-#include "vtkTesting.h"
 #include "vtkXMLPolyDataReader.h"
+#include <vtksys/SystemTools.hxx>
 
 #include <cstring>
 #include <fstream>
@@ -33,35 +36,68 @@ std::string ArgumentAfter(int argc, char* argv[], const char* flag)
 }
 }
 
-bool CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window, double threshold)
+// the --must-fail case the test asked for and found (see MustFail)
+static std::string MatchedMustFail;
+
+bool MustFail(int argc, char* argv[], const char* name)
+{
+  if (ArgumentAfter(argc, argv, "--must-fail") == name)
+  {
+    MatchedMustFail = name;
+    return true;
+  }
+  return false;
+}
+
+vtkSmartPointer<vtkImageData> GrabImage(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, rgb);
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(size[0], size[1], 1);
+  image->GetPointData()->SetScalars(rgb);
+  return image;
+}
+
+bool CompareWithBaseline(
+  int argc, char* argv[], vtkRenderWindow* window, const ImageCriteria& criteria)
 {
   const std::string baseline = ArgumentAfter(argc, argv, "-V");
+  const std::string mustFail = ArgumentAfter(argc, argv, "--must-fail");
   if (baseline.empty())
   {
     std::cerr << "FAIL: no baseline image given (-V <file.png>)\n";
     return false;
   }
-  if (!std::ifstream(baseline).good())
+  std::string name = vtksys::SystemTools::GetFilenameWithoutLastExtension(baseline);
+  vtkNew<vtkParticleImageComparison> comparison;
+  comparison->SetTolerance(criteria.Tolerance / 255.0);
+  comparison->SetMaximumOverToleranceFraction(criteria.MaxOverToleranceShare);
+  comparison->SetMaximumMeanError(criteria.MaxMean / 255.0);
+  comparison->SetMaximumError(criteria.MaxError / 255.0);
+  comparison->SetMaskRadius(criteria.MaskRadius);
+  vtkSmartPointer<vtkImageData> image = GrabImage(window);
+  if (mustFail.empty())
   {
-    std::cerr << "FAIL: baseline image " << baseline << " does not exist\n";
+    return comparison->TestImage(
+      image, baseline.c_str(), TempDirectory(argc, argv).c_str(), name.c_str());
   }
-  vtkNew<vtkTesting> testing;
-  for (int i = 0; i < argc; ++i)
+  if (MatchedMustFail != mustFail)
   {
-    testing->AddArgument(argv[i]);
-  }
-  testing->SetRenderWindow(window);
-  const int result = testing->RegressionTest(threshold);
-  if (!std::ifstream(baseline).good())
-  {
-    return false; // the image was written to -T for inspection, but there is nothing to pass
-  }
-  if (result != vtkTesting::PASSED)
-  {
-    std::cerr << "FAIL: image differs from " << baseline << "\n";
+    std::cerr << "FAIL: unknown must-fail case " << mustFail << "\n";
     return false;
   }
-  return true;
+  vtkNew<vtkImageData> expected;
+  if (!vtkParticleImageComparison::ReadImage(baseline.c_str(), expected))
+  {
+    std::cerr << "FAIL: cannot read the baseline " << baseline << "\n";
+    return false;
+  }
+  name += "_mustfail_" + mustFail;
+  vtkParticleImageComparison::WritePNG(
+    image, (TempDirectory(argc, argv) + "/" + name + ".png").c_str());
+  return comparison->TestRejects(image, expected, nullptr, name.c_str());
 }
 
 std::string DataFile(int argc, char* argv[], const std::string& name)

@@ -9,17 +9,47 @@
 #include <string>
 #include <vector>
 
+class vtkImageData;
 class vtkPolyData;
 class vtkRenderWindow;
 
 namespace prTest
 {
 /**
- * Baseline-image comparison with VTK's regression machinery (vtkTesting, -V/-T arguments).
- * Unlike vtkRegressionTestImage, a missing -V argument or a missing baseline file is a failure,
- * not NOT_RUN (which `return !retVal` would turn into a silent pass). Returns true on success.
+ * Criteria of an image test (vtkParticleImageComparison, see its class description), in 8-bit
+ * steps (x/255) where that is how they are read: per-pixel tolerance, largest share of pixels
+ * over it, largest mean and largest single error of a channel, silhouette mask radius. Each
+ * test states its own.
  */
-bool CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window, double threshold = 0.15);
+struct ImageCriteria
+{
+  double Tolerance = 2.0;            // /255, per pixel and channel
+  double MaxOverToleranceShare = 1e-3; // share of compared pixels
+  double MaxMean = 0.5;              // /255, per channel
+  double MaxError = 255.0;           // /255, per channel and pixel
+  int MaskRadius = 0;                // pixels around the baseline's colour edges not compared
+};
+
+/**
+ * The baseline test of the suite: the window's image against the -V baseline under the
+ * criteria, through vtkParticleImageComparison::TestImage (report, <Test>.png and
+ * <Test>.diff.png in the -T directory, built-in must-fail checks). A missing -V argument or
+ * baseline file is a failure.
+ * In must-fail mode (the test was started with --must-fail CASE, see MustFail()) the test has
+ * drawn a wrong picture on purpose: then true means the picture was rejected for its pixels.
+ */
+bool CompareWithBaseline(
+  int argc, char* argv[], vtkRenderWindow* window, const ImageCriteria& criteria);
+
+/**
+ * True when the test was started with --must-fail name: the test then draws that wrong picture
+ * instead of the right one and CompareWithBaseline must reject it. CompareWithBaseline fails
+ * when a --must-fail case was given that the test never asked for (an unknown case).
+ */
+bool MustFail(int argc, char* argv[], const char* name);
+
+/** The window's colour buffer (RGB, 8 bit, as a PNG baseline holds it). */
+vtkSmartPointer<vtkImageData> GrabImage(vtkRenderWindow* window);
 
 /** Path of a file of Testing/Data, from the -D argument. */
 std::string DataFile(int argc, char* argv[], const std::string& name);

@@ -4,23 +4,51 @@ Every test script takes
     --plugin PATH        ParticleRendering.so
     --data DIR           Testing/Data
     --baseline-dir DIR   Testing/Data/Baseline
-    --temp-dir DIR       where the rendered images go (<Test>.png, and on failure the
-                         difference images of vtkTesting)
+    --temp-dir DIR       where the rendered images go (<Test>.png and <Test>.diff.png)
+    --must-fail CASE     draw the named wrong picture instead of the right one: the test then
+                         passes only when its baseline comparison rejects it (see must_fail())
 The rendered image of a test is always written to the temp dir, so a new baseline is made by
 running the test once, looking at <temp-dir>/<Test>.png and copying it to the baseline dir.
 A missing baseline fails the test.
+
+Images are compared by ParticleRendering's own vtkParticleImageComparison (the class every C++
+and VTK Python image test uses too), imported from the Python-wrapped module `particlerendering`
+(PYTHONPATH=<build>/lib/python3/dist-packages, set by CTest), under criteria each test states
+(Criteria below).
 """
 import argparse
 import os
 import sys
 
 from paraview import simple
-from vtkmodules.vtkCommonExecutionModel import vtkTrivialProducer
+from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.vtkTestingRendering import vtkTesting
 
-# vtkImageDifference's thresholded error (VTK 9.2), as the C++ tests of this project use.
-IMAGE_THRESHOLD = 0.15
+import particlerendering  # ParticleRendering's Python-wrapped VTK module (the comparison)
+
+
+class Criteria:
+    """Criteria of an image test, in 8-bit steps (x/255): per-pixel tolerance, largest share of
+    compared pixels over it, largest mean and largest single error of a channel, and the radius
+    of the band around the baseline's colour edges that is not compared. Each test states its
+    own (see vtkParticleImageComparison)."""
+
+    def __init__(self, tolerance=2.0, max_share=1e-3, max_mean=0.5, max_error=255.0,
+                 mask_radius=0):
+        self.tolerance = tolerance
+        self.max_share = max_share
+        self.max_mean = max_mean
+        self.max_error = max_error
+        self.mask_radius = mask_radius
+
+    def comparison(self):
+        c = particlerendering.vtkParticleImageComparison()
+        c.SetTolerance(self.tolerance / 255.0)
+        c.SetMaximumOverToleranceFraction(self.max_share)
+        c.SetMaximumMeanError(self.max_mean / 255.0)
+        c.SetMaximumError(self.max_error / 255.0)
+        c.SetMaskRadius(self.mask_radius)
+        return c
 
 def parse_arguments():
     parser = argparse.ArgumentParser()
@@ -28,7 +56,9 @@ def parse_arguments():
     parser.add_argument("--data", required=True)
     parser.add_argument("--baseline-dir", required=True)
     parser.add_argument("--temp-dir", required=True)
+    parser.add_argument("--must-fail", default="")
     args, _ = parser.parse_known_args()
+    args.matched_must_fail = ""
     os.makedirs(args.temp_dir, exist_ok=True)
     return args
 
@@ -145,48 +175,61 @@ def capture(view, path):
     return reader.GetOutput()
 
 
-def capture_and_compare(view, name, args):
-    """Save the view to <temp>/<name>.png and compare it with <baseline-dir>/<name>.png.
-    Returns (ok, image); a missing baseline is a failure."""
-    test_png = os.path.join(args.temp_dir, name + ".png")
-    image = capture(view, test_png)
+def must_fail(args, case):
+    """True when the test was started with --must-fail CASE: it then draws that wrong picture
+    instead of the right one, and capture_and_compare passes only when the picture is rejected."""
+    if args.must_fail == case:
+        args.matched_must_fail = case
+        return True
+    return False
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = vtkImageData()
+    image.ShallowCopy(reader.GetOutput())
+    return image
+
+
+def capture_and_compare(view, name, args, criteria):
+    """Save the view to <temp>/<name>.png and compare it with <baseline-dir>/<name>.png under
+    the criteria (vtkParticleImageComparison.TestImage: report, difference image, built-in
+    must-fail checks). Returns (ok, image); a missing baseline is a failure. In must-fail mode
+    ok means that the (wrong) picture was rejected."""
     baseline = os.path.join(args.baseline_dir, name + ".png")
-    if not os.path.exists(baseline):
-        print("FAIL: baseline %s does not exist (the test image is %s)" % (baseline, test_png))
-        return False, image
-    testing = vtkTesting()
-    for arg in ("-V", baseline, "-T", args.temp_dir):
-        testing.AddArgument(arg)
-    producer = vtkTrivialProducer()
-    producer.SetOutput(image)
-    result = testing.RegressionTest(producer, IMAGE_THRESHOLD)
-    if result != vtkTesting.PASSED:
-        print("FAIL: %s differs from the baseline %s (see %s)" % (test_png, baseline, args.temp_dir))
-        return False, image
-    print("image %s matches %s" % (test_png, baseline))
-    return True, image
+    comparison = criteria.comparison()
+    if args.must_fail:
+        image = capture(view, os.path.join(args.temp_dir, "%s_mustfail_%s.png"
+                                           % (name, args.must_fail)))
+        if args.matched_must_fail != args.must_fail:
+            print("FAIL: unknown must-fail case %s" % args.must_fail)
+            return False, image
+        if not os.path.exists(baseline):
+            print("FAIL: baseline %s does not exist" % baseline)
+            return False, image
+        return comparison.TestRejects(image, read_png(baseline), None,
+                                      "%s_mustfail_%s" % (name, args.must_fail)), image
+    image = capture(view, os.path.join(args.temp_dir, name + "_capture.png"))
+    return comparison.TestImage(image, baseline, args.temp_dir, name), image
+
+
+def difference(image_a, image_b):
+    """(max, mean) per-channel difference in 8-bit steps of two images of the same size, RGB
+    only, through vtkParticleImageComparison; (None, None) when they cannot be compared."""
+    comparison = particlerendering.vtkParticleImageComparison()
+    if not comparison.CompareImages(image_a, image_b) or comparison.GetNumberOfComparedPixels() == 0:
+        return None, None
+    return (comparison.GetMaxAbsError() * 255.0,
+            max(comparison.GetChannelMeanAbsError()[:3]) * 255.0)
 
 
 def max_abs_difference(image_a, image_b):
-    """Largest per-channel difference (0..255) of two images of the same size, or None when
-    the sizes or channel counts differ."""
-    if image_a.GetDimensions() != image_b.GetDimensions():
-        return None
-    a = image_a.GetPointData().GetScalars()
-    b = image_b.GetPointData().GetScalars()
-    if a.GetNumberOfComponents() != b.GetNumberOfComponents():
-        return None
-    try:
-        from vtkmodules.util.numpy_support import vtk_to_numpy
-        import numpy
-
-        return int(numpy.max(numpy.abs(vtk_to_numpy(a).astype(int) - vtk_to_numpy(b).astype(int))))
-    except ImportError:
-        worst = 0
-        for i in range(a.GetNumberOfTuples()):
-            for k in range(a.GetNumberOfComponents()):
-                worst = max(worst, abs(a.GetComponent(i, k) - b.GetComponent(i, k)))
-        return int(worst)
+    """Largest per-channel difference (0..255, RGB) of two images of the same size, or None when
+    they cannot be compared."""
+    worst = difference(image_a, image_b)[0]
+    return None if worst is None else int(round(worst))
 
 
 class TestFailure(RuntimeError):
