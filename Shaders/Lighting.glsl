@@ -5,8 +5,11 @@
 // light travels, in view coordinates). vtkParticleReferenceRenderer evaluates
 // the same formulas in double precision.
 //
-// n: unit surface normal (VC); v: unit vector from the surface point towards
-// the eye (VC); p: surface point (VC).
+// n: unit surface normal (VC); p: surface point (VC). The view vector of the
+// specular term is VTK's normalize(-p), towards the camera position, in
+// perspective and in parallel projection alike (VTK 9.2's shader does this,
+// checked by TestVTKShadingComparison against VTK's own shading), and the
+// specular base is clamped to at least 1e-5 as in VTK.
 //=========================================================================
 
 // Light complexity 1: a single headlight, L = V = H = +z.
@@ -19,7 +22,7 @@ void prHeadlight(vec3 n, vec3 lightColor, float specularPower, inout vec3 diffus
 }
 
 // Light complexities 2 (directional) and 3 (positional and spot lights).
-void prSceneLight(vec3 n, vec3 v, vec3 p, vec3 lightColor, vec3 lightDirectionVC,
+void prSceneLight(vec3 n, vec3 p, vec3 lightColor, vec3 lightDirectionVC,
   int positional, vec3 positionVC, vec3 attenuationCoefficients, float coneAngle,
   float exponent, float specularPower, inout vec3 diffuse, inout vec3 specular)
 {
@@ -41,6 +44,7 @@ void prSceneLight(vec3 n, vec3 v, vec3 p, vec3 lightColor, vec3 lightDirectionVC
   }
   float df = max(0.0, attenuation * dot(n, -l));
   diffuse += df * lightColor;
-  float sf = sign(df) * attenuation * pow(max(0.0, dot(reflect(l, n), v)), specularPower);
+  float sf =
+    sign(df) * attenuation * pow(max(1e-5, dot(reflect(l, n), normalize(-p))), specularPower);
   specular += sf * lightColor;
 }

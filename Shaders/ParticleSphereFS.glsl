@@ -78,7 +78,6 @@ void main()
   gl_FragDepth = depth;
   vec4 vertexVC = vec4(centerVC + hitRel, 1.0);
   vec3 normalVCVSOutput = (inside ? -hitRel : hitRel) / radiusVC;
-  vec3 prViewDirVC = -prRayD;
 
   //VTK::PositionVC::Impl
   //VTK::UniformFlow::Impl

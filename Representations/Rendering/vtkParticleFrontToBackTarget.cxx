@@ -408,6 +408,12 @@ bool vtkParticleFrontToBackTarget::GetAccumulation(std::vector<float>& rgba)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::ClearRetainedAccumulation()
+{
+  this->Internals->Retained.clear();
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleFrontToBackTarget::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& internals = *this->Internals;

@@ -82,6 +82,12 @@ public:
    * KeepAccumulation is set; otherwise read right after End() from the retained copy.
    */
   bool GetAccumulation(std::vector<float>& rgba);
+
+  /**
+   * Forget the retained accumulation (for tests: after this, a frame that composites nothing
+   * leaves GetAccumulation() empty instead of returning an older frame's).
+   */
+  void ClearRetainedAccumulation();
   vtkSetMacro(KeepAccumulation, bool);
   vtkGetMacro(KeepAccumulation, bool);
 

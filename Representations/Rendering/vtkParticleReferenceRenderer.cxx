@@ -528,9 +528,10 @@ struct LightVC
   double Exponent = 1.0;
 };
 
-// Lighting.glsl, prSceneLight. Returns true when the point is inside the light's spot cone (or
-// the light is not a spot).
-bool SceneLight(const double n[3], const double v[3], const double p[3], const LightVC& light,
+// Lighting.glsl, prSceneLight (VTK's view vector normalize(-p), in either projection, and its
+// 1e-5 floor of the specular base). Returns true when the point is inside the light's spot cone
+// (or the light is not a spot).
+bool SceneLight(const double n[3], const double p[3], const LightVC& light,
   bool usePositional, double specularPower, double diffuse[3], double specular[3])
 {
   bool inCone = true;
@@ -562,7 +563,9 @@ bool SceneLight(const double n[3], const double v[3], const double p[3], const L
   const double nl = Dot(n, l);
   const double r[3] = { l[0] - 2.0 * nl * n[0], l[1] - 2.0 * nl * n[1], l[2] - 2.0 * nl * n[2] };
   const double signDf = df > 0.0 ? 1.0 : (df < 0.0 ? -1.0 : 0.0);
-  const double sf = signDf * attenuation * std::pow(std::max(0.0, Dot(r, v)), specularPower);
+  double v[3] = { -p[0], -p[1], -p[2] };
+  NormalizeInPlace(v);
+  const double sf = signDf * attenuation * std::pow(std::max(1e-5, Dot(r, v)), specularPower);
   for (int k = 0; k < 3; ++k)
   {
     diffuse[k] += df * light.Color[k];
@@ -933,6 +936,25 @@ vtkImageData* vtkParticleReferenceRenderer::GetTranslucentAlphaImage()
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleReferenceRenderer::SetParticleAttributes(
+  vtkDataArray* radii, vtkUnsignedCharArray* colors, vtkDataArray* opacities)
+{
+  if (!radii)
+  {
+    colors = nullptr;
+    opacities = nullptr;
+  }
+  if (this->ParticleRadii != radii || this->ParticleColors != colors ||
+    this->ParticleOpacities != opacities)
+  {
+    this->ParticleRadii = radii;
+    this->ParticleColors = colors;
+    this->ParticleOpacities = opacities;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleReferenceRenderer::SetOpaqueLayer(vtkDataArray* rgba, vtkDataArray* windowDepth)
 {
   if (!rgba || !windowDepth)
@@ -1109,17 +1131,37 @@ bool vtkParticleReferenceRenderer::Render()
     mapper->GetInputAlgorithm()->Update(); // as the mapper does before drawing
   }
   vtkPolyData* input = mapper->GetInput();
-  vtkFloatArray* radii = mapper->GetParticleRadii(); // validates the input
   const vtkIdType numPts =
     (input && input->GetPoints()) ? input->GetNumberOfPoints() : static_cast<vtkIdType>(0);
-  const double radiusScale = mapper->GetRadiusScaleVC(this->Actor);
-  vtkProperty* property = this->Actor->GetProperty();
-
-  vtkUnsignedCharArray* colors = numPts > 0 ? mapper->MapScalars(1.0) : nullptr;
-  if (colors && (colors->GetNumberOfTuples() != numPts || colors->GetNumberOfComponents() != 4))
+  const bool given = this->ParticleRadii != nullptr; // the caller's attributes
+  vtkDataArray* radii = nullptr;
+  double radiusScale = 1.0;
+  vtkUnsignedCharArray* colors = nullptr;
+  if (given)
   {
-    colors = nullptr; // cell scalars do not colour particles (as on the GPU)
+    radii = this->ParticleRadii;
+    colors = this->ParticleColors;
+    const vtkDataArray* opacities = this->ParticleOpacities;
+    if (radii->GetNumberOfTuples() != numPts ||
+      (colors && (colors->GetNumberOfTuples() != numPts || colors->GetNumberOfComponents() != 4)) ||
+      (opacities && opacities->GetNumberOfTuples() != numPts))
+    {
+      return fail("The particle attributes do not have one tuple (RGBA colours) per point.");
+    }
+    radiusScale =
+      this->Actor->GetIsIdentity() ? 1.0 : std::cbrt(std::abs(this->Actor->GetMatrix()->Determinant()));
   }
+  else
+  {
+    radii = mapper->GetParticleRadii(); // validates the input
+    radiusScale = mapper->GetRadiusScaleVC(this->Actor);
+    colors = numPts > 0 ? mapper->MapScalars(1.0) : nullptr;
+    if (colors && (colors->GetNumberOfTuples() != numPts || colors->GetNumberOfComponents() != 4))
+    {
+      colors = nullptr; // cell scalars do not colour particles (as on the GPU)
+    }
+  }
+  vtkProperty* property = this->Actor->GetProperty();
   const double opacity = property->GetOpacity();
 
   // ---- transparent mode: the model's parameters and Theta_a
@@ -1129,7 +1171,7 @@ bool vtkParticleReferenceRenderer::Render()
   double hollowFraction = 0.0;
   double volumeMix = 0.0;
   double maximumPathIntegral = 0.0; // for radius 1
-  vtkDoubleArray* opacityArray = nullptr;
+  vtkDataArray* opacityArray = nullptr;
   std::vector<double> layerColors;
   std::vector<double> layerDepths;
   if (transparent)
@@ -1138,7 +1180,11 @@ bool vtkParticleReferenceRenderer::Render()
     hollowFraction = transparentMapper->GetHollowFraction();
     volumeMix = transparentMapper->GetVolumeMix();
     maximumPathIntegral = NumericalMaximumPathIntegralImpl(densityModel, hollowFraction);
-    if (numPts > 0)
+    if (given)
+    {
+      opacityArray = this->ParticleOpacities; // nullptr: Theta_a = 1
+    }
+    else if (numPts > 0)
     {
       transparentMapper->GetBounds(); // prepares the opacities (see GetParticleOpacities())
       opacityArray = transparentMapper->GetParticleOpacities();
@@ -1192,7 +1238,7 @@ bool vtkParticleReferenceRenderer::Render()
     vtkPoints* points = input->GetPoints();
     for (vtkIdType i = 0; i < numPts; ++i)
     {
-      const double r = radii->GetValue(i) * radiusScale;
+      const double r = radii->GetComponent(i, 0) * radiusScale;
       if (!(r > 0.0) || !std::isfinite(r))
       {
         continue; // skipped particle
@@ -1227,7 +1273,7 @@ bool vtkParticleReferenceRenderer::Render()
       }
       if (transparent)
       {
-        double theta = opacityArray->GetValue(i) * opacity;
+        double theta = (opacityArray ? opacityArray->GetComponent(i, 0) : 1.0) * opacity;
         if (colors)
         {
           theta *= colors->GetValue(4 * i + 3) / 255.0;
@@ -1468,9 +1514,9 @@ bool vtkParticleReferenceRenderer::Render()
       }
     }
   };
-  // VTK's lit colour (not clamped) at the surface point p with unit normal n seen from direction
-  // v; returns the bits of the spot cones containing p
-  auto shade = [&](const double n[3], const double p[3], const double v[3], const double amb[3],
+  // VTK's lit colour (not clamped) at the surface point p (view coordinates) with unit normal n;
+  // returns the bits of the spot cones containing p
+  auto shade = [&](const double n[3], const double p[3], const double amb[3],
                  const double dif[3], double color[3]) -> std::uint32_t
   {
     std::uint32_t cones = 0;
@@ -1501,7 +1547,7 @@ bool vtkParticleReferenceRenderer::Render()
       else
       {
         const bool inCone =
-          SceneLight(n, v, p, light, complexity == 3, specularPower, diffuse, specular);
+          SceneLight(n, p, light, complexity == 3, specularPower, diffuse, specular);
         if (complexity == 3 && light.Positional && light.ConeAngle < 90.0 &&
           bit < MaximumConeBits)
         {
@@ -1535,7 +1581,6 @@ bool vtkParticleReferenceRenderer::Render()
             double tNear;
             double tFar;
             cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
-            const double v[3] = { -d[0], -d[1], -d[2] };
 
             // what lies behind the particles: background, opaque layer or opaque particle
             double back[4] = { background[0], background[1], background[2], backgroundAlpha };
@@ -1607,7 +1652,7 @@ bool vtkParticleReferenceRenderer::Render()
               double alpha;
               material(pid, amb, dif, alpha);
               double color[3];
-              const std::uint32_t cones = shade(n, p, v, amb, dif, color);
+              const std::uint32_t cones = shade(n, p, amb, dif, color);
               const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
                 std::isfinite(color[2]) && std::isfinite(alpha);
               // otherwise the GPU discards the fragment; at a tie the particle (drawn later,
@@ -1682,7 +1727,7 @@ bool vtkParticleReferenceRenderer::Render()
                   p[k] = s.C[k] + rel[k];
                 }
                 double surface[3];
-                cones = shade(n, p, v, amb, dif, surface);
+                cones = shade(n, p, amb, dif, surface);
                 if (!std::isfinite(surface[0]) || !std::isfinite(surface[1]) ||
                   !std::isfinite(surface[2]))
                 {
@@ -1881,13 +1926,12 @@ bool vtkParticleReferenceRenderer::Render()
               n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
             }
             const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
-            const double v[3] = { -d[0], -d[1], -d[2] };
             double amb[3];
             double dif[3];
             double alpha;
             material(pid, amb, dif, alpha);
             double color[3];
-            cones = shade(n, p, v, amb, dif, color);
+            cones = shade(n, p, amb, dif, color);
             double occlusion = 1.0;
             if (aoSamples > 0)
             {
@@ -1991,6 +2035,8 @@ void vtkParticleReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Renderer: " << this->Renderer << "\n";
   os << indent << "Actor: " << this->Actor << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
+  os << indent << "ParticleAttributes: " << (this->ParticleRadii ? "given" : "the mapper's")
+     << "\n";
   os << indent << "LightingComplexity: " << this->LightingComplexity << "\n";
   os << indent << "LightingCount: " << this->LightingCount << "\n";
   os << indent << "NumberOfSpheres: " << this->NumberOfSpheres << "\n";

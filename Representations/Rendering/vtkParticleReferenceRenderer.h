@@ -14,7 +14,8 @@
  *   parallel rays start at the plane z_VC = 0 (the plane of the camera position).
  * - Spheres: the centres are the input points transformed by the actor's matrix and the view
  *   matrix in double (the mapper uploads float positions, so for data far from the origin the
- *   GPU's spheres are displaced by that rounding and the reference's are not); the radii are the mapper's GetParticleRadii() times GetRadiusScaleVC(actor).
+ *   GPU's spheres are displaced by that rounding and the reference's are not); the radii are the mapper's GetParticleRadii() times GetRadiusScaleVC(actor),
+ *   or, with SetParticleAttributes(), the caller's radii times |det(actor matrix)|^(1/3).
  *   Skipped particles (radius 0), particles clipped by the mapper's clipping planes (by their
  *   centre, as on the GPU) and particles with opacity 0 (all their fragments are discarded on the
  *   GPU) are not drawn.
@@ -180,6 +181,24 @@ public:
   void SetOpaqueLayer(vtkDataArray* rgba, vtkDataArray* windowDepth);
 
   /**
+   * Particle attributes computed by the caller from the raw arrays, so that a test's reference
+   * does not depend on how the mapper under test prepares them. When radii is set, Render() uses
+   * these instead of the mapper's GetParticleRadii(), MapScalars() and GetParticleOpacities():
+   * - radii: one value per input point, in data units; the reference scales them by
+   *   |det(actor matrix)|^(1/3) like the GPU (the mapper's RadiusScaleFactor is not applied:
+   *   include it). Values <= 0 or non-finite skip the particle.
+   * - colors: 4-component 8-bit RGBA per point, or nullptr for no scalar colours (the
+   *   property's colours, opacity 1).
+   * - opacities (transparent mode): Theta_a per point in [0, 1]; nullptr gives 1.
+   * The input positions are still the mapper's input points; the density model, hollow fraction
+   * and volume mix are still the mapper's settings. SetParticleAttributes(nullptr, nullptr,
+   * nullptr) returns to the mapper's attributes. Render() fails when an array does not have one
+   * tuple per point.
+   */
+  void SetParticleAttributes(
+    vtkDataArray* radii, vtkUnsignedCharArray* colors, vtkDataArray* opacities);
+
+  /**
    * Render the images. Returns true on success; on failure (no renderer, no actor, not a
    * vtkParticleSphereMapper, empty viewport, an opaque layer of the wrong size) an error is
    * reported and the images are emptied.
@@ -329,6 +348,9 @@ protected:
   int AmbientOcclusionSamples = 0;
   double AmbientOcclusionDistance = 0.0;
   bool ApplyAmbientOcclusion = false;
+  vtkSmartPointer<vtkDataArray> ParticleRadii;
+  vtkSmartPointer<vtkUnsignedCharArray> ParticleColors;
+  vtkSmartPointer<vtkDataArray> ParticleOpacities;
   vtkSmartPointer<vtkDataArray> OpaqueLayerColors;
   vtkSmartPointer<vtkDataArray> OpaqueLayerDepth;
 

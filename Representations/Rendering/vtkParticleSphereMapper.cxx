@@ -560,14 +560,14 @@ void vtkParticleSphereMapper::ReplaceShaderLight(
       }
       else if (complexity == 2)
       {
-        impl << "  prSceneLight(normalVCVSOutput, prViewDirVC, vertexVC.xyz, lightColor" << i
+        impl << "  prSceneLight(normalVCVSOutput, vertexVC.xyz, lightColor" << i
              << ", lightDirectionVC" << i
              << ", 0, vec3(0.0), vec3(1.0, 0.0, 0.0), 180.0, 1.0, specularPower, diffuse, "
                 "specular);\n";
       }
       else
       {
-        impl << "  prSceneLight(normalVCVSOutput, prViewDirVC, vertexVC.xyz, lightColor" << i
+        impl << "  prSceneLight(normalVCVSOutput, vertexVC.xyz, lightColor" << i
              << ", lightDirectionVC" << i << ", lightPositional" << i << ", lightPositionVC" << i
              << ", lightAttenuation" << i << ", lightConeAngle" << i << ", lightExponent" << i
              << ", specularPower, diffuse, specular);\n";

@@ -209,9 +209,12 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
     ok &= prTest::Check(scene.AO->GetDensityVolume()->GetDimensions()[0] == 1, "one point: 1 voxel");
   }
 
-  // NaN and Inf positions among valid ones: skipped by the volume (finite grid)
+  // NaN and Inf positions among valid ones: skipped by the volume (finite grid), so the picture
+  // with AO is exactly that of the finite particles alone -- an upper and a lower bound on the
+  // darkening (pixels blackened by a NaN would differ)
   {
     Scene scene;
+    Scene finite;
     vtkNew<vtkPoints> points;
     for (int i = 0; i < 10; ++i)
     {
@@ -223,6 +226,11 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
         }
       }
     }
+    vtkNew<vtkPoints> finitePoints;
+    finitePoints->DeepCopy(points);
+    finite.Renderer->AddActor(Particles(finitePoints, 0.5));
+    finite.Renderer->ResetCamera(0, 9, 0, 9, 0, 9);
+    const std::vector<int> expected = finite.Render(true);
     points->InsertNextPoint(std::nan(""), 0.0, 0.0);
     points->InsertNextPoint(0.0, HUGE_VAL, 0.0);
     points->InsertNextPoint(0.0, 0.0, -HUGE_VAL);
@@ -234,6 +242,16 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
         scene.AO->GetDensityVolume()->GetDimensions()[0] == 5,
       "NaN and Inf positions: the grid of the finite particles (5 voxels of 2 per axis)");
     ok &= prTest::Check(darker > 100, "NaN and Inf positions: AO on the finite particles");
+    const std::vector<int> image = scene.Render(true);
+    int worst = 0;
+    for (size_t i = 0; i < image.size(); ++i)
+    {
+      worst = std::max(worst, std::abs(image[i] - expected[i]));
+    }
+    std::cout << "NaN and Inf positions: max |image - image of the finite particles| " << worst
+              << "/255\n";
+    ok &= prTest::Check(worst <= 1,
+      "NaN and Inf positions: the same picture as the finite particles alone");
   }
 
   // huge resolutions: beyond MaximumVoxelCount, then beyond the GPU's largest 3D texture

@@ -15,9 +15,11 @@
 //           close) the bound is 1e-5 * 0.1 / cos(incidence), i.e. the same sideways ray error;
 //   coverage: at least 90% of the sphere pixels of the reference are compared;
 //   the GPU's lighting complexity and light count equal the reference's.
+// The reference's particles (radii, colours) are computed by the test from the raw arrays and the
+// lookup table (prTest::RawAttributes), not read back from the mapper under test.
 // Scenes: a headlight, b light kit + specular, c parallel projection, d positional spot lights,
 // h double-precision data 1e6 units from the origin,
-// e LAMMPS FCC block (skipped when Testing/Data/fcc_block.vtp is missing), f eye inside a big
+// e LAMMPS FCC block (Testing/Data/fcc_block.vtp; a missing file fails), f eye inside a big
 // sphere, g camera 1e7 radii away, t 1e5 spheres (also times the reference).
 // Outputs in the -T directory: <test>_<scene>_{gpu,ref,error}.png (error map: |gpu - ref| x 64,
 // excluded pixels grey).
@@ -69,6 +71,13 @@ struct Scene
   vtkSmartPointer<vtkPolyData> Input;
   std::function<void(vtkRenderer*, vtkActor*, vtkParticleSphereMapper*)> Setup;
   double MinimumComparedFraction = 0.9;
+  // what the reference draws, computed by the test from the raw arrays (not read back from the
+  // mapper): radii from RadiusArray (Radius when empty), colours from ColorArray through the
+  // lookup table over ColorRange (none when empty)
+  std::string RadiusArray = "radius";
+  double Radius = 0.0;
+  std::string ColorArray = "value";
+  double ColorRange[2] = { 0.0, 21.0 };
 };
 
 void LatticeColors(vtkParticleSphereMapper* mapper, vtkLookupTable* lut)
@@ -92,7 +101,8 @@ void ObliqueCamera(vtkRenderer* renderer, double zoom)
 }
 
 // Run one scene; returns false when a check fails.
-bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& tempDir)
+bool RunScene(
+  const Scene& scene, vtkRenderWindow* window, vtkLookupTable* lut, const std::string& tempDir)
 {
   // a fresh renderer (camera, lights) in the shared window
   window->GetRenderers()->RemoveAllItems();
@@ -117,6 +127,9 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& te
   vtkNew<vtkParticleReferenceRenderer> reference;
   reference->SetRenderer(renderer);
   reference->SetActor(actor);
+  const prTest::ParticleAttributes attributes = prTest::RawAttributes(scene.Input,
+    scene.RadiusArray, scene.Radius, scene.ColorArray, lut, scene.ColorRange);
+  reference->SetParticleAttributes(attributes.Radii, attributes.Colors, nullptr);
   ok &= prTest::Check(reference->Render(), scene.Name + ": reference render failed");
   if (!ok)
   {
@@ -307,7 +320,7 @@ int TestReferenceComparison(int argc, char* argv[])
       actor->GetProperty()->SetSpecularPower(20);
       ObliqueCamera(renderer, 2.2);
     } });
-  // (c) parallel projection, light kit and specular (view vector (0,0,1))
+  // (c) parallel projection, light kit and specular (VTK's view vector normalize(-p) also here)
   scenes.push_back({ "c_parallel", lattice,
     [&](vtkRenderer* renderer, vtkActor* actor, vtkParticleSphereMapper* mapper)
     {
@@ -373,35 +386,31 @@ int TestReferenceComparison(int argc, char* argv[])
       point->SetColor(0.4, 0.6, 1.0);
       renderer->AddLight(point);
     } });
-  // (e) LAMMPS FCC block
-  vtkSmartPointer<vtkPolyData> fcc;
-  const std::string fccFile = prTest::DataFile(argc, argv, "fcc_block.vtp");
-  if (std::ifstream(fccFile).good())
+  scenes.back().ColorArray.clear(); // scalar visibility off
+  // (e) LAMMPS FCC block (the data file is part of the repository: missing is a failure)
+  vtkSmartPointer<vtkPolyData> fcc =
+    prTest::ReadPolyData(prTest::DataFile(argc, argv, "fcc_block.vtp"));
+  if (!fcc)
   {
-    fcc = prTest::ReadPolyData(fccFile);
-    if (!fcc)
+    return EXIT_FAILURE;
+  }
+  scenes.push_back({ "e_fcc_block", fcc,
+    [&](vtkRenderer* renderer, vtkActor* actor, vtkParticleSphereMapper* mapper)
     {
-      return EXIT_FAILURE;
-    }
-    scenes.push_back({ "e_fcc_block", fcc,
-      [&](vtkRenderer* renderer, vtkActor* actor, vtkParticleSphereMapper* mapper)
-      {
-        mapper->SetRadiusArrayName("radius");
-        mapper->SetScalarModeToUsePointFieldData();
-        mapper->SelectColorArray("type");
-        mapper->SetScalarRange(1, 2);
-        mapper->SetLookupTable(lut);
-        vtkNew<vtkLightKit> kit;
-        kit->AddLightsToRenderer(renderer);
-        actor->GetProperty()->SetSpecular(0.3);
-        actor->GetProperty()->SetSpecularPower(40);
-        ObliqueCamera(renderer, 7.0);
-      } });
-  }
-  else
-  {
-    std::cout << "scene e_fcc_block skipped: " << fccFile << " does not exist\n";
-  }
+      mapper->SetRadiusArrayName("radius");
+      mapper->SetScalarModeToUsePointFieldData();
+      mapper->SelectColorArray("type");
+      mapper->SetScalarRange(1, 2);
+      mapper->SetLookupTable(lut);
+      vtkNew<vtkLightKit> kit;
+      kit->AddLightsToRenderer(renderer);
+      actor->GetProperty()->SetSpecular(0.3);
+      actor->GetProperty()->SetSpecularPower(40);
+      ObliqueCamera(renderer, 7.0);
+    } });
+  scenes.back().ColorArray = "type";
+  scenes.back().ColorRange[0] = 1;
+  scenes.back().ColorRange[1] = 2;
   // (f) the eye inside a big sphere: its back surface seen from inside, neighbours cut by the
   // near plane. The eye is placed where no other particle's centre is closer than 2 of its radii
   // (min 2.03): from a point just outside a sphere (e.g. the Extremes test's eye, 1.057 radii
@@ -426,6 +435,7 @@ int TestReferenceComparison(int argc, char* argv[])
       camera->SetViewAngle(80);
       camera->SetClippingRange(0.5, 20);
     } });
+  scenes.back().ColorRange[1] = 12;
   // (g) the camera 1e7 radii away: radius 1, a 10^3 lattice of spacing 2.5, a view angle that
   // spans 13 units (6.5 sphere diameters; with 10 diameters the spheres are too small on screen
   // for 90% of their pixels to lie outside the masked outlines)
@@ -447,6 +457,9 @@ int TestReferenceComparison(int argc, char* argv[])
       camera->SetViewAngle(2.0 * std::atan(6.5 / d) * 180.0 / 3.14159265358979323846);
       renderer->ResetCameraClippingRange();
     } });
+  scenes.back().RadiusArray.clear();
+  scenes.back().Radius = 1.0;
+  scenes.back().ColorRange[1] = 27;
   // (h) far from the origin: the lattice in double precision translated by 1e6 (float positions
   // would be off by 1/16 unit there), with one invalid particle so that the mapper's sanitised
   // copy of the positions is used. The VBO shift must keep the full precision either way.
@@ -485,6 +498,7 @@ int TestReferenceComparison(int argc, char* argv[])
       ObliqueCamera(renderer, 1.3);
     },
     0.0 });
+  scenes.back().ColorRange[1] = 138;
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(ImageSize, ImageSize);
@@ -492,7 +506,7 @@ int TestReferenceComparison(int argc, char* argv[])
   bool ok = true;
   for (const Scene& scene : scenes)
   {
-    ok &= RunScene(scene, window, tempDir);
+    ok &= RunScene(scene, window, lut, tempDir);
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,20 +1,25 @@
 #include "prTestUtilities.h"
 
 #include "vtkCellArray.h"
-#include "vtkImageData.h"
-#include "vtkParticleImageComparison.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkIntArray.h"
+#include "vtkLookupTable.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
+#include "vtkParticleImageComparison.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkXMLPolyDataReader.h"
+
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -222,6 +227,55 @@ void MessageCounter::Execute(vtkObject*, unsigned long event, void* callData)
     this->LastError = text;
   }
   this->All += text;
+}
+
+ParticleAttributes RawAttributes(vtkPolyData* input, const std::string& radiusArray,
+  double constantRadius, const std::string& colorArray, vtkLookupTable* lut, const double range[2],
+  const std::string& opacityArray, const double opacityRange[2])
+{
+  ParticleAttributes out;
+  const vtkIdType n = input->GetNumberOfPoints();
+  out.Radii = vtkSmartPointer<vtkDoubleArray>::New();
+  out.Radii->SetNumberOfTuples(n);
+  vtkDataArray* radius =
+    radiusArray.empty() ? nullptr : input->GetPointData()->GetArray(radiusArray.c_str());
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    out.Radii->SetValue(i, radius ? radius->GetComponent(i, 0) : constantRadius);
+  }
+  vtkDataArray* scalars =
+    colorArray.empty() ? nullptr : input->GetPointData()->GetArray(colorArray.c_str());
+  if (lut && scalars)
+  {
+    vtkNew<vtkLookupTable> table;
+    table->DeepCopy(lut);
+    table->SetRange(range[0], range[1]);
+    out.Colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    out.Colors->SetNumberOfComponents(4);
+    out.Colors->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const unsigned char* rgba = table->MapValue(scalars->GetComponent(i, 0));
+      for (int k = 0; k < 4; ++k)
+      {
+        out.Colors->SetValue(4 * i + k, rgba[k]);
+      }
+    }
+  }
+  vtkDataArray* opacity =
+    opacityArray.empty() ? nullptr : input->GetPointData()->GetArray(opacityArray.c_str());
+  if (opacity && opacityRange)
+  {
+    out.Opacities = vtkSmartPointer<vtkDoubleArray>::New();
+    out.Opacities->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double t = (opacity->GetComponent(i, 0) - opacityRange[0]) /
+        (opacityRange[1] - opacityRange[0]);
+      out.Opacities->SetValue(i, std::isnan(t) ? 0.0 : std::min(1.0, std::max(0.0, t)));
+    }
+  }
+  return out;
 }
 
 bool Check(bool condition, const std::string& what)

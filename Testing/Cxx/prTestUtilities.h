@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+class vtkDoubleArray;
 class vtkImageData;
+class vtkLookupTable;
+class vtkUnsignedCharArray;
 class vtkPolyData;
 class vtkRenderWindow;
 
@@ -84,6 +87,24 @@ public:
 private:
   std::vector<std::pair<vtkWeakPointer<vtkObject>, unsigned long>> Tags;
 };
+
+/**
+ * Particle attributes computed by a test from the raw point arrays, independently of the mapper
+ * under test (for vtkParticleReferenceRenderer::SetParticleAttributes): radii from the named
+ * array (constantRadius when the name is empty), 8-bit RGBA colours by mapping the named array's
+ * first component through a copy of lut over [range[0], range[1]] (none without a lut), and
+ * maximum opacities Theta_a from the named array mapped linearly from opacityRange to [0, 1] and
+ * clamped, NaN giving 0 (none when the name is empty).
+ */
+struct ParticleAttributes
+{
+  vtkSmartPointer<vtkDoubleArray> Radii;
+  vtkSmartPointer<vtkUnsignedCharArray> Colors;
+  vtkSmartPointer<vtkDoubleArray> Opacities;
+};
+ParticleAttributes RawAttributes(vtkPolyData* input, const std::string& radiusArray,
+  double constantRadius, const std::string& colorArray, vtkLookupTable* lut, const double range[2],
+  const std::string& opacityArray = std::string(), const double opacityRange[2] = nullptr);
 
 /** Count a check: print the message when it fails. Returns the condition. */
 bool Check(bool condition, const std::string& what);
