@@ -53,7 +53,7 @@ def main():
         if translucent:
             # emission-absorption glyphs: slow (liquid) atoms nearly clear, vapour opaque
             display.UseOpacityArray = 1
-            display.OpacityArray = ["POINTS", "speed"]
+            display.ParticleOpacityArray = ["POINTS", "speed"]
             display.OpacityArrayRange = [0.0, 3.0]
             display.DensityModel = "Squared Distance"
             display.HollowFraction = 0.4

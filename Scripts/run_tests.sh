@@ -7,4 +7,4 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/Scripts/build.sh"
 build=${BUILD_DIR:-$top/build}
 cd "$build"
-"$top/Scripts/with_xvfb.sh" ctest --output-on-failure --timeout 900 "$@"
+"$top/Scripts/with_xvfb.sh" ctest --output-on-failure --no-tests=error --timeout 900 "$@"

@@ -246,7 +246,8 @@ int vtkParticleRepresentation::ProcessViewRequest(
     this->Mapper->SetInputDataObject(particles);
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
     // an empty filter output): draw nothing, without the mapper's "no points" warning.
-    this->Actor->SetVisibility(particles->GetNumberOfPoints() > 0);
+    this->HasLocalParticles = particles->GetNumberOfPoints() > 0;
+    this->Actor->SetVisibility(this->GetVisibility() && this->HasLocalParticles);
     this->UpdateColoringParameters();
   }
   return 1;
@@ -308,7 +309,8 @@ bool vtkParticleRepresentation::RemoveFromView(vtkView* view)
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetVisibility(bool val)
 {
-  this->Actor->SetVisibility(val);
+  // an empty local piece stays hidden (see ProcessViewRequest)
+  this->Actor->SetVisibility(val && this->HasLocalParticles);
   this->Superclass::SetVisibility(val);
 }
 
@@ -507,6 +509,12 @@ prForwardProperty3(SetSpecularColor);
 void vtkParticleRepresentation::SetPickable(int val)
 {
   this->Actor->SetPickable(val);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkParticleRepresentation::GetParticleInputWarning()
+{
+  return this->Mapper->GetLastInputWarning();
 }
 
 //------------------------------------------------------------------------------

@@ -147,6 +147,12 @@ public:
    */
   vtkIdType GetNumberOfParticles();
 
+  /**
+   * The mapper's warning about the local input ("" when it is fine), for an information
+   * property: lets scripts and tests see which representation warned about what.
+   */
+  const char* GetParticleInputWarning();
+
 protected:
   vtkParticleRepresentation();
   ~vtkParticleRepresentation() override;
@@ -173,6 +179,7 @@ protected:
 
   vtkNew<vtkTransparentSphereMapper> Mapper;
   vtkNew<vtkActor> Actor;
+  bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;
   std::string OpacityArray;
   vtkSmartPointer<vtkPolyData> ProcessedData;

@@ -401,6 +401,12 @@ vtkFloatArray* vtkParticleSphereMapper::GetParticleRadii()
 }
 
 //------------------------------------------------------------------------------
+const char* vtkParticleSphereMapper::GetLastInputWarning()
+{
+  return this->Internals->LastWarning.c_str();
+}
+
+//------------------------------------------------------------------------------
 double vtkParticleSphereMapper::GetRadiusScaleVC(vtkActor* actor) const
 {
   double scale = 1.0;

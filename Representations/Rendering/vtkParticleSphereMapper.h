@@ -107,6 +107,13 @@ public:
    */
   vtkGetMacro(NumberOfSkippedParticles, vtkIdType);
 
+  /**
+   * The warning of the last input preparation (what is wrong with the input: no points, an
+   * unusable radius array, invalid radii or positions), "" when the input was fine. The warning
+   * itself is issued once, when it changes; this keeps it for ParaView and tests.
+   */
+  const char* GetLastInputWarning();
+
   ///@{
   /**
    * Per-stage timings for benchmarks (off by default; costs a GPU timer query per frame when on).

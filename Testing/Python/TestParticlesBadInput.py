@@ -4,9 +4,13 @@
   (b) points without the chosen radius array (RadiusArray names a missing array),
   (c) a 2-component array chosen as radius (a plane's TextureCoordinates).
 (b) and (c) warn and fall back to the constant Radius: two 7x7 grids of equal spheres, (b)
-grey-blue on the left, (c) yellow on the right. Baseline-image test; the warnings for (b) and
-(c) must name the array. Switching representation and radius source back and forth on these
-inputs must not crash either.
+grey-blue on the left, (c) yellow on the right. Baseline-image test. Each representation's own
+warning (its ParticleInputWarning information property) must say what is wrong with its input:
+none for (a), the missing 'radius' for (b), the 2-component TextureCoordinates for (c); and every
+warning logged during the test must be one of those two -- in particular no "no points" warning
+for the empty piece and no "already exists" warning (loading the plugin must not replace stock
+ParaView properties). Switching representation and radius source back and forth on these inputs
+must not crash either.
 
 usage: pvpython TestParticlesBadInput.py --plugin ParticleRendering.so --data DIR
            --baseline-dir DIR --temp-dir DIR
@@ -83,9 +87,28 @@ ok = pr.capture_and_compare(view, name, args, CRITERIA)[0] and ok
 vtkOutputWindow.SetInstance(previous_window)
 text = messages.GetOutput()
 print("---- warnings ----\n%s\n------------------" % text.strip())
-for case, needle in (("(b)", "'radius'"), ("(c)", "TextureCoordinates")):
-    if needle not in text:
-        print("FAIL: no warning naming %s for case %s" % (needle, case))
+
+# each representation's own warning
+EXPECTED = {
+    "(a)": (shown_a, ""),
+    "(b)": (shown_b, "Radius array 'radius' is not a point array of the input"),
+    "(c)": (shown_c, "Radius array 'TextureCoordinates' has 2 components"),
+}
+for case, (display, needle) in EXPECTED.items():
+    display.SMProxy.UpdatePropertyInformation()
+    warning = display.GetPropertyValue("ParticleInputWarning")
+    print("%s: %r" % (case, warning))
+    if (needle == "" and warning != "") or needle not in warning:
+        print("FAIL: case %s warned %r, expected %s" % (case, warning,
+                                                       repr(needle) if needle else "nothing"))
         ok = False
+
+# every logged warning is one of the expected ones
+blocks = [b.strip() for b in text.split("Warning: In ") if b.strip()]
+unexpected = [b for b in blocks if not any(n and n in b for _, n in EXPECTED.values())]
+print("%d warnings logged, %d unexpected" % (len(blocks), len(unexpected)))
+for block in unexpected:
+    print("FAIL: unexpected warning: %s" % block.replace("\n", " "))
+ok = ok and not unexpected and len(blocks) > 0
 
 pr.finish(ok)

@@ -41,7 +41,7 @@ for name, value in defaults.items():
         ok = False
 
 display.UseOpacityArray = 1
-display.OpacityArray = ["POINTS", "speed"]
+display.ParticleOpacityArray = ["POINTS", "speed"]
 display.OpacityArrayRange = [0.0, 3.0]
 pr.set_camera(view, position=(95.0, 20.0, 95.0), focal_point=(40.0, 40.0, 40.0),
               view_up=(0, 1, 0), view_angle=30.0)
