@@ -185,11 +185,8 @@ bool vtkParticleImageComparison::Compare(vtkImageData* a, vtkImageData* b,
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleImageComparison::CompareImages(
-  vtkImageData* a, vtkImageData* b, vtkDataArray* excluded)
+void vtkParticleImageComparison::KeepResult(const Result& r)
 {
-  Result r;
-  const bool ok = Compare(a, b, excluded, this->Tolerance, r, this->ComparedComponents);
   this->RMSE = r.RMSE;
   this->MaxAbsError = r.MaxAbsError;
   std::copy(r.ChannelMaxAbsError, r.ChannelMaxAbsError + 4, this->ChannelMaxAbsError);
@@ -201,6 +198,15 @@ bool vtkParticleImageComparison::CompareImages(
   this->NumberOfExcludedPixels = static_cast<vtkIdType>(r.NumberOfExcludedPixels);
   this->NumberOfPixelsOverTolerance = static_cast<vtkIdType>(r.NumberOfPixelsOverTolerance);
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleImageComparison::CompareImages(
+  vtkImageData* a, vtkImageData* b, vtkDataArray* excluded)
+{
+  Result r;
+  const bool ok = Compare(a, b, excluded, this->Tolerance, r, this->ComparedComponents);
+  this->KeepResult(r);
   return ok;
 }
 
@@ -328,27 +334,9 @@ bool vtkParticleImageComparison::TestImages(vtkImageData* image, vtkImageData* e
   Result r;
   std::string reason;
   const bool compared = this->Judge(image, expected, excluded, r, this->Score, reason);
-  this->FailureReason = reason;
-  this->RMSE = r.RMSE;
-  this->MaxAbsError = r.MaxAbsError;
-  std::copy(r.ChannelMaxAbsError, r.ChannelMaxAbsError + 4, this->ChannelMaxAbsError);
-  std::copy(r.ChannelMeanAbsError, r.ChannelMeanAbsError + 4, this->ChannelMeanAbsError);
-  this->MaxErrorPixel[0] = r.MaxErrorPixel[0];
-  this->MaxErrorPixel[1] = r.MaxErrorPixel[1];
-  this->NumberOfComponents = r.NumberOfComponents;
-  this->NumberOfComparedPixels = static_cast<vtkIdType>(r.NumberOfComparedPixels);
-  this->NumberOfExcludedPixels = static_cast<vtkIdType>(r.NumberOfExcludedPixels);
-  this->NumberOfPixelsOverTolerance = static_cast<vtkIdType>(r.NumberOfPixelsOverTolerance);
-  this->Modified();
+  this->KeepResult(r);
   const bool passed = compared && this->Score <= 1.0;
-  if (!compared)
-  {
-    this->FailureReason = reason;
-  }
-  else if (passed)
-  {
-    this->FailureReason.clear();
-  }
+  this->FailureReason = passed ? std::string() : reason;
 
   double worstMean = 0.0;
   for (int c = 0; c < r.NumberOfComponents; ++c)

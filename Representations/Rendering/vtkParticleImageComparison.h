@@ -279,6 +279,8 @@ protected:
   vtkIdType NumberOfExcludedPixels = 0;
   vtkIdType NumberOfPixelsOverTolerance = 0;
 
+  // Keep a result for the Get methods.
+  void KeepResult(const Result& result);
   // Score and reason of a result under the criteria.
   double Evaluate(const Result& result, std::string& reason) const;
   // The mask of the criteria (MaskRadius around the edges of expected) or'ed with excluded.
