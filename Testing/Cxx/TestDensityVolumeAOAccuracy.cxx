@@ -20,6 +20,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDensityVolumeAOPass.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -224,6 +225,10 @@ int TestDensityVolumeAOAccuracy(int argc, char* argv[])
   reference->SetRenderer(renderer);
   reference->SetActor(actor);
   reference->SetAmbientOcclusionSamples(128);
+  const double noRange[2] = { 0, 1 };
+  const prTest::ParticleAttributes attributes =
+    prTest::RawAttributes(film, "radius", 0.0, std::string(), nullptr, noRange);
+  reference->SetParticleAttributes(attributes.Radii, nullptr, nullptr);
   if (!prTest::Check(reference->Render(), "reference renders"))
   {
     return EXIT_FAILURE;

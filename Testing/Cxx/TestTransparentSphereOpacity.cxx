@@ -336,6 +336,10 @@ bool TestRenderedSphere(const RenderCase& c, double& worstStrict, double& worstG
   vtkNew<vtkParticleReferenceRenderer> reference;
   reference->SetRenderer(renderer);
   reference->SetActor(actor);
+  // the sphere as the test defines it (radius r, Theta_a 1: Theta_i is the actor's opacity)
+  vtkNew<vtkDoubleArray> radius;
+  radius->InsertNextValue(r);
+  reference->SetParticleAttributes(radius, nullptr, nullptr);
   if (accumulation.size() != 4u * size * size || !reference->Render())
   {
     std::cout << "FAIL: no accumulation or reference for " << c.Camera << "\n";
