@@ -79,8 +79,9 @@ def full_test():
         setattr(view, prop, value)
         other = pr.capture(view, os.path.join(args.temp_dir, "TestParticleRenderViewAO_%s.png" % prop))
         worst, mean = pr.difference(occluded, other)
-        print("%s = %s: difference to the default: max %s/255, mean %.2f/255"
-              % (prop, value, worst, mean))
+        print("%s = %s: difference to the default: max %s/255, mean %s/255"
+              % (prop, value, None if worst is None else round(worst),
+                 None if mean is None else round(mean, 2)))
         if worst is None or not (max_range[0] <= worst <= max_range[1]) \
                 or not (mean_range[0] <= mean <= mean_range[1]):
             print("FAIL: %s = %s: max %s outside %s or mean %s outside %s"
