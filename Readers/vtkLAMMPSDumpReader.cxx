@@ -1,0 +1,1590 @@
+#include "vtkLAMMPSDumpReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkTypeInt64Array.h"
+
+#include "vtk_zlib.h"
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkLAMMPSDumpReader);
+
+namespace
+{
+//------------------------------------------------------------------------------
+// A file read sequentially with 64-bit positions: plain or gzip-compressed (zlib reads plain
+// files "transparently" and seeks them directly; in a gzip file a seek decompresses up to the
+// position).
+class InputFile
+{
+public:
+  ~InputFile() { this->Close(); }
+  bool Open(const std::string& name)
+  {
+    this->Close();
+    this->File = gzopen(name.c_str(), "rb");
+    if (this->File)
+    {
+      gzbuffer(this->File, 1 << 20);
+    }
+    this->Position = 0;
+    return this->File != nullptr;
+  }
+  void Close()
+  {
+    if (this->File)
+    {
+      gzclose(this->File);
+      this->File = nullptr;
+    }
+  }
+  // Reads up to n bytes; returns the count (0 at the end), -1 on a read error.
+  long long Read(char* buffer, size_t n)
+  {
+    long long total = 0;
+    while (n > 0)
+    {
+      const unsigned chunk = static_cast<unsigned>(std::min<size_t>(n, 1u << 30));
+      const int got = gzread(this->File, buffer, chunk);
+      if (got < 0)
+      {
+        return -1;
+      }
+      if (got == 0)
+      {
+        break;
+      }
+      total += got;
+      buffer += got;
+      n -= static_cast<size_t>(got);
+    }
+    this->Position += static_cast<std::uint64_t>(total);
+    return total;
+  }
+  bool Seek(std::uint64_t position)
+  {
+    if (gzseek(this->File, static_cast<z_off_t>(position), SEEK_SET) < 0)
+    {
+      return false;
+    }
+    this->Position = position;
+    return true;
+  }
+  bool Compressed() const { return this->File && gzdirect(this->File) == 0; }
+  std::uint64_t Tell() const { return this->Position; }
+
+private:
+  gzFile File = nullptr;
+  std::uint64_t Position = 0;
+};
+
+//------------------------------------------------------------------------------
+// Lines of an InputFile, with the byte offset and the (1-based) number of each line.
+class LineReader
+{
+public:
+  explicit LineReader(InputFile& file)
+    : File(file)
+  {
+    this->Buffer.resize(1 << 20);
+  }
+  // The next line without its end (and a '\r' before it); false at the end of the file.
+  bool Next(std::string& line)
+  {
+    line.clear();
+    bool any = false;
+    while (true)
+    {
+      if (this->Begin == this->End && !this->Fill())
+      {
+        break;
+      }
+      any = true;
+      const char* start = this->Buffer.data() + this->Begin;
+      const char* nl =
+        static_cast<const char*>(std::memchr(start, '\n', this->End - this->Begin));
+      if (nl)
+      {
+        line.append(start, static_cast<size_t>(nl - start));
+        this->Begin += static_cast<size_t>(nl - start) + 1;
+        ++this->Line;
+        if (!line.empty() && line.back() == '\r')
+        {
+          line.pop_back();
+        }
+        return true;
+      }
+      line.append(start, this->End - this->Begin);
+      this->Begin = this->End;
+    }
+    if (any)
+    {
+      ++this->Line; // a last line without a line end
+      if (!line.empty() && line.back() == '\r')
+      {
+        line.pop_back();
+      }
+    }
+    return any;
+  }
+  // Skip n lines (counting line ends); returns the number skipped (< n at the end of the file;
+  // a last line without a line end counts as one).
+  long long Skip(long long n)
+  {
+    long long skipped = 0;
+    bool midLine = false; // bytes of a line consumed, its end not yet seen
+    while (skipped < n)
+    {
+      if (this->Begin == this->End && !this->Fill())
+      {
+        skipped += midLine ? 1 : 0;
+        break;
+      }
+      const char* start = this->Buffer.data() + this->Begin;
+      const char* stop = this->Buffer.data() + this->End;
+      const char* p = start;
+      while (skipped < n && p < stop)
+      {
+        const char* nl = static_cast<const char*>(std::memchr(p, '\n', stop - p));
+        if (!nl)
+        {
+          p = stop;
+          midLine = true;
+          break;
+        }
+        p = nl + 1;
+        ++skipped;
+        midLine = false;
+      }
+      this->Begin += static_cast<size_t>(p - start);
+    }
+    this->Line += skipped;
+    return skipped;
+  }
+  std::uint64_t Offset() const { return this->BufferOffset + this->Begin; }
+  long long LineNumber() const { return this->Line; } // lines consumed so far
+
+private:
+  bool Fill()
+  {
+    this->BufferOffset += this->End;
+    this->Begin = this->End = 0;
+    const long long got = this->File.Read(this->Buffer.data(), this->Buffer.size());
+    if (got <= 0)
+    {
+      return false;
+    }
+    this->End = static_cast<size_t>(got);
+    return true;
+  }
+
+  InputFile& File;
+  std::vector<char> Buffer;
+  size_t Begin = 0;
+  size_t End = 0;
+  std::uint64_t BufferOffset = 0;
+  long long Line = 0;
+};
+
+//------------------------------------------------------------------------------
+bool StartsWith(const std::string& s, const char* prefix)
+{
+  return s.compare(0, std::strlen(prefix), prefix) == 0;
+}
+
+std::vector<std::string> Split(const std::string& s)
+{
+  std::vector<std::string> words;
+  std::istringstream in(s);
+  std::string w;
+  while (in >> w)
+  {
+    words.push_back(w);
+  }
+  return words;
+}
+
+bool ParseDouble(const char* begin, const char* end, double& value)
+{
+  if (begin < end && *begin == '+')
+  {
+    ++begin;
+  }
+  const auto r = std::from_chars(begin, end, value);
+  return r.ec == std::errc() && r.ptr == end;
+}
+
+bool ParseInt64(const char* begin, const char* end, long long& value)
+{
+  if (begin < end && *begin == '+')
+  {
+    ++begin;
+  }
+  const auto r = std::from_chars(begin, end, value);
+  return r.ec == std::errc() && r.ptr == end;
+}
+
+bool ParseWord(const std::string& word, double& value)
+{
+  return ParseDouble(word.data(), word.data() + word.size(), value);
+}
+
+//------------------------------------------------------------------------------
+// The simulation box of a snapshot.
+struct Box
+{
+  double Lo[3] = { 0, 0, 0 };
+  double Hi[3] = { 0, 0, 0 };
+  double Tilt[3] = { 0, 0, 0 }; // xy xz yz
+  std::string Periodicity;       // e.g. "pp pp pp"
+  bool Triclinic = false;
+  double Length(int k) const { return this->Hi[k] - this->Lo[k]; }
+};
+
+struct Snapshot
+{
+  int File = 0;
+  long long Timestep = 0;
+  long long NumberOfAtoms = 0;
+  std::uint64_t AtomsOffset = 0; // first byte of the first atom line
+  std::uint64_t EndOffset = 0;   // first byte after the last atom line
+  long long AtomsLine = 0;       // line number of the first atom line
+  Box SimulationBox;
+  std::vector<std::string> Columns;
+};
+
+//------------------------------------------------------------------------------
+// Where a column goes.
+enum class Kind
+{
+  Point,     // a component of the points (double)
+  Float,     // a component of a float array
+  Int,       // a component of an int array
+  IdType,    // vtkIdType array (id)
+  String,    // a string array
+};
+
+struct ColumnPlan
+{
+  Kind Type = Kind::Float;
+  int Array = -1;     // index into Plan::Arrays
+  int Component = 0;
+};
+
+struct ArrayPlan
+{
+  std::string Name;
+  Kind Type = Kind::Float;
+  int Components = 1;
+};
+
+// Coordinate flavours.
+enum Flavour
+{
+  WrappedXYZ = 0,
+  UnwrappedXYZ = 1,
+  ScaledXYZ = 2,
+  ScaledUnwrappedXYZ = 3,
+  ImageXYZ = 4,
+  NumberOfFlavours = 5
+};
+const char* const FlavourColumns[NumberOfFlavours][3] = { { "x", "y", "z" },
+  { "xu", "yu", "zu" }, { "xs", "ys", "zs" }, { "xsu", "ysu", "zsu" }, { "ix", "iy", "iz" } };
+const char* const FlavourArrays[NumberOfFlavours] = { "wrapped", "unwrapped", "scaled",
+  "scaled_unwrapped", "image" };
+
+struct Plan
+{
+  std::vector<ColumnPlan> Columns;
+  std::vector<ArrayPlan> Arrays;
+  int PointFlavour = -1;   // the flavour that becomes the points (-1: none: all points 0)
+  bool UnwrapWithImage = false;
+  bool Scaled = false;
+  int IdArray = -1;
+  int TypeArray = -1;
+  int RadiusArray = -1;   // "radius" column
+  int DiameterArray = -1; // "diameter" column
+  int ImageArray = -1;
+  std::string Warning;
+};
+
+// The array of LAMMPS's vector attributes, by the column name without its x/y/z suffix.
+const std::map<std::string, std::string>& VectorNames()
+{
+  static const std::map<std::string, std::string> names = { { "v", "velocity" },
+    { "f", "force" }, { "mu", "mu" }, { "omega", "omega" }, { "angmom", "angmom" },
+    { "tq", "torque" } };
+  return names;
+}
+
+bool IsIntegerColumn(const std::string& name)
+{
+  return name == "id" || name == "mol" || name == "type" || name == "proc" || name == "procp1";
+}
+
+// "c_name[3]" -> ("c_name", 3); 0 when the name has no bracketed index.
+int BracketIndex(const std::string& column, std::string& base)
+{
+  const size_t open = column.rfind('[');
+  if (open == std::string::npos || open == 0 || column.back() != ']')
+  {
+    return 0;
+  }
+  int index = 0;
+  const char* first = column.data() + open + 1;
+  const char* last = column.data() + column.size() - 1;
+  const auto r = std::from_chars(first, last, index);
+  if (r.ec != std::errc() || r.ptr != last || index < 1)
+  {
+    return 0;
+  }
+  base = column.substr(0, open);
+  return index;
+}
+
+Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::string>& firstRow,
+  int positionSource)
+{
+  Plan plan;
+  plan.Columns.resize(columns.size());
+  std::vector<bool> done(columns.size(), false);
+  auto find = [&columns](const char* name) -> int
+  {
+    for (size_t i = 0; i < columns.size(); ++i)
+    {
+      if (columns[i] == name)
+      {
+        return static_cast<int>(i);
+      }
+    }
+    return -1;
+  };
+  // coordinate flavours present (all three components)
+  int flavourColumns[NumberOfFlavours][3];
+  bool present[NumberOfFlavours];
+  for (int f = 0; f < NumberOfFlavours; ++f)
+  {
+    present[f] = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      flavourColumns[f][k] = find(FlavourColumns[f][k]);
+      present[f] &= flavourColumns[f][k] >= 0;
+    }
+  }
+  // which flavour becomes the points
+  const int automatic[4] = { WrappedXYZ, UnwrappedXYZ, ScaledXYZ, ScaledUnwrappedXYZ };
+  int chosen = -1;
+  if (positionSource == vtkLAMMPSDumpReader::WRAPPED)
+  {
+    chosen = present[WrappedXYZ] ? WrappedXYZ : (present[ScaledXYZ] ? ScaledXYZ : -1);
+  }
+  else if (positionSource == vtkLAMMPSDumpReader::UNWRAPPED)
+  {
+    chosen = present[UnwrappedXYZ]
+      ? UnwrappedXYZ
+      : (present[ScaledUnwrappedXYZ] ? ScaledUnwrappedXYZ : -1);
+    if (chosen < 0 && present[WrappedXYZ] && present[ImageXYZ])
+    {
+      chosen = WrappedXYZ;
+      plan.UnwrapWithImage = true;
+    }
+  }
+  if (chosen < 0)
+  {
+    if (positionSource != vtkLAMMPSDumpReader::AUTOMATIC)
+    {
+      plan.Warning = std::string("the columns have no ") +
+        (positionSource == vtkLAMMPSDumpReader::WRAPPED
+            ? "wrapped coordinates (x y z or xs ys zs)"
+            : "unwrapped coordinates (xu yu zu, xsu ysu zsu, or x y z with ix iy iz)") +
+        ": using the first coordinates present";
+    }
+    for (int f : automatic)
+    {
+      if (present[f])
+      {
+        chosen = f;
+        break;
+      }
+    }
+  }
+  plan.PointFlavour = chosen;
+  plan.Scaled = chosen == ScaledXYZ || chosen == ScaledUnwrappedXYZ;
+  if (chosen < 0)
+  {
+    plan.Warning += std::string(plan.Warning.empty() ? "" : "; ") +
+      "no complete set of coordinates (x y z, xu yu zu, xs ys zs or xsu ysu zsu): every atom "
+      "is at the origin";
+  }
+  auto addArray = [&plan](const std::string& name, Kind type, int components) -> int
+  {
+    plan.Arrays.push_back({ name, type, components });
+    return static_cast<int>(plan.Arrays.size()) - 1;
+  };
+  for (int f = 0; f < NumberOfFlavours; ++f)
+  {
+    if (!present[f])
+    {
+      continue;
+    }
+    int array = -1;
+    Kind type = Kind::Point;
+    if (f != chosen)
+    {
+      type = f == ImageXYZ ? Kind::Int : Kind::Float;
+      array = addArray(FlavourArrays[f], type, 3);
+      if (f == ImageXYZ)
+      {
+        plan.ImageArray = array;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      plan.Columns[flavourColumns[f][k]] = { type, array, k };
+      done[flavourColumns[f][k]] = true;
+    }
+  }
+  // vectors: vx vy vz and friends
+  for (const auto& item : VectorNames())
+  {
+    int c[3];
+    bool all = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = find((item.first + "xyz"[k]).c_str());
+      all &= c[k] >= 0 && !done[c[k]];
+    }
+    if (all)
+    {
+      const int array = addArray(item.second, Kind::Float, 3);
+      for (int k = 0; k < 3; ++k)
+      {
+        plan.Columns[c[k]] = { Kind::Float, array, k };
+        done[c[k]] = true;
+      }
+    }
+  }
+  // bracketed vectors c_name[1] c_name[2] ... (consecutive, starting at 1)
+  for (size_t i = 0; i < columns.size(); ++i)
+  {
+    std::string base;
+    if (done[i] || BracketIndex(columns[i], base) != 1)
+    {
+      continue;
+    }
+    size_t n = 1;
+    std::string next;
+    while (i + n < columns.size() && !done[i + n] &&
+      BracketIndex(columns[i + n], next) == static_cast<int>(n) + 1 && next == base)
+    {
+      ++n;
+    }
+    if (n < 2)
+    {
+      continue;
+    }
+    const int array = addArray(base, Kind::Float, static_cast<int>(n));
+    for (size_t k = 0; k < n; ++k)
+    {
+      plan.Columns[i + k] = { Kind::Float, array, static_cast<int>(k) };
+      done[i + k] = true;
+    }
+  }
+  // everything else, one array per column
+  for (size_t i = 0; i < columns.size(); ++i)
+  {
+    if (done[i])
+    {
+      continue;
+    }
+    Kind type = Kind::Float;
+    double value;
+    if (columns[i] == "id")
+    {
+      type = Kind::IdType;
+    }
+    else if (IsIntegerColumn(columns[i]))
+    {
+      type = Kind::Int;
+    }
+    else if (columns[i] == "element" ||
+      (i < firstRow.size() && !ParseWord(firstRow[i], value)))
+    {
+      type = Kind::String;
+    }
+    const int array = addArray(columns[i], type, 1);
+    plan.Columns[i] = { type, array, 0 };
+    if (columns[i] == "id")
+    {
+      plan.IdArray = array;
+    }
+    else if (columns[i] == "type")
+    {
+      plan.TypeArray = array;
+    }
+    else if (columns[i] == "radius" && type == Kind::Float)
+    {
+      plan.RadiusArray = array;
+    }
+    else if (columns[i] == "diameter" && type == Kind::Float)
+    {
+      plan.DiameterArray = array;
+    }
+  }
+  return plan;
+}
+
+//------------------------------------------------------------------------------
+// Destinations of one step's values.
+struct Outputs
+{
+  double* Points = nullptr;
+  std::vector<void*> Arrays; // float*, int*, vtkIdType* or std::vector<std::string>*
+  std::vector<vtkSmartPointer<vtkAbstractArray>> Objects;
+  std::vector<std::vector<std::string>> Strings;
+};
+
+// The first error of a parse, by row.
+struct ParseError
+{
+  long long Row = -1;
+  std::string What;
+};
+
+// Parse the lines [begin, end) (complete lines, each ending in '\n' except possibly the last)
+// into rows starting at firstRow. Returns false and fills error on the first bad line.
+bool ParseLines(const char* begin, const char* end, long long firstRow, const Plan& plan,
+  Outputs& out, ParseError& error, long long& nonFinite)
+{
+  const size_t columns = plan.Columns.size();
+  long long row = firstRow;
+  const char* p = begin;
+  while (p < end)
+  {
+    const char* lineEnd = static_cast<const char*>(std::memchr(p, '\n', end - p));
+    if (!lineEnd)
+    {
+      lineEnd = end;
+    }
+    const char* q = p;
+    size_t column = 0;
+    while (true)
+    {
+      while (q < lineEnd && (*q == ' ' || *q == '\t' || *q == '\r'))
+      {
+        ++q;
+      }
+      if (q == lineEnd)
+      {
+        break;
+      }
+      const char* tokenEnd = q;
+      while (tokenEnd < lineEnd && *tokenEnd != ' ' && *tokenEnd != '\t' && *tokenEnd != '\r')
+      {
+        ++tokenEnd;
+      }
+      if (column >= columns)
+      {
+        ++column; // count them all for the message
+        q = tokenEnd;
+        continue;
+      }
+      const ColumnPlan& c = plan.Columns[column];
+      bool ok = true;
+      switch (c.Type)
+      {
+        case Kind::Point:
+        case Kind::Float:
+        {
+          double v;
+          ok = ParseDouble(q, tokenEnd, v);
+          if (ok && !std::isfinite(v))
+          {
+            ++nonFinite;
+          }
+          if (c.Type == Kind::Point)
+          {
+            out.Points[3 * row + c.Component] = v;
+          }
+          else
+          {
+            const int n = plan.Arrays[c.Array].Components;
+            static_cast<float*>(out.Arrays[c.Array])[n * row + c.Component] =
+              static_cast<float>(v);
+          }
+          break;
+        }
+        case Kind::Int:
+        {
+          long long v;
+          ok = ParseInt64(q, tokenEnd, v) && v >= INT32_MIN && v <= INT32_MAX;
+          const int n = plan.Arrays[c.Array].Components;
+          static_cast<int*>(out.Arrays[c.Array])[n * row + c.Component] = static_cast<int>(v);
+          break;
+        }
+        case Kind::IdType:
+        {
+          long long v;
+          ok = ParseInt64(q, tokenEnd, v);
+          static_cast<vtkIdType*>(out.Arrays[c.Array])[row] = static_cast<vtkIdType>(v);
+          break;
+        }
+        case Kind::String:
+          static_cast<std::vector<std::string>*>(out.Arrays[c.Array])
+            ->at(static_cast<size_t>(row))
+            .assign(q, tokenEnd);
+          break;
+      }
+      if (!ok)
+      {
+        error.Row = row;
+        error.What = "column " + std::to_string(column + 1) + " ('" + std::string(q, tokenEnd) +
+          "') is not " +
+          (c.Type == Kind::Int || c.Type == Kind::IdType ? "an integer" : "a number");
+        return false;
+      }
+      ++column;
+      q = tokenEnd;
+    }
+    if (column != columns)
+    {
+      error.Row = row;
+      error.What = column == 0 ? std::string("empty line in the atom section")
+                               : std::to_string(column) + " values where ITEM: ATOMS names " +
+          std::to_string(columns) + " columns";
+      return false;
+    }
+    ++row;
+    p = lineEnd + 1;
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkLAMMPSDumpReader::vtkInternals
+{
+public:
+  std::vector<std::string> FileNames;
+  std::vector<Snapshot> Steps;
+  std::vector<double> TimeValues;
+  // the index is valid for these files, these settings and this modification state
+  std::vector<std::string> IndexedFiles;
+  std::vector<long long> IndexedSizes; // FileStamp of each file
+  std::map<int, double> TypeRadii;
+  std::string LastWarning;
+};
+
+//------------------------------------------------------------------------------
+vtkLAMMPSDumpReader::vtkLAMMPSDumpReader()
+  : Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkLAMMPSDumpReader::~vtkLAMMPSDumpReader() = default;
+
+//------------------------------------------------------------------------------
+void vtkLAMMPSDumpReader::SetFileName(const char* fileName)
+{
+  std::vector<std::string> names;
+  if (fileName && *fileName)
+  {
+    names.emplace_back(fileName);
+  }
+  if (names != this->Internals->FileNames)
+  {
+    this->Internals->FileNames = names;
+    this->Modified();
+  }
+}
+
+const char* vtkLAMMPSDumpReader::GetFileName()
+{
+  return this->GetFileName(0);
+}
+
+void vtkLAMMPSDumpReader::AddFileName(const char* fileName)
+{
+  if (fileName && *fileName)
+  {
+    this->Internals->FileNames.emplace_back(fileName);
+    this->Modified();
+  }
+}
+
+void vtkLAMMPSDumpReader::RemoveAllFileNames()
+{
+  if (!this->Internals->FileNames.empty())
+  {
+    this->Internals->FileNames.clear();
+    this->Modified();
+  }
+}
+
+int vtkLAMMPSDumpReader::GetNumberOfFileNames()
+{
+  return static_cast<int>(this->Internals->FileNames.size());
+}
+
+const char* vtkLAMMPSDumpReader::GetFileName(int index)
+{
+  const auto& names = this->Internals->FileNames;
+  return index >= 0 && index < static_cast<int>(names.size()) ? names[index].c_str() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLAMMPSDumpReader::SetTypeRadius(int type, double radius)
+{
+  auto it = this->Internals->TypeRadii.find(type);
+  if (it == this->Internals->TypeRadii.end() || it->second != radius)
+  {
+    this->Internals->TypeRadii[type] = radius;
+    this->Modified();
+  }
+}
+
+double vtkLAMMPSDumpReader::GetTypeRadius(int type)
+{
+  auto it = this->Internals->TypeRadii.find(type);
+  return it == this->Internals->TypeRadii.end() ? this->DefaultRadius : it->second;
+}
+
+void vtkLAMMPSDumpReader::RemoveAllTypeRadii()
+{
+  if (!this->Internals->TypeRadii.empty())
+  {
+    this->Internals->TypeRadii.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkLAMMPSDumpReader::GetNumberOfSteps()
+{
+  return static_cast<int>(this->Internals->Steps.size());
+}
+
+long long vtkLAMMPSDumpReader::GetStepTimestep(int step)
+{
+  const auto& steps = this->Internals->Steps;
+  return step >= 0 && step < static_cast<int>(steps.size()) ? steps[step].Timestep : -1;
+}
+
+vtkIdType vtkLAMMPSDumpReader::GetStepNumberOfAtoms(int step)
+{
+  const auto& steps = this->Internals->Steps;
+  return step >= 0 && step < static_cast<int>(steps.size())
+    ? static_cast<vtkIdType>(steps[step].NumberOfAtoms)
+    : -1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLAMMPSDumpReader::CanReadFile(const char* fileName)
+{
+  InputFile file;
+  if (!fileName || !file.Open(fileName))
+  {
+    return 0;
+  }
+  LineReader lines(file);
+  std::string line;
+  for (int i = 0; i < 16 && lines.Next(line); ++i)
+  {
+    if (line.find('\0') != std::string::npos)
+    {
+      return 0;
+    }
+    if (!Split(line).empty())
+    {
+      return StartsWith(line, "ITEM: TIMESTEP") || StartsWith(line, "ITEM: UNITS") ||
+          StartsWith(line, "ITEM: TIME")
+        ? 1
+        : 0;
+    }
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkLAMMPSDumpReader::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+  (void)port;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Index the snapshots of one file. Returns false (with a message) when the file cannot be used
+// at all; a bad or truncated snapshot after good ones ends the file with a warning in warning.
+bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& steps,
+  std::string& error, std::string& warning)
+{
+  InputFile file;
+  if (!file.Open(name))
+  {
+    error = name + ": cannot open the file";
+    return false;
+  }
+  // a binary file (NUL bytes) is not a text dump
+  {
+    std::vector<char> head(4096);
+    const long long got = file.Read(head.data(), head.size());
+    if (got == 0)
+    {
+      error = name + ": the file is empty";
+      return false;
+    }
+    if (got < 0)
+    {
+      error = name + ": cannot read the file";
+      return false;
+    }
+    if (std::memchr(head.data(), '\0', static_cast<size_t>(got)))
+    {
+      error = name +
+        ": a binary file, not a LAMMPS text dump (binary dumps can be converted with LAMMPS's "
+        "tools/binary2txt)";
+      return false;
+    }
+    file.Seek(0);
+  }
+  LineReader lines(file);
+  std::string line;
+  const size_t first = steps.size();
+  auto fail = [&](const std::string& what) -> bool
+  {
+    const std::string where =
+      name + ", line " + std::to_string(lines.LineNumber()) + ": " + what;
+    if (steps.size() == first)
+    {
+      error = where;
+      return false;
+    }
+    warning += where + "; the " + std::to_string(steps.size() - first) +
+      " snapshot(s) before it are read. ";
+    return true;
+  };
+  auto next = [&](std::string& out) -> bool
+  {
+    while (lines.Next(out))
+    {
+      if (!Split(out).empty())
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  while (next(line))
+  {
+    Snapshot s;
+    s.File = fileIndex;
+    // optional ITEM: UNITS / ITEM: TIME blocks (dump_modify units/time)
+    while (StartsWith(line, "ITEM: UNITS") || (StartsWith(line, "ITEM: TIME") &&
+                                                !StartsWith(line, "ITEM: TIMESTEP")))
+    {
+      if (!next(line) || !next(line))
+      {
+        return fail("the file ends inside a snapshot header");
+      }
+    }
+    if (!StartsWith(line, "ITEM: TIMESTEP"))
+    {
+      return fail("expected 'ITEM: TIMESTEP', found '" + line.substr(0, 60) + "'");
+    }
+    std::vector<std::string> words;
+    if (!next(line) || (words = Split(line)).size() != 1 ||
+      !ParseInt64(words[0].data(), words[0].data() + words[0].size(), s.Timestep))
+    {
+      return fail("expected the timestep (an integer) after ITEM: TIMESTEP");
+    }
+    if (!next(line) || !StartsWith(line, "ITEM: NUMBER OF ATOMS"))
+    {
+      return fail("expected 'ITEM: NUMBER OF ATOMS'");
+    }
+    if (!next(line) || (words = Split(line)).size() != 1 ||
+      !ParseInt64(words[0].data(), words[0].data() + words[0].size(), s.NumberOfAtoms) ||
+      s.NumberOfAtoms < 0)
+    {
+      return fail("expected the number of atoms (an integer >= 0)");
+    }
+    if (!next(line) || !StartsWith(line, "ITEM: BOX BOUNDS"))
+    {
+      return fail("expected 'ITEM: BOX BOUNDS'");
+    }
+    words = Split(line.substr(std::strlen("ITEM: BOX BOUNDS")));
+    s.SimulationBox.Triclinic = words.size() >= 3 && words[0] == "xy";
+    std::string periodicity;
+    for (size_t k = s.SimulationBox.Triclinic ? 3 : 0; k < words.size(); ++k)
+    {
+      periodicity += (periodicity.empty() ? "" : " ") + words[k];
+    }
+    s.SimulationBox.Periodicity = periodicity;
+    double bounds[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+    for (int k = 0; k < 3; ++k)
+    {
+      if (!next(line))
+      {
+        return fail("the file ends inside ITEM: BOX BOUNDS");
+      }
+      words = Split(line);
+      const size_t need = s.SimulationBox.Triclinic ? 3 : 2;
+      if (words.size() < need)
+      {
+        return fail("expected " + std::to_string(need) + " numbers in the box bounds");
+      }
+      for (size_t j = 0; j < need; ++j)
+      {
+        if (!ParseWord(words[j], bounds[k][j]))
+        {
+          return fail("'" + words[j] + "' in the box bounds is not a number");
+        }
+      }
+    }
+    Box& box = s.SimulationBox;
+    for (int k = 0; k < 3; ++k)
+    {
+      box.Tilt[k] = s.SimulationBox.Triclinic ? bounds[k][2] : 0.0;
+    }
+    // LAMMPS writes the bounding box of a triclinic box: remove the tilt (dump manual)
+    const double xy = box.Tilt[0];
+    const double xz = box.Tilt[1];
+    const double yz = box.Tilt[2];
+    box.Lo[0] = bounds[0][0] - std::min({ 0.0, xy, xz, xy + xz });
+    box.Hi[0] = bounds[0][1] - std::max({ 0.0, xy, xz, xy + xz });
+    box.Lo[1] = bounds[1][0] - std::min(0.0, yz);
+    box.Hi[1] = bounds[1][1] - std::max(0.0, yz);
+    box.Lo[2] = bounds[2][0];
+    box.Hi[2] = bounds[2][1];
+    if (!next(line) || !StartsWith(line, "ITEM: ATOMS"))
+    {
+      return fail("expected 'ITEM: ATOMS' and the column names");
+    }
+    s.Columns = Split(line.substr(std::strlen("ITEM: ATOMS")));
+    if (s.Columns.empty() && s.NumberOfAtoms > 0)
+    {
+      return fail("ITEM: ATOMS names no columns");
+    }
+    s.AtomsOffset = lines.Offset();
+    s.AtomsLine = lines.LineNumber() + 1;
+    const long long skipped = lines.Skip(s.NumberOfAtoms);
+    if (skipped < s.NumberOfAtoms)
+    {
+      return fail("the snapshot of timestep " + std::to_string(s.Timestep) + " is truncated: " +
+        std::to_string(skipped) + " of " + std::to_string(s.NumberOfAtoms) + " atom lines");
+    }
+    s.EndOffset = lines.Offset();
+    steps.push_back(std::move(s));
+  }
+  if (steps.size() == first)
+  {
+    error = name + ": no snapshot (no 'ITEM: TIMESTEP' line)";
+    return false;
+  }
+  return true;
+}
+
+// Size and modification time of a file: the index is rebuilt when either changes.
+long long FileStamp(const std::string& name)
+{
+  return static_cast<long long>(vtksys::SystemTools::FileLength(name)) * 1000003LL +
+    static_cast<long long>(vtksys::SystemTools::ModifiedTime(name));
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkLAMMPSDumpReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.FileNames.empty())
+  {
+    vtkErrorMacro(<< "No file name.");
+    return 0;
+  }
+  // (re)build the index when the files or their sizes changed
+  std::vector<long long> sizes;
+  for (const std::string& name : internals.FileNames)
+  {
+    sizes.push_back(FileStamp(name));
+  }
+  if (internals.IndexedFiles != internals.FileNames || internals.IndexedSizes != sizes)
+  {
+    internals.Steps.clear();
+    internals.IndexedFiles.clear();
+    std::string warnings;
+    for (size_t i = 0; i < internals.FileNames.size(); ++i)
+    {
+      std::string error;
+      std::string warning;
+      if (!IndexFile(internals.FileNames[i], static_cast<int>(i), internals.Steps, error, warning))
+      {
+        vtkErrorMacro(<< error);
+      }
+      warnings += warning;
+      this->UpdateProgress(0.1 * (i + 1) / internals.FileNames.size());
+    }
+    if (!warnings.empty())
+    {
+      vtkWarningMacro(<< warnings);
+    }
+    // order by timestep; a timestep that appears twice is read from its first file
+    std::stable_sort(internals.Steps.begin(), internals.Steps.end(),
+      [](const Snapshot& a, const Snapshot& b) { return a.Timestep < b.Timestep; });
+    const size_t before = internals.Steps.size();
+    internals.Steps.erase(std::unique(internals.Steps.begin(), internals.Steps.end(),
+                            [](const Snapshot& a, const Snapshot& b)
+                            { return a.Timestep == b.Timestep; }),
+      internals.Steps.end());
+    if (internals.Steps.size() != before)
+    {
+      vtkWarningMacro(<< (before - internals.Steps.size())
+                      << " snapshot(s) repeat a timestep of an earlier one and are skipped.");
+    }
+    internals.IndexedFiles = internals.FileNames;
+    internals.IndexedSizes = sizes;
+  }
+  if (internals.Steps.empty())
+  {
+    return 0;
+  }
+  internals.TimeValues.clear();
+  for (const Snapshot& s : internals.Steps)
+  {
+    internals.TimeValues.push_back(
+      this->DeltaTime > 0.0 ? s.Timestep * this->DeltaTime : static_cast<double>(s.Timestep));
+  }
+  for (int port = 0; port < 2; ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), internals.TimeValues.data(),
+      static_cast<int>(internals.TimeValues.size()));
+    const double range[2] = { internals.TimeValues.front(), internals.TimeValues.back() };
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+vtkSmartPointer<vtkPolyData> BoxOutline(const Box& box)
+{
+  auto outline = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const double a[3] = { box.Length(0), 0, 0 };
+  const double b[3] = { box.Tilt[0], box.Length(1), 0 };
+  const double c[3] = { box.Tilt[1], box.Tilt[2], box.Length(2) };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = box.Lo[k] + ((corner & 1) ? a[k] : 0) + ((corner & 2) ? b[k] : 0) +
+        ((corner & 4) ? c[k] : 0);
+    }
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> lines;
+  const int edges[12][2] = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 0, 2 }, { 1, 3 },
+    { 4, 6 }, { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+  for (const auto& e : edges)
+  {
+    const vtkIdType ids[2] = { e[0], e[1] };
+    lines->InsertNextCell(2, ids);
+  }
+  outline->SetPoints(points);
+  outline->SetLines(lines);
+  return outline;
+}
+
+void AddBoxFieldData(vtkFieldData* fd, const Box& box, long long timestep)
+{
+  vtkNew<vtkTypeInt64Array> step;
+  step->SetName("Timestep");
+  step->InsertNextValue(timestep);
+  fd->AddArray(step);
+  vtkNew<vtkDoubleArray> bounds;
+  bounds->SetName("BoxBounds");
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds->InsertNextValue(box.Lo[k]);
+    bounds->InsertNextValue(box.Hi[k]);
+  }
+  fd->AddArray(bounds);
+  vtkNew<vtkDoubleArray> tilt;
+  tilt->SetName("BoxTilt");
+  for (double t : box.Tilt)
+  {
+    tilt->InsertNextValue(t);
+  }
+  fd->AddArray(tilt);
+  vtkNew<vtkStringArray> periodicity;
+  periodicity->SetName("BoxPeriodicity");
+  periodicity->InsertNextValue(box.Periodicity);
+  fd->AddArray(periodicity);
+}
+
+// A new array of the same type and components with the tuples in the given order.
+vtkSmartPointer<vtkAbstractArray> Permuted(vtkAbstractArray* in, const std::vector<vtkIdType>& order)
+{
+  vtkSmartPointer<vtkAbstractArray> out;
+  out.TakeReference(in->NewInstance());
+  out->SetName(in->GetName());
+  out->SetNumberOfComponents(in->GetNumberOfComponents());
+  out->SetNumberOfTuples(static_cast<vtkIdType>(order.size()));
+  vtkNew<vtkIdList> source;
+  source->SetNumberOfIds(static_cast<vtkIdType>(order.size()));
+  std::copy(order.begin(), order.end(), source->GetPointer(0));
+  vtkNew<vtkIdList> destination;
+  destination->SetNumberOfIds(static_cast<vtkIdType>(order.size()));
+  std::iota(destination->GetPointer(0), destination->GetPointer(0) + order.size(), 0);
+  out->InsertTuples(destination, source, in);
+  return out;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkLAMMPSDumpReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* outline = vtkPolyData::GetData(outputVector, 1);
+  if (internals.Steps.empty())
+  {
+    return 0;
+  }
+  // the step of the requested time: the last one at or before it
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  size_t step = 0;
+  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    const auto it =
+      std::upper_bound(internals.TimeValues.begin(), internals.TimeValues.end(), t);
+    step = it == internals.TimeValues.begin()
+      ? 0
+      : static_cast<size_t>(it - internals.TimeValues.begin()) - 1;
+  }
+  const Snapshot& s = internals.Steps[step];
+  const std::string& fileName = internals.FileNames[s.File];
+  for (int port = 0; port < 2; ++port)
+  {
+    outputVector->GetInformationObject(port)->Set(
+      vtkDataObject::DATA_TIME_STEP(), internals.TimeValues[step]);
+  }
+  outline->ShallowCopy(BoxOutline(s.SimulationBox));
+  AddBoxFieldData(outline->GetFieldData(), s.SimulationBox, s.Timestep);
+
+  const long long n = s.NumberOfAtoms;
+  InputFile file;
+  if (!file.Open(fileName) || !file.Seek(s.AtomsOffset))
+  {
+    vtkErrorMacro(<< fileName << ": cannot open or seek the file (was it changed?)");
+    return 0;
+  }
+
+  // the first atom line decides which non-numeric columns hold strings
+  std::vector<std::string> firstRow;
+  if (n > 0)
+  {
+    LineReader lines(file);
+    std::string line;
+    lines.Next(line);
+    firstRow = Split(line);
+    file.Seek(s.AtomsOffset);
+  }
+  const Plan plan = MakePlan(s.Columns, firstRow, this->PositionSource);
+  if (!plan.Warning.empty() && plan.Warning != internals.LastWarning)
+  {
+    vtkWarningMacro(<< fileName << ": " << plan.Warning);
+  }
+  internals.LastWarning = plan.Warning;
+
+  // allocate the outputs
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(n));
+  Outputs out;
+  out.Points = static_cast<double*>(points->GetVoidPointer(0));
+  if (plan.PointFlavour < 0)
+  {
+    std::fill(out.Points, out.Points + 3 * n, 0.0);
+  }
+  out.Strings.resize(plan.Arrays.size());
+  for (size_t a = 0; a < plan.Arrays.size(); ++a)
+  {
+    const ArrayPlan& ap = plan.Arrays[a];
+    vtkSmartPointer<vtkAbstractArray> array;
+    switch (ap.Type)
+    {
+      case Kind::Float:
+        array = vtkSmartPointer<vtkFloatArray>::New();
+        break;
+      case Kind::Int:
+        array = vtkSmartPointer<vtkIntArray>::New();
+        break;
+      case Kind::IdType:
+        array = vtkSmartPointer<vtkIdTypeArray>::New();
+        break;
+      case Kind::String:
+      case Kind::Point:
+        array = vtkSmartPointer<vtkStringArray>::New();
+        break;
+    }
+    array->SetName(ap.Name.c_str());
+    array->SetNumberOfComponents(ap.Components);
+    if (ap.Type == Kind::String)
+    {
+      out.Strings[a].resize(static_cast<size_t>(n));
+      out.Arrays.push_back(&out.Strings[a]);
+    }
+    else
+    {
+      array->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      out.Arrays.push_back(array->GetVoidPointer(0));
+    }
+    out.Objects.push_back(array);
+  }
+
+  // parse the atom lines block by block, each block in parallel
+  const std::uint64_t total = s.EndOffset - s.AtomsOffset;
+  std::vector<char> buffer(static_cast<size_t>(
+    std::min<std::uint64_t>(total, static_cast<std::uint64_t>(this->BlockSize)) + 1));
+  size_t carry = 0;
+  std::uint64_t consumed = 0;
+  long long row = 0;
+  ParseError firstError;
+  std::atomic<long long> nonFinite(0);
+  const bool threads = std::string(vtkSMPTools::GetBackend()) == "Sequential" &&
+    !std::getenv("VTK_SMP_BACKEND_IN_USE");
+  while (consumed < total || carry > 0)
+  {
+    const size_t want = static_cast<size_t>(
+      std::min<std::uint64_t>(total - consumed, buffer.size() - 1 - carry));
+    const long long got = want > 0 ? file.Read(buffer.data() + carry, want) : 0;
+    if (got < 0 || static_cast<size_t>(got) != want)
+    {
+      vtkErrorMacro(<< fileName << ": the file ends or cannot be read before line "
+                    << s.AtomsLine + row << " (was it changed?)");
+      return 0;
+    }
+    consumed += static_cast<std::uint64_t>(got);
+    const size_t length = carry + static_cast<size_t>(got);
+    // complete lines: up to the last line end, or everything at the end of the section
+    size_t complete = length;
+    if (consumed < total)
+    {
+      const char* last = static_cast<const char*>(
+        memrchr(buffer.data(), '\n', length));
+      if (!last)
+      {
+        if (length >= buffer.size() - 1)
+        {
+          buffer.resize(buffer.size() * 2); // a line longer than a block
+        }
+        carry = length;
+        continue;
+      }
+      complete = static_cast<size_t>(last - buffer.data()) + 1;
+    }
+    // split the complete lines into pieces at line ends, count the lines of each piece
+    const char* data = buffer.data();
+    const size_t pieces = std::max<size_t>(1, std::min<size_t>(complete / 65536, 256));
+    std::vector<size_t> bounds(pieces + 1, complete);
+    bounds[0] = 0;
+    for (size_t i = 1; i < pieces; ++i)
+    {
+      const size_t guess = std::max(bounds[i - 1], complete * i / pieces);
+      const char* nl = guess < complete
+        ? static_cast<const char*>(std::memchr(data + guess, '\n', complete - guess))
+        : nullptr;
+      bounds[i] = nl ? static_cast<size_t>(nl - data) + 1 : complete;
+    }
+    std::vector<long long> lineCounts(pieces, 0);
+    std::vector<ParseError> errors(pieces);
+    auto run = [&]()
+    {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(pieces),
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            long long count = 0;
+            const char* p = data + bounds[i];
+            const char* stop = data + bounds[i + 1];
+            while (p < stop)
+            {
+              const char* nl = static_cast<const char*>(std::memchr(p, '\n', stop - p));
+              ++count;
+              p = nl ? nl + 1 : stop;
+            }
+            lineCounts[i] = count;
+          }
+        });
+      long long lines = 0;
+      std::vector<long long> firstRows(pieces);
+      for (size_t i = 0; i < pieces; ++i)
+      {
+        firstRows[i] = row + lines;
+        lines += lineCounts[i];
+      }
+      if (row + lines > n)
+      {
+        firstError.Row = n;
+        firstError.What = "more atom lines than ITEM: NUMBER OF ATOMS";
+        return;
+      }
+      vtkSMPTools::For(0, static_cast<vtkIdType>(pieces),
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          long long localNonFinite = 0;
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            ParseLines(data + bounds[i], data + bounds[i + 1], firstRows[i], plan, out, errors[i],
+              localNonFinite);
+          }
+          nonFinite += localNonFinite;
+        });
+      row += lines;
+    };
+    if (threads)
+    {
+      vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("STDThread") }, run);
+    }
+    else
+    {
+      run();
+    }
+    for (const ParseError& e : errors)
+    {
+      if (e.Row >= 0 && (firstError.Row < 0 || e.Row < firstError.Row))
+      {
+        firstError = e;
+      }
+    }
+    if (firstError.Row >= 0)
+    {
+      break;
+    }
+    // keep the partial last line for the next block
+    carry = length - complete;
+    std::memmove(buffer.data(), buffer.data() + complete, carry);
+    if (consumed >= total)
+    {
+      carry = 0;
+    }
+    this->UpdateProgress(0.1 + 0.85 * static_cast<double>(consumed) / std::max<std::uint64_t>(total, 1));
+  }
+  if (firstError.Row < 0 && row != n)
+  {
+    firstError.Row = row;
+    firstError.What = "expected " + std::to_string(n) + " atom lines, found " + std::to_string(row);
+  }
+  if (firstError.Row >= 0)
+  {
+    vtkErrorMacro(<< fileName << ", line " << s.AtomsLine + firstError.Row << ": "
+                  << firstError.What << " (timestep " << s.Timestep << ")");
+    return 0;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< fileName << ", timestep " << s.Timestep << ": " << nonFinite.load()
+                    << " NaN or infinite value(s).");
+  }
+
+  // points: scaled coordinates through the box, wrapped ones unwrapped with the image flags
+  const Box& box = s.SimulationBox;
+  if (plan.Scaled || plan.UnwrapWithImage)
+  {
+    const double l[3] = { box.Length(0), box.Length(1), box.Length(2) };
+    const double xy = box.Tilt[0];
+    const double xz = box.Tilt[1];
+    const double yz = box.Tilt[2];
+    const int* image =
+      plan.UnwrapWithImage ? static_cast<int*>(out.Arrays[plan.ImageArray]) : nullptr;
+    double* p = out.Points;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          double* x = p + 3 * i;
+          if (plan.Scaled)
+          {
+            const double sx = x[0];
+            const double sy = x[1];
+            const double sz = x[2];
+            x[0] = box.Lo[0] + sx * l[0] + sy * xy + sz * xz;
+            x[1] = box.Lo[1] + sy * l[1] + sz * yz;
+            x[2] = box.Lo[2] + sz * l[2];
+          }
+          else
+          {
+            const int* im = image + 3 * i;
+            x[0] += im[0] * l[0] + im[1] * xy + im[2] * xz;
+            x[1] += im[1] * l[1] + im[2] * yz;
+            x[2] += im[2] * l[2];
+          }
+        }
+      });
+  }
+
+  // string columns into their arrays
+  for (size_t a = 0; a < plan.Arrays.size(); ++a)
+  {
+    if (plan.Arrays[a].Type == Kind::String)
+    {
+      auto* strings = vtkStringArray::SafeDownCast(out.Objects[a]);
+      strings->SetNumberOfValues(static_cast<vtkIdType>(n));
+      for (long long i = 0; i < n; ++i)
+      {
+        strings->SetValue(static_cast<vtkIdType>(i), std::move(out.Strings[a][i]));
+      }
+    }
+  }
+
+  // radius
+  vtkSmartPointer<vtkFloatArray> radius;
+  if (this->GenerateRadius)
+  {
+    if (plan.RadiusArray >= 0)
+    {
+      radius = vtkFloatArray::SafeDownCast(out.Objects[plan.RadiusArray]);
+    }
+    else
+    {
+      radius = vtkSmartPointer<vtkFloatArray>::New();
+      radius->SetName("radius");
+      radius->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      float* r = radius->GetPointer(0);
+      if (plan.DiameterArray >= 0)
+      {
+        const float* d = static_cast<const float*>(out.Arrays[plan.DiameterArray]);
+        for (long long i = 0; i < n; ++i)
+        {
+          r[i] = 0.5f * d[i];
+        }
+      }
+      else if (plan.TypeArray >= 0)
+      {
+        const int* type = static_cast<const int*>(out.Arrays[plan.TypeArray]);
+        std::map<int, float> table;
+        for (long long i = 0; i < n; ++i)
+        {
+          auto it = table.find(type[i]);
+          if (it == table.end())
+          {
+            it = table.emplace(type[i], static_cast<float>(this->GetTypeRadius(type[i]))).first;
+          }
+          r[i] = it->second;
+        }
+      }
+      else
+      {
+        std::fill(r, r + n, static_cast<float>(this->DefaultRadius));
+      }
+      out.Objects.push_back(radius);
+    }
+  }
+
+  // order by id
+  std::vector<vtkIdType> order;
+  if (this->SortById && plan.IdArray >= 0 && n > 1)
+  {
+    const vtkIdType* ids = static_cast<const vtkIdType*>(out.Arrays[plan.IdArray]);
+    if (!std::is_sorted(ids, ids + n))
+    {
+      order.resize(static_cast<size_t>(n));
+      std::iota(order.begin(), order.end(), 0);
+      vtkSMPTools::Sort(order.begin(), order.end(),
+        [ids](vtkIdType a, vtkIdType b) { return ids[a] < ids[b]; });
+    }
+  }
+  else if (this->SortById && plan.IdArray < 0 && n > 0)
+  {
+    vtkWarningMacro(<< fileName << ": SortById is on, but the dump has no id column.");
+  }
+  if (!order.empty())
+  {
+    vtkSmartPointer<vtkAbstractArray> sorted = Permuted(points->GetData(), order);
+    points->SetData(vtkDataArray::SafeDownCast(sorted));
+  }
+  output->SetPoints(points);
+  for (auto& array : out.Objects)
+  {
+    output->GetPointData()->AddArray(order.empty() ? array : Permuted(array, order));
+  }
+  vtkNew<vtkCellArray> verts;
+  {
+    vtkNew<vtkIdTypeArray> offsets;
+    offsets->SetNumberOfTuples(static_cast<vtkIdType>(n + 1));
+    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
+    vtkNew<vtkIdTypeArray> connectivity;
+    connectivity->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
+    verts->SetData(offsets, connectivity);
+  }
+  output->SetVerts(verts);
+  AddBoxFieldData(output->GetFieldData(), box, s.Timestep);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLAMMPSDumpReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileNames: " << this->Internals->FileNames.size() << "\n";
+  for (const std::string& name : this->Internals->FileNames)
+  {
+    os << indent.GetNextIndent() << name << "\n";
+  }
+  os << indent << "DeltaTime: " << this->DeltaTime << "\n";
+  os << indent << "PositionSource: " << this->PositionSource << "\n";
+  os << indent << "SortById: " << this->SortById << "\n";
+  os << indent << "GenerateRadius: " << this->GenerateRadius << "\n";
+  os << indent << "DefaultRadius: " << this->DefaultRadius << "\n";
+  os << indent << "TypeRadii:";
+  for (const auto& item : this->Internals->TypeRadii)
+  {
+    os << " " << item.first << ":" << item.second;
+  }
+  os << "\n";
+  os << indent << "BlockSize: " << this->BlockSize << "\n";
+  os << indent << "NumberOfSteps: " << this->Internals->Steps.size() << "\n";
+}

@@ -1,0 +1,183 @@
+/**
+ * @class   vtkLAMMPSDumpReader
+ * @brief   reads LAMMPS text dump files (atom, custom, xyz-like columns; gzip) as particles
+ *
+ * vtkLAMMPSDumpReader reads the snapshots of LAMMPS text dumps (`dump atom`, `dump custom`, and
+ * their gzip variants) -- one file or a series of files -- and produces one vtkPolyData per time step
+ * with a vertex cell per atom, so that ParaView treats the atoms as points and the Particles
+ * representation draws them.
+ *
+ * Snapshots. A snapshot is the LAMMPS block
+ *     ITEM: TIMESTEP / t / ITEM: NUMBER OF ATOMS / N / ITEM: BOX BOUNDS [xy xz yz] pp pp pp /
+ *     3 box lines / ITEM: ATOMS col1 col2 ... / N atom lines
+ * A file may hold many snapshots; a series of files (AddFileName) is read as one sequence, ordered
+ * by timestep. The time of a step is its LAMMPS timestep times DeltaTime, or the raw timestep when
+ * DeltaTime is 0 (the default) -- never the frame index. RequestInformation builds an index of
+ * byte offsets once per file (it reads the headers and skips the atom lines by counting line
+ * ends), so reading step k parses only step k. Gzip files (`*.gz`) are read through zlib; gzip
+ * has no random access, so reaching step k of a compressed file decompresses (without parsing) the
+ * bytes before it.
+ *
+ * Columns. Every column of `ITEM: ATOMS` is read:
+ * - positions (the points, double precision) from, in this order of preference unless
+ *   PositionSource says otherwise: wrapped `x y z`, unwrapped `xu yu zu`, scaled `xs ys zs`, scaled
+ *   unwrapped `xsu ysu zsu`. Scaled coordinates are mapped through the (triclinic) box:
+ *   x = xlo + xs lx + ys xy + zs xz, y = ylo + ys ly + zs yz, z = zlo + zs lz. PositionSource
+ *   UNWRAPPED with wrapped coordinates and image flags `ix iy iz` unwraps them:
+ *   x_u = x + ix lx + iy xy + iz xz, y_u = y + iy ly + iz yz, z_u = z + iz lz.
+ * - the coordinate triples not used for the points, and `ix iy iz`, as 3-component arrays
+ *   ("wrapped", "unwrapped", "scaled", "scaled_unwrapped", "image");
+ * - `vx vy vz`, `fx fy fz`, `mux muy muz`, `omegax ...`, `angmomx ...`, `tqx ...` as the
+ *   3-component arrays "velocity", "force", "mu", "omega", "angmom", "torque"; consecutive
+ *   bracketed columns `c_name[1] c_name[2] ...` as one multi-component array "c_name";
+ * - `id`, `mol`, `type`, `proc`, `procp1` as integer arrays (vtkIdTypeArray for id, vtkIntArray
+ *   otherwise); `element` (and any column whose first value is not a number) as a string array;
+ *   every other column as a float array named like the column.
+ * SortById reorders the atoms of every step by id, so that arrays line up across steps.
+ *
+ * Radii. With GenerateRadius (default on) the output has a point array "radius": the `radius`
+ * column, or half the `diameter` column, or else a per-type table (SetTypeRadius; types without
+ * an entry get DefaultRadius, 0.5 = half the Lennard-Jones sigma), or DefaultRadius for every atom
+ * when there is no type column.
+ *
+ * Box. The field data holds "Timestep" (1 value), "BoxBounds" (xlo xhi ylo yhi zlo zhi of the
+ * box itself, i.e. LAMMPS's bounding-box bounds with the tilt removed), "BoxTilt" (xy xz yz, 0
+ * for orthogonal boxes) and "BoxPeriodicity" (the three boundary flags, e.g. "pp pp ff"). Output
+ * port 1 holds the box outline (12 line cells).
+ *
+ * Bad input gets an error that names the file and the line (a column count that differs from the
+ * header, a field that is not a number, a missing ITEM: line, an empty or binary file) and an
+ * empty output for that step; the steps before a bad or truncated snapshot stay readable (a
+ * truncated last snapshot is dropped with a warning). NaN and Inf values are read as such, with a
+ * warning (the particle mappers skip NaN positions).
+ *
+ * Speed. Atom lines are parsed in blocks of BlockSize bytes, each block in parallel with
+ * vtkSMPTools and std::from_chars, straight into the output arrays, so the memory beyond the
+ * output is one block; progress is reported per block.
+ *
+ * @sa vtkParticleSphereMapper
+ */
+#ifndef vtkLAMMPSDumpReader_h
+#define vtkLAMMPSDumpReader_h
+
+#include "vtkParticleRenderingIOModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKPARTICLERENDERINGIO_EXPORT vtkLAMMPSDumpReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLAMMPSDumpReader* New();
+  vtkTypeMacro(vtkLAMMPSDumpReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The file to read (clears the series), or a series of files (AddFileName, in any order: the
+   * snapshots are ordered by timestep).
+   */
+  void SetFileName(const char* fileName);
+  const char* GetFileName();
+  void AddFileName(const char* fileName);
+  void RemoveAllFileNames();
+  int GetNumberOfFileNames();
+  const char* GetFileName(int index);
+  ///@}
+
+  /**
+   * Whether the file looks like a LAMMPS text dump (its first non-empty line is
+   * "ITEM: TIMESTEP"; gzip files are looked into). For reader factories.
+   */
+  static int CanReadFile(const char* fileName);
+
+  ///@{
+  /**
+   * Time value of a step = LAMMPS timestep x DeltaTime; 0 (default) = the raw timestep.
+   */
+  vtkSetClampMacro(DeltaTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DeltaTime, double);
+  ///@}
+
+  enum PositionSources
+  {
+    AUTOMATIC = 0,       // wrapped, unwrapped, scaled, scaled unwrapped: the first present
+    WRAPPED = 1,         // x y z, or xs ys zs mapped through the box
+    UNWRAPPED = 2,       // xu yu zu, xsu ysu zsu mapped, or x y z with image flags
+  };
+
+  ///@{
+  /**
+   * Which coordinates become the points (see the class description). Default AUTOMATIC. A
+   * request the columns cannot serve gives a warning and the AUTOMATIC choice.
+   */
+  vtkSetClampMacro(PositionSource, int, AUTOMATIC, UNWRAPPED);
+  vtkGetMacro(PositionSource, int);
+  ///@}
+
+  ///@{
+  /**
+   * Reorder the atoms of every step by their id column (default off: file order).
+   */
+  vtkSetMacro(SortById, bool);
+  vtkGetMacro(SortById, bool);
+  vtkBooleanMacro(SortById, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The "radius" array (see the class description): on/off (default on), the radius of types
+   * without a table entry (default 0.5), and the per-type table.
+   */
+  vtkSetMacro(GenerateRadius, bool);
+  vtkGetMacro(GenerateRadius, bool);
+  vtkBooleanMacro(GenerateRadius, bool);
+  vtkSetClampMacro(DefaultRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DefaultRadius, double);
+  void SetTypeRadius(int type, double radius);
+  double GetTypeRadius(int type);
+  void RemoveAllTypeRadii();
+  ///@}
+
+  ///@{
+  /**
+   * Bytes of text parsed per block (default 32 MiB; at least 4 KiB).
+   */
+  vtkSetClampMacro(BlockSize, vtkIdType, 4096, VTK_ID_MAX);
+  vtkGetMacro(BlockSize, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * What the index found: number of steps and their timesteps and atom counts; the columns of
+   * the last step read.
+   */
+  int GetNumberOfSteps();
+  long long GetStepTimestep(int step);
+  vtkIdType GetStepNumberOfAtoms(int step);
+  ///@}
+
+protected:
+  vtkLAMMPSDumpReader();
+  ~vtkLAMMPSDumpReader() override;
+
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double DeltaTime = 0.0;
+  int PositionSource = AUTOMATIC;
+  bool SortById = false;
+  bool GenerateRadius = true;
+  double DefaultRadius = 0.5;
+  vtkIdType BlockSize = 32 << 20;
+
+private:
+  vtkLAMMPSDumpReader(const vtkLAMMPSDumpReader&) = delete;
+  void operator=(const vtkLAMMPSDumpReader&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
