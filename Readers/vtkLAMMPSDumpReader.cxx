@@ -773,6 +773,14 @@ void vtkLAMMPSDumpReader::SetTypeRadius(int type, double radius)
   }
 }
 
+void vtkLAMMPSDumpReader::SetTypeRadius(double type, double radius)
+{
+  if (std::isfinite(type) && std::abs(type) < 2e9)
+  {
+    this->SetTypeRadius(static_cast<int>(std::lround(type)), radius);
+  }
+}
+
 double vtkLAMMPSDumpReader::GetTypeRadius(int type)
 {
   auto it = this->Internals->TypeRadii.find(type);

@@ -135,6 +135,7 @@ public:
   vtkSetClampMacro(DefaultRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DefaultRadius, double);
   void SetTypeRadius(int type, double radius);
+  void SetTypeRadius(double type, double radius); // for ParaView's (type, radius) pairs
   double GetTypeRadius(int type);
   void RemoveAllTypeRadii();
   ///@}

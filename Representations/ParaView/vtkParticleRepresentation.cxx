@@ -184,9 +184,10 @@ void vtkParticleRepresentation::ComputeSphereBounds(vtkPolyData* particles, doub
   }
 
   double maxRadius = this->Mapper->GetRadius();
-  if (this->UseRadiusArray && !this->RadiusArray.empty())
+  const std::string radiusArray = this->EffectiveRadiusArray(particles);
+  if (!radiusArray.empty())
   {
-    vtkDataArray* radii = particles->GetPointData()->GetArray(this->RadiusArray.c_str());
+    vtkDataArray* radii = particles->GetPointData()->GetArray(radiusArray.c_str());
     if (radii && radii->GetNumberOfComponents() == 1 && radii->GetNumberOfTuples() > 0)
     {
       double range[2];
@@ -244,6 +245,7 @@ int vtkParticleRepresentation::ProcessViewRequest(
       particles = this->RenderedData;
     }
     this->Mapper->SetInputDataObject(particles);
+    this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
     // an empty filter output): draw nothing, without the mapper's "no points" warning.
     this->HasLocalParticles = particles->GetNumberOfPoints() > 0;
@@ -315,10 +317,27 @@ void vtkParticleRepresentation::SetVisibility(bool val)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkParticleRepresentation::EffectiveRadiusArray(vtkPolyData* particles) const
+{
+  if (this->UseRadiusArray == RADIUS_ARRAY_ON)
+  {
+    return this->RadiusArray;
+  }
+  if (this->UseRadiusArray == RADIUS_ARRAY_AUTOMATIC && particles)
+  {
+    vtkDataArray* radius = particles->GetPointData()->GetArray("radius");
+    if (radius && radius->GetNumberOfComponents() == 1)
+    {
+      return "radius";
+    }
+  }
+  return std::string();
+}
+
 void vtkParticleRepresentation::UpdateMapperRadiusArray()
 {
-  this->Mapper->SetRadiusArrayName(
-    (this->UseRadiusArray && !this->RadiusArray.empty()) ? this->RadiusArray.c_str() : nullptr);
+  const std::string name = this->EffectiveRadiusArray(this->Mapper->GetInput());
+  this->Mapper->SetRadiusArrayName(name.empty() ? nullptr : name.c_str());
 }
 
 //------------------------------------------------------------------------------
@@ -388,11 +407,13 @@ void vtkParticleRepresentation::SetEarlyTermination(int on)
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleRepresentation::SetUseRadiusArray(bool use)
+void vtkParticleRepresentation::SetUseRadiusArray(int mode)
 {
-  if (this->UseRadiusArray != use)
+  mode = std::min(std::max(mode, static_cast<int>(RADIUS_ARRAY_OFF)),
+    static_cast<int>(RADIUS_ARRAY_AUTOMATIC));
+  if (this->UseRadiusArray != mode)
   {
-    this->UseRadiusArray = use;
+    this->UseRadiusArray = mode;
     this->UpdateMapperRadiusArray();
     this->Modified();
   }

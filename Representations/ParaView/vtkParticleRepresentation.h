@@ -67,14 +67,21 @@ public:
 
   ///@{
   /**
-   * Radius source. With UseRadiusArray on, the point array RadiusArray gives the radii;
-   * otherwise (default) every particle has the constant Radius.
+   * Radius source. UseRadiusArray RADIUS_ARRAY_OFF: every particle has the constant Radius;
+   * RADIUS_ARRAY_ON: the point array RadiusArray gives the radii; RADIUS_ARRAY_AUTOMATIC (the
+   * default): the input's one-component numeric point array named "radius" when it has one
+   * (what vtkLAMMPSDumpReader and most particle codes write), otherwise the constant Radius.
    * SelectRadiusArray has the signature of SetInputArrayToProcess so ParaView's array widgets
    * can drive it; only the name is used.
    */
-  void SetUseRadiusArray(bool use);
-  vtkGetMacro(UseRadiusArray, bool);
-  vtkBooleanMacro(UseRadiusArray, bool);
+  enum RadiusArrayModes
+  {
+    RADIUS_ARRAY_OFF = 0,
+    RADIUS_ARRAY_ON = 1,
+    RADIUS_ARRAY_AUTOMATIC = 2
+  };
+  void SetUseRadiusArray(int mode);
+  vtkGetMacro(UseRadiusArray, int);
   void SetRadiusArray(const char* name);
   const char* GetRadiusArray() const { return this->RadiusArray.c_str(); }
   void SelectRadiusArray(int, int, int, int, const char* name);
@@ -175,6 +182,8 @@ protected:
 
   void UpdateColoringParameters();
   void UpdateMapperRadiusArray();
+  // The radius array the mode selects for these particles ("" = the constant radius).
+  std::string EffectiveRadiusArray(vtkPolyData* particles) const;
   void UpdateMapperOpacityArray();
 
   vtkNew<vtkTransparentSphereMapper> Mapper;
@@ -188,7 +197,7 @@ protected:
   vtkDataObject* LastDelivered = nullptr;
   vtkMTimeType LastDeliveredTime = 0;
 
-  bool UseRadiusArray = false;
+  int UseRadiusArray = RADIUS_ARRAY_AUTOMATIC;
   std::string RadiusArray;
 
 private:

@@ -1,6 +1,7 @@
 """The Particles representation in ParaView's standard Render View: the LAMMPS FCC block
 (Testing/Data/fcc_block.vtp: 32000 atoms, a z-cylinder of type 2) with radii from the 'radius'
-point array, coloured by atom type through a categorical lookup table. Baseline-image test.
+point array -- picked by the default radius source, Automatic -- coloured by atom type through a
+categorical lookup table. Baseline-image test.
 
 usage: pvpython TestParticlesRepresentation.py --plugin ParticleRendering.so --data DIR
            --baseline-dir DIR --temp-dir DIR [--must-fail darker]
@@ -22,14 +23,16 @@ pr.load_plugin(args)
 
 atoms, from_file = pr.open_particles(args, "fcc_block.vtp")
 view = pr.setup_view(simple.CreateView("RenderView"))
-display = pr.show_particles(atoms, view)
+# the radius source left at its default (Automatic): the data's "radius" array must be used,
+# which the baseline (radii from 'radius') checks
+display = pr.show_particles(atoms, view, use_radius_array=None)
 pr.set_camera(view, position=(84.0, -52.0, 62.0), focal_point=(15.1, 15.1, 13.5))
 if pr.must_fail(args, "darker"):
     display.Diffuse = 0.9  # the spheres' diffuse light 10 % darker: must be rejected
 
 ok = True
 # the representation's properties as the panel exposes them
-expected = {"UseRadiusArray": 1, "RadiusScaleFactor": 1.0}
+expected = {"UseRadiusArray": "Automatic", "RadiusScaleFactor": 1.0}
 for name, value in expected.items():
     if display.GetPropertyValue(name) != value:
         print("FAIL: %s is %r, expected %r" % (name, display.GetPropertyValue(name), value))

@@ -142,9 +142,13 @@ def type_lookup_table():
 def show_particles(source, view, color_by_type=True, use_radius_array=True):
     display = simple.Show(source, view)
     display.Representation = "Particles"
-    if use_radius_array:
+    if use_radius_array is None:
+        pass  # the default: Automatic (the "radius" array when there is one)
+    elif use_radius_array:
         display.UseRadiusArray = 1
         display.RadiusArray = ["POINTS", "radius"]
+    else:
+        display.UseRadiusArray = 0  # the constant Radius
     if color_by_type:
         simple.ColorBy(display, ("POINTS", "type"))
         display.LookupTable = type_lookup_table()

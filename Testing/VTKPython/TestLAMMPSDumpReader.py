@@ -257,7 +257,7 @@ def main():
         a, b = gz.step(k), plain.step(k)
         check(numpy.array_equal(points(a), points(b)) and
               numpy.array_equal(array(a, "velocity"), array(b, "velocity")), "gz step %d" % k)
-    files = [f for f in os.listdir(work) if re.fullmatch(r"dump\.\d+\.txt", f)]
+    files = [f for f in os.listdir(work) if re.fullmatch(r"dump\.\d+", f)]
     random.Random(3).shuffle(files)
     series = Reader(*[path(f) for f in files])
     check(series.times == [float(t) for t, _ in first_run], "series times %s" % series.times)
