@@ -1010,8 +1010,10 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
     const long long skipped = lines.Skip(s.NumberOfAtoms);
     if (skipped < s.NumberOfAtoms)
     {
-      return fail("the snapshot of timestep " + std::to_string(s.Timestep) + " is truncated: " +
-        std::to_string(skipped) + " of " + std::to_string(s.NumberOfAtoms) + " atom lines");
+      return fail("the file ends here, in the snapshot of timestep " +
+        std::to_string(s.Timestep) + " (atoms from line " + std::to_string(s.AtomsLine) +
+        "), which is truncated: " + std::to_string(skipped) + " of " +
+        std::to_string(s.NumberOfAtoms) + " atom lines");
     }
     s.EndOffset = lines.Offset();
     steps.push_back(std::move(s));
