@@ -53,7 +53,7 @@ public:
     this->File = gzopen(name.c_str(), "rb");
     if (this->File)
     {
-      gzbuffer(this->File, 1 << 20);
+      gzbuffer(this->File, 256 << 10);
     }
     this->Position = 0;
     return this->File != nullptr;
@@ -111,10 +111,11 @@ private:
 class LineReader
 {
 public:
-  explicit LineReader(InputFile& file)
+  // bufferSize: bytes read at a time (at least 4 KiB)
+  LineReader(InputFile& file, size_t bufferSize = 1 << 20)
     : File(file)
   {
-    this->Buffer.resize(1 << 20);
+    this->Buffer.resize(std::max<size_t>(bufferSize, 4096));
   }
   // The next line without its end (and a '\r' before it); false at the end of the file.
   bool Next(std::string& line)
@@ -824,7 +825,7 @@ int vtkLAMMPSDumpReader::CanReadFile(const char* fileName)
   {
     return 0;
   }
-  LineReader lines(file);
+  LineReader lines(file, 16384);
   std::string line;
   for (int i = 0; i < 16 && lines.Next(line); ++i)
   {
@@ -888,7 +889,8 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
     }
     file.Seek(0);
   }
-  LineReader lines(file);
+  const auto size = vtksys::SystemTools::FileLength(name);
+  LineReader lines(file, static_cast<size_t>(std::min<decltype(size)>(size + 1, 1 << 20)));
   std::string line;
   const size_t first = steps.size();
   auto fail = [&](const std::string& what) -> bool
@@ -1232,7 +1234,8 @@ int vtkLAMMPSDumpReader::RequestData(
   std::vector<std::string> firstRow;
   if (n > 0)
   {
-    LineReader lines(file);
+    LineReader lines(file, static_cast<size_t>(std::min<std::uint64_t>(
+                             s.EndOffset - s.AtomsOffset + 1, 1 << 16)));
     std::string line;
     lines.Next(line);
     firstRow = Split(line);
