@@ -1,0 +1,128 @@
+/**
+ * @class   vtkLAMMPSDataReader
+ * @brief   reads LAMMPS data files (read_data / write_data format) as particles
+ *
+ * vtkLAMMPSDataReader reads the atoms of a LAMMPS data file -- what `write_data` writes and
+ * `read_data` reads -- as points with a vertex cell per atom:
+ * - the header: "N atoms", "N atom types", the box ("xlo xhi", "ylo yhi", "zlo zhi" and, for a
+ *   triclinic box, "xy xz yz"), other header lines are skipped;
+ * - "Atoms" in the common atom styles, taken from the section's comment ("Atoms # full", as
+ *   write_data writes it) or from AtomStyle when there is none: atomic (id type x y z), charge
+ *   (id type q x y z), bond / angle / molecular (id mol type x y z), full (id mol type q x y z),
+ *   sphere (id type diameter density x y z), dipole (id type q x y z mux muy muz), plus the
+ *   optional image flags ix iy iz at the end of a line (then PositionSource UNWRAPPED unwraps
+ *   with them, x_u = x + ix lx + iy xy + iz xz and so on);
+ * - "Velocities" (id vx vy vz, joined to the atoms by id) as "velocity";
+ * - "Masses" (type mass) as a per-atom "mass" array;
+ * - other sections (Bonds, Pair Coeffs, ...) are skipped.
+ * Point arrays: "id" (vtkIdTypeArray), "type", "mol" (vtkIntArray), "q", "diameter", "density",
+ * "mu" (3 components), "image" (3 int components), "velocity", "mass", and "radius" (half the
+ * diameter for sphere styles, else the per-type table SetTypeRadius / DefaultRadius, like
+ * vtkLAMMPSDumpReader). The box is in the field data ("BoxBounds", "BoxTilt") and on output port
+ * 1 as an outline. Atoms are in file order (SortById orders them by id).
+ *
+ * Bad input gets an error naming the file and the line (a header count that does not match the
+ * section, a line with too few values, a non-number, an unknown atom style, velocities of ids
+ * that are not atoms) and an empty output; gzip files are read through zlib.
+ *
+ * @sa vtkLAMMPSDumpReader
+ */
+#ifndef vtkLAMMPSDataReader_h
+#define vtkLAMMPSDataReader_h
+
+#include "vtkParticleRenderingIOModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <map>    // for the type radii
+#include <string> // for std::string
+
+class VTKPARTICLERENDERINGIO_EXPORT vtkLAMMPSDataReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLAMMPSDataReader* New();
+  vtkTypeMacro(vtkLAMMPSDataReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The data file.
+   */
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+  ///@}
+
+  /**
+   * Whether the file looks like a LAMMPS data file (a title line, then "N atoms" among the
+   * first header lines). For reader factories.
+   */
+  static int CanReadFile(const char* fileName);
+
+  ///@{
+  /**
+   * The atom style to assume when the Atoms section has no "# style" comment: "atomic"
+   * (default), "charge", "bond", "angle", "molecular", "full", "sphere", "dipole". The comment
+   * wins when present.
+   */
+  vtkSetStdStringFromCharMacro(AtomStyle);
+  vtkGetCharFromStdStringMacro(AtomStyle);
+  ///@}
+
+  enum PositionSources
+  {
+    WRAPPED = 1,   // x y z as written
+    UNWRAPPED = 2, // x y z unwrapped with the image flags (when the file has them)
+  };
+  ///@{
+  /**
+   * Wrapped (default) or unwrapped positions.
+   */
+  vtkSetClampMacro(PositionSource, int, WRAPPED, UNWRAPPED);
+  vtkGetMacro(PositionSource, int);
+  ///@}
+
+  ///@{
+  /**
+   * Order the atoms by id (default off: file order).
+   */
+  vtkSetMacro(SortById, bool);
+  vtkGetMacro(SortById, bool);
+  vtkBooleanMacro(SortById, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The "radius" array: on/off (default on), the radius of types without a table entry
+   * (default 0.5), and the per-type table (see vtkLAMMPSDumpReader).
+   */
+  vtkSetMacro(GenerateRadius, bool);
+  vtkGetMacro(GenerateRadius, bool);
+  vtkBooleanMacro(GenerateRadius, bool);
+  vtkSetClampMacro(DefaultRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DefaultRadius, double);
+  void SetTypeRadius(int type, double radius);
+  void SetTypeRadius(double type, double radius); // for ParaView's (type, radius) pairs
+  double GetTypeRadius(int type);
+  void RemoveAllTypeRadii();
+  ///@}
+
+protected:
+  vtkLAMMPSDataReader();
+  ~vtkLAMMPSDataReader() override;
+
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  std::string FileName;
+  std::string AtomStyle = "atomic";
+  int PositionSource = WRAPPED;
+  bool SortById = false;
+  bool GenerateRadius = true;
+  double DefaultRadius = 0.5;
+  std::map<int, double> TypeRadii;
+
+private:
+  vtkLAMMPSDataReader(const vtkLAMMPSDataReader&) = delete;
+  void operator=(const vtkLAMMPSDataReader&) = delete;
+};
+
+#endif
