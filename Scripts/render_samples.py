@@ -54,6 +54,7 @@ def main():
             # emission-absorption glyphs: slow (liquid) atoms nearly clear, vapour opaque
             display.UseOpacityArray = 1
             display.ParticleOpacityArray = ["POINTS", "speed"]
+            display.OpacityArrayRangeMode = "Custom"
             display.OpacityArrayRange = [0.0, 3.0]
             display.DensityModel = "Squared Distance"
             display.HollowFraction = 0.4

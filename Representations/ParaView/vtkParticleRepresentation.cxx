@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
+#include "vtkCommunicator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
@@ -160,6 +161,8 @@ int vtkParticleRepresentation::RequestData(
 
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   this->ProcessedData = MakeParticles(input, parallel);
+  this->UpdateOpacityArrayDataRange();
+  this->UpdateMapperOpacityArray();
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
@@ -345,6 +348,54 @@ void vtkParticleRepresentation::UpdateMapperOpacityArray()
 {
   this->Mapper->SetOpacityArrayName(
     (this->UseOpacityArray && !this->OpacityArray.empty()) ? this->OpacityArray.c_str() : nullptr);
+  if (this->OpacityArrayRangeMode == OPACITY_RANGE_CUSTOM)
+  {
+    this->Mapper->SetOpacityRange(this->OpacityArrayRange);
+  }
+  else
+  {
+    this->Mapper->SetOpacityRange(this->OpacityArrayDataRange);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateOpacityArrayDataRange()
+{
+  double range[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  vtkDataArray* array = (this->ProcessedData && !this->OpacityArray.empty())
+    ? this->ProcessedData->GetPointData()->GetArray(this->OpacityArray.c_str())
+    : nullptr;
+  if (array && array->GetNumberOfComponents() == 1 && array->GetNumberOfTuples() > 0)
+  {
+    array->GetFiniteRange(range, 0);
+  }
+  // the same range on every process (RequestData runs on all of them together)
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    double local[2] = { range[0], -range[1] };
+    double global[2];
+    controller->AllReduce(local, global, 2, vtkCommunicator::MIN_OP);
+    range[0] = global[0];
+    range[1] = -global[1];
+  }
+  if (range[0] <= range[1])
+  {
+    this->OpacityArrayDataRange[0] = range[0];
+    this->OpacityArrayDataRange[1] = range[1];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOpacityArrayRangeMode(int mode)
+{
+  mode = mode == OPACITY_RANGE_CUSTOM ? OPACITY_RANGE_CUSTOM : OPACITY_RANGE_DATA;
+  if (this->OpacityArrayRangeMode != mode)
+  {
+    this->OpacityArrayRangeMode = mode;
+    this->UpdateMapperOpacityArray();
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -365,6 +416,7 @@ void vtkParticleRepresentation::SetOpacityArray(const char* name)
   if (this->OpacityArray != value)
   {
     this->OpacityArray = value;
+    this->UpdateOpacityArrayDataRange();
     this->UpdateMapperOpacityArray();
     this->Modified();
   }
@@ -379,7 +431,9 @@ void vtkParticleRepresentation::SelectOpacityArray(int, int, int, int, const cha
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetOpacityArrayRange(double lo, double hi)
 {
-  this->Mapper->SetOpacityRange(lo, hi);
+  this->OpacityArrayRange[0] = lo;
+  this->OpacityArrayRange[1] = hi;
+  this->UpdateMapperOpacityArray();
 }
 
 //------------------------------------------------------------------------------

@@ -111,6 +111,24 @@ public:
 
   ///@{
   /**
+   * Which values of the opacity array map to opacity 0 and 1: OPACITY_RANGE_DATA (default) the
+   * finite range of the chosen array in the current data (all processes), so that it follows
+   * the array and the time step; OPACITY_RANGE_CUSTOM the OpacityArrayRange values (e.g. to keep
+   * one mapping over an animation). GetOpacityArrayDataRange gives the data range (for an
+   * information property: the values to start a custom range from).
+   */
+  enum OpacityRangeModes
+  {
+    OPACITY_RANGE_DATA = 0,
+    OPACITY_RANGE_CUSTOM = 1
+  };
+  void SetOpacityArrayRangeMode(int mode);
+  vtkGetMacro(OpacityArrayRangeMode, int);
+  vtkGetVector2Macro(OpacityArrayDataRange, double);
+  ///@}
+
+  ///@{
+  /**
    * Colour mapping, forwarded to the mapper.
    */
   void SetLookupTable(vtkScalarsToColors* lut);
@@ -190,6 +208,11 @@ protected:
   vtkNew<vtkActor> Actor;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;
+  int OpacityArrayRangeMode = OPACITY_RANGE_DATA;
+  double OpacityArrayRange[2] = { 0.0, 1.0 };
+  double OpacityArrayDataRange[2] = { 0.0, 1.0 };
+  // the data range of the opacity array in the processed data, reduced over all processes
+  void UpdateOpacityArrayDataRange();
   std::string OpacityArray;
   vtkSmartPointer<vtkPolyData> ProcessedData;
   // the delivered piece when it had to be flattened again on the rendering side

@@ -41,7 +41,19 @@ for name, value in defaults.items():
         ok = False
 
 display.UseOpacityArray = 1
-display.ParticleOpacityArray = ["POINTS", "speed"]
+# the default range follows the chosen array (Data Range): radius first, then speed
+for array in ("radius", "speed"):
+    display.ParticleOpacityArray = ["POINTS", array]
+    simple.Render(view)
+    display.SMProxy.UpdatePropertyInformation()
+    got = list(display.GetPropertyValue("OpacityArrayDataRange"))
+    expected = list(atoms.PointData[array].GetRange())
+    print("Data Range of %s: %s (array range %s)" % (array, got, expected))
+    if display.OpacityArrayRangeMode != "Data Range" or \
+            max(abs(a - b) for a, b in zip(got, expected)) > 1e-6 * max(1.0, abs(expected[1])):
+        print("FAIL: the opacity range does not follow the array %s" % array)
+        ok = False
+display.OpacityArrayRangeMode = "Custom"
 display.OpacityArrayRange = [0.0, 3.0]
 pr.set_camera(view, position=(95.0, 20.0, 95.0), focal_point=(40.0, 40.0, 40.0),
               view_up=(0, 1, 0), view_angle=30.0)
