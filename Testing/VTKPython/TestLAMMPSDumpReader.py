@@ -285,6 +285,18 @@ def main():
     expected = numpy.where(column(custom[0], "type", int) == 2, 0.4, 0.5).astype(numpy.float32)
     check(numpy.array_equal(array(out, "radius"), expected), "radius from the per-type table")
 
+    # ---- progress: reported per parse block (4 KiB blocks here), increasing, ending at 1 (the
+    # pipeline itself also reports 0 and 1 around each request)
+    progress = []
+    r_p = pr.vtkLAMMPSDumpReader()
+    r_p.SetFileName(path("dump.custom"))
+    r_p.SetBlockSize(4096)
+    r_p.AddObserver("ProgressEvent", lambda obj, event: progress.append(obj.GetProgress()))
+    r_p.Update()
+    blocks = [v for v in progress if 0.1 < v < 1.0]  # the parse's own reports, per block
+    check(len(blocks) > 20 and blocks == sorted(blocks) and progress[-1] == 1.0,
+          "progress: %d block reports, last %s" % (len(blocks), progress[-1:] if progress else None))
+
     # ---- CanReadFile
     check(pr.vtkLAMMPSDumpReader.CanReadFile(path("dump.custom.gz")) == 1 and
           pr.vtkLAMMPSDumpReader.CanReadFile(path("log.lammps")) == 0, "CanReadFile")
