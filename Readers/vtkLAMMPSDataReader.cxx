@@ -55,47 +55,9 @@ bool IsNumber(const std::string& word)
 }
 
 //------------------------------------------------------------------------------
-vtkLAMMPSDataReader::vtkLAMMPSDataReader()
-{
-  this->SetNumberOfInputPorts(0);
-  this->SetNumberOfOutputPorts(2);
-}
+vtkLAMMPSDataReader::vtkLAMMPSDataReader() = default;
 
 vtkLAMMPSDataReader::~vtkLAMMPSDataReader() = default;
-
-//------------------------------------------------------------------------------
-void vtkLAMMPSDataReader::SetTypeRadius(int type, double radius)
-{
-  auto it = this->TypeRadii.find(type);
-  if (it == this->TypeRadii.end() || it->second != radius)
-  {
-    this->TypeRadii[type] = radius;
-    this->Modified();
-  }
-}
-
-void vtkLAMMPSDataReader::SetTypeRadius(double type, double radius)
-{
-  if (std::isfinite(type) && std::abs(type) < 2e9)
-  {
-    this->SetTypeRadius(static_cast<int>(std::lround(type)), radius);
-  }
-}
-
-double vtkLAMMPSDataReader::GetTypeRadius(int type)
-{
-  auto it = this->TypeRadii.find(type);
-  return it == this->TypeRadii.end() ? this->DefaultRadius : it->second;
-}
-
-void vtkLAMMPSDataReader::RemoveAllTypeRadii()
-{
-  if (!this->TypeRadii.empty())
-  {
-    this->TypeRadii.clear();
-    this->Modified();
-  }
-}
 
 //------------------------------------------------------------------------------
 int vtkLAMMPSDataReader::CanReadFile(const char* fileName)
@@ -124,13 +86,6 @@ int vtkLAMMPSDataReader::CanReadFile(const char* fileName)
     }
   }
   return 0;
-}
-
-//------------------------------------------------------------------------------
-int vtkLAMMPSDataReader::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -569,13 +524,4 @@ void vtkLAMMPSDataReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << this->FileName << "\n";
   os << indent << "AtomStyle: " << this->AtomStyle << "\n";
   os << indent << "PositionSource: " << this->PositionSource << "\n";
-  os << indent << "SortById: " << this->SortById << "\n";
-  os << indent << "GenerateRadius: " << this->GenerateRadius << "\n";
-  os << indent << "DefaultRadius: " << this->DefaultRadius << "\n";
-  os << indent << "TypeRadii:";
-  for (const auto& item : this->TypeRadii)
-  {
-    os << " " << item.first << ":" << item.second;
-  }
-  os << "\n";
 }

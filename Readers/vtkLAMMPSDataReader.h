@@ -17,8 +17,7 @@
  * - other sections (Bonds, Pair Coeffs, ...) are skipped.
  * Point arrays: "id" (vtkIdTypeArray), "type", "mol" (vtkIntArray), "q", "diameter", "density",
  * "mu" (3 components), "image" (3 int components), "velocity", "mass", and "radius" (half the
- * diameter for sphere styles, else the per-type table SetTypeRadius / DefaultRadius, like
- * vtkLAMMPSDumpReader). The box is in the field data ("BoxBounds", "BoxTilt") and on output port
+ * diameter for sphere styles, else the per-type table of vtkLAMMPSReaderBase). The box is in the field data ("BoxBounds", "BoxTilt") and on output port
  * 1 as an outline. Atoms are in file order (SortById orders them by id).
  *
  * Bad input gets an error naming the file and the line (a header count that does not match the
@@ -30,17 +29,16 @@
 #ifndef vtkLAMMPSDataReader_h
 #define vtkLAMMPSDataReader_h
 
+#include "vtkLAMMPSReaderBase.h"
 #include "vtkParticleRenderingIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
 
-#include <map>    // for the type radii
 #include <string> // for std::string
 
-class VTKPARTICLERENDERINGIO_EXPORT vtkLAMMPSDataReader : public vtkPolyDataAlgorithm
+class VTKPARTICLERENDERINGIO_EXPORT vtkLAMMPSDataReader : public vtkLAMMPSReaderBase
 {
 public:
   static vtkLAMMPSDataReader* New();
-  vtkTypeMacro(vtkLAMMPSDataReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkLAMMPSDataReader, vtkLAMMPSReaderBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -80,45 +78,15 @@ public:
   vtkGetMacro(PositionSource, int);
   ///@}
 
-  ///@{
-  /**
-   * Order the atoms by id (default off: file order).
-   */
-  vtkSetMacro(SortById, bool);
-  vtkGetMacro(SortById, bool);
-  vtkBooleanMacro(SortById, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The "radius" array: on/off (default on), the radius of types without a table entry
-   * (default 0.5), and the per-type table (see vtkLAMMPSDumpReader).
-   */
-  vtkSetMacro(GenerateRadius, bool);
-  vtkGetMacro(GenerateRadius, bool);
-  vtkBooleanMacro(GenerateRadius, bool);
-  vtkSetClampMacro(DefaultRadius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(DefaultRadius, double);
-  void SetTypeRadius(int type, double radius);
-  void SetTypeRadius(double type, double radius); // for ParaView's (type, radius) pairs
-  double GetTypeRadius(int type);
-  void RemoveAllTypeRadii();
-  ///@}
-
 protected:
   vtkLAMMPSDataReader();
   ~vtkLAMMPSDataReader() override;
 
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::string FileName;
   std::string AtomStyle = "atomic";
   int PositionSource = WRAPPED;
-  bool SortById = false;
-  bool GenerateRadius = true;
-  double DefaultRadius = 0.5;
-  std::map<int, double> TypeRadii;
 
 private:
   vtkLAMMPSDataReader(const vtkLAMMPSDataReader&) = delete;

@@ -498,7 +498,6 @@ public:
   // the index is valid for these files, these settings and this modification state
   std::vector<std::string> IndexedFiles;
   std::vector<long long> IndexedSizes; // FileStamp of each file
-  std::map<int, double> TypeRadii;
   std::string LastWarning;
 };
 
@@ -506,8 +505,6 @@ public:
 vtkLAMMPSDumpReader::vtkLAMMPSDumpReader()
   : Internals(new vtkInternals)
 {
-  this->SetNumberOfInputPorts(0);
-  this->SetNumberOfOutputPorts(2);
 }
 
 vtkLAMMPSDumpReader::~vtkLAMMPSDumpReader() = default;
@@ -562,40 +559,6 @@ const char* vtkLAMMPSDumpReader::GetFileName(int index)
 }
 
 //------------------------------------------------------------------------------
-void vtkLAMMPSDumpReader::SetTypeRadius(int type, double radius)
-{
-  auto it = this->Internals->TypeRadii.find(type);
-  if (it == this->Internals->TypeRadii.end() || it->second != radius)
-  {
-    this->Internals->TypeRadii[type] = radius;
-    this->Modified();
-  }
-}
-
-void vtkLAMMPSDumpReader::SetTypeRadius(double type, double radius)
-{
-  if (std::isfinite(type) && std::abs(type) < 2e9)
-  {
-    this->SetTypeRadius(static_cast<int>(std::lround(type)), radius);
-  }
-}
-
-double vtkLAMMPSDumpReader::GetTypeRadius(int type)
-{
-  auto it = this->Internals->TypeRadii.find(type);
-  return it == this->Internals->TypeRadii.end() ? this->DefaultRadius : it->second;
-}
-
-void vtkLAMMPSDumpReader::RemoveAllTypeRadii()
-{
-  if (!this->Internals->TypeRadii.empty())
-  {
-    this->Internals->TypeRadii.clear();
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
 int vtkLAMMPSDumpReader::GetNumberOfSteps()
 {
   return static_cast<int>(this->Internals->Steps.size());
@@ -640,14 +603,6 @@ int vtkLAMMPSDumpReader::CanReadFile(const char* fileName)
     }
   }
   return 0;
-}
-
-//------------------------------------------------------------------------------
-int vtkLAMMPSDumpReader::FillOutputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
-  (void)port;
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -1326,15 +1281,6 @@ void vtkLAMMPSDumpReader::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << indent << "DeltaTime: " << this->DeltaTime << "\n";
   os << indent << "PositionSource: " << this->PositionSource << "\n";
-  os << indent << "SortById: " << this->SortById << "\n";
-  os << indent << "GenerateRadius: " << this->GenerateRadius << "\n";
-  os << indent << "DefaultRadius: " << this->DefaultRadius << "\n";
-  os << indent << "TypeRadii:";
-  for (const auto& item : this->Internals->TypeRadii)
-  {
-    os << " " << item.first << ":" << item.second;
-  }
-  os << "\n";
   os << indent << "BlockSize: " << this->BlockSize << "\n";
   os << indent << "NumberOfSteps: " << this->Internals->Steps.size() << "\n";
 }

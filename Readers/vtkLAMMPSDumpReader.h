@@ -35,10 +35,9 @@
  *   every other column as a float array named like the column.
  * SortById reorders the atoms of every step by id, so that arrays line up across steps.
  *
- * Radii. With GenerateRadius (default on) the output has a point array "radius": the `radius`
- * column, or half the `diameter` column, or else a per-type table (SetTypeRadius; types without
- * an entry get DefaultRadius, 0.5 = half the Lennard-Jones sigma), or DefaultRadius for every atom
- * when there is no type column.
+ * Radii (vtkLAMMPSReaderBase: GenerateRadius, SetTypeRadius, DefaultRadius): the `radius`
+ * column, or half the `diameter` column, or else the per-type table, or DefaultRadius for every
+ * atom when there is no type column.
  *
  * Box. The field data holds "Timestep" (1 value), "BoxBounds" (xlo xhi ylo yhi zlo zhi of the
  * box itself, i.e. LAMMPS's bounding-box bounds with the tilt removed), "BoxTilt" (xy xz yz, 0
@@ -67,16 +66,16 @@
 #ifndef vtkLAMMPSDumpReader_h
 #define vtkLAMMPSDumpReader_h
 
+#include "vtkLAMMPSReaderBase.h"
 #include "vtkParticleRenderingIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class VTKPARTICLERENDERINGIO_EXPORT vtkLAMMPSDumpReader : public vtkPolyDataAlgorithm
+class VTKPARTICLERENDERINGIO_EXPORT vtkLAMMPSDumpReader : public vtkLAMMPSReaderBase
 {
 public:
   static vtkLAMMPSDumpReader* New();
-  vtkTypeMacro(vtkLAMMPSDumpReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkLAMMPSDumpReader, vtkLAMMPSReaderBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -124,31 +123,6 @@ public:
 
   ///@{
   /**
-   * Reorder the atoms of every step by their id column (default off: file order).
-   */
-  vtkSetMacro(SortById, bool);
-  vtkGetMacro(SortById, bool);
-  vtkBooleanMacro(SortById, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The "radius" array (see the class description): on/off (default on), the radius of types
-   * without a table entry (default 0.5), and the per-type table.
-   */
-  vtkSetMacro(GenerateRadius, bool);
-  vtkGetMacro(GenerateRadius, bool);
-  vtkBooleanMacro(GenerateRadius, bool);
-  vtkSetClampMacro(DefaultRadius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(DefaultRadius, double);
-  void SetTypeRadius(int type, double radius);
-  void SetTypeRadius(double type, double radius); // for ParaView's (type, radius) pairs
-  double GetTypeRadius(int type);
-  void RemoveAllTypeRadii();
-  ///@}
-
-  ///@{
-  /**
    * Bytes of text parsed per block (default 32 MiB; at least 4 KiB).
    */
   vtkSetClampMacro(BlockSize, vtkIdType, 4096, VTK_ID_MAX);
@@ -169,15 +143,11 @@ protected:
   vtkLAMMPSDumpReader();
   ~vtkLAMMPSDumpReader() override;
 
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double DeltaTime = 0.0;
   int PositionSource = AUTOMATIC;
-  bool SortById = false;
-  bool GenerateRadius = true;
-  double DefaultRadius = 0.5;
   vtkIdType BlockSize = 32 << 20;
 
 private:

@@ -7,12 +7,10 @@
 // mutated -- random bytes, bytes in the header, frame table and list headers set to extreme
 // values (0, 0xff, huge counts), truncation, deleted and duplicated ranges -- and read: header,
 // frame table, every frame. A crash or an AddressSanitizer report fails the test.
-#include "vtkCommand.h"
-#include "vtkInformation.h"
+#include "prFuzzCommon.h"
 #include "vtkMMPLDReader.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -145,14 +143,6 @@ std::string Mutate(std::string s, std::mt19937& random)
   }
   return s;
 }
-
-class Counter : public vtkCommand
-{
-public:
-  static Counter* New() { return new Counter; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  long long Count = 0;
-};
 }
 
 int main(int argc, char* argv[])
@@ -169,7 +159,7 @@ int main(int argc, char* argv[])
   long long indexed = 0;
   long long frames = 0;
   long long points = 0;
-  vtkNew<Counter> messages;
+  vtkNew<prFuzz::Counter> messages;
   for (int c = 0; c < cases; ++c)
   {
     const std::string& base = valid[c % 2];
@@ -179,22 +169,13 @@ int main(int argc, char* argv[])
     reader->AddObserver(vtkCommand::ErrorEvent, messages);
     reader->AddObserver(vtkCommand::WarningEvent, messages);
     reader->SetFileName(path.c_str());
-    reader->UpdateInformation();
-    vtkInformation* info = reader->GetOutputInformation(0);
-    if (!info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    const int n = prFuzz::ReadAllSteps(reader, points);
+    if (n < 0)
     {
       continue;
     }
     ++indexed;
-    const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    const double* times = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    const std::vector<double> copy(times, times + n);
-    for (double t : copy)
-    {
-      reader->UpdateTimeStep(t);
-      ++frames;
-      points += reader->GetOutput()->GetNumberOfPoints();
-    }
+    frames += n;
     if (c < 2 && (n != 3 || reader->GetOutput()->GetNumberOfPoints() != 16))
     {
       std::cerr << "FAIL: the unmutated file (version " << reader->GetVersion() << ") reads as "

@@ -20,24 +20,18 @@ import sys
 
 import numpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import particlerendering as pr
-from vtkmodules.util.misc import calldata_type
+from prVTKTesting import Messages, check, finish  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 
-FAILURES = []
 STYLES = {"atomic": ["type", "x", "y", "z"], "charge": ["type", "q", "x", "y", "z"],
           "full": ["mol", "type", "q", "x", "y", "z"],
           "sphere": ["type", "diameter", "density", "x", "y", "z"],
           "dipole": ["type", "q", "x", "y", "z", "mux", "muy", "muz"]}
 
 
-def check(condition, what):
-    if not condition:
-        FAILURES.append(what)
-        print("FAIL: " + what)
-    return condition
 
 
 def parse(path):
@@ -68,17 +62,6 @@ def parse(path):
         elif section == "Velocities":
             info["velocities"][int(words[0])] = [float(w) for w in words[1:4]]
     return info
-
-
-class Messages:
-    def __init__(self, reader):
-        self.errors = []
-        reader.AddObserver("ErrorEvent", self.on_error)
-        reader.AddObserver("WarningEvent", self.on_error)
-
-    @calldata_type(VTK_STRING)
-    def on_error(self, obj, event, text):
-        self.errors.append(text)
 
 
 def read(path, **settings):
@@ -116,7 +99,7 @@ def main():
         check(info["style"] == ("atomic" if style == "triclinic" else style), "%s: style" % style)
         out, outline, messages = read(path)
         n = info["n"]
-        check(not messages.errors, "%s: messages %s" % (style, messages.errors))
+        check(not messages.text, "%s: messages %s" % (style, messages.text))
         check(out.GetNumberOfPoints() == n == len(info["atoms"]) and out.GetNumberOfVerts() == n,
               "%s: %d points, header %d" % (style, out.GetNumberOfPoints(), n))
         rows = info["atoms"]
@@ -177,7 +160,7 @@ def main():
     nocomment = os.path.join(work, "nocomment.data")
     open(nocomment, "w").write(text)
     out, _, messages = read(nocomment, AtomStyle="full")
-    check(numpy.array_equal(array(out, "mol"), array(plain, "mol")) and not messages.errors,
+    check(numpy.array_equal(array(out, "mol"), array(plain, "mol")) and not messages.text,
           "no style comment, AtomStyle full")
     check(pr.vtkLAMMPSDataReader.CanReadFile(path) == 1 and
           pr.vtkLAMMPSDataReader.CanReadFile(os.path.join(work, "log.lammps")) == 0, "CanReadFile")
@@ -207,13 +190,12 @@ def main():
         p = os.path.join(work, name)
         open(p, "w").write("\n".join(content))
         out, _, messages = read(p)
-        text = " ".join(messages.errors)
+        text = " ".join(messages.text)
         where = "%s, line %d: " % (name, line) if line else name + ", line "
         check(out.GetNumberOfPoints() == 0 and where in text and what in text,
               "%s: %d points, error %r (expected %r %r)" % (name, out.GetNumberOfPoints(), text, where, what))
 
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

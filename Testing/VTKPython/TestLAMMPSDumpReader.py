@@ -26,17 +26,13 @@ import sys
 
 import numpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import particlerendering as pr
+from prVTKTesting import check, finish  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-FAILURES = []
 
 
-def check(condition, what):
-    if not condition:
-        FAILURES.append(what)
-        print("FAIL: " + what)
-    return condition
 
 
 def run_lammps(generator, temp):
@@ -301,8 +297,7 @@ def main():
     check(pr.vtkLAMMPSDumpReader.CanReadFile(path("dump.custom.gz")) == 1 and
           pr.vtkLAMMPSDumpReader.CanReadFile(path("log.lammps")) == 0, "CanReadFile")
 
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

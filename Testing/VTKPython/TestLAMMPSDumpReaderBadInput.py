@@ -14,19 +14,12 @@ import os
 import sys
 
 import particlerendering as pr
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+import prVTKTesting  # noqa: E402
+from prVTKTesting import check, finish  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 
-FAILURES = []
 
 
-def check(condition, what):
-    if not condition:
-        FAILURES.append(what)
-        print("FAIL: " + what)
-    return condition
 
 
 def snapshot(timestep, rows, columns="id type x y z vx", box="0 10\n0 10\n0 10"):
@@ -40,30 +33,8 @@ ROWS = ["%d %d %g %g %g %g" % (i + 1, 1 + i % 2, 1.0 + i, 2.0 + i, 3.0 + i, 0.1 
 VALID = snapshot(0, ROWS) + snapshot(100, ROWS) + snapshot(200, ROWS)
 
 
-class Messages:
-    def __init__(self, reader):
-        self.errors = []
-        self.warnings = []
-        reader.AddObserver("ErrorEvent", self.on_error)
-        reader.AddObserver("WarningEvent", self.on_warning)
-
-    @calldata_type(VTK_STRING)
-    def on_error(self, obj, event, text):
-        self.errors.append(text)
-
-    @calldata_type(VTK_STRING)
-    def on_warning(self, obj, event, text):
-        self.warnings.append(text)
-
-
 def open_reader(path):
-    reader = pr.vtkLAMMPSDumpReader()
-    messages = Messages(reader)
-    reader.SetFileName(path)
-    reader.UpdateInformation()
-    info = reader.GetOutputInformation(0)
-    times = list(info.Get(sddp.TIME_STEPS())) if info.Has(sddp.TIME_STEPS()) else []
-    return reader, messages, times
+    return prVTKTesting.open_reader(pr.vtkLAMMPSDumpReader(), path)
 
 
 def read_step(reader, time):
@@ -185,8 +156,7 @@ def main():
           p10 == (5.0, 5.0, 5.0), "odd: steps %s, counts %s, point %s, errors %s"
           % (times, counts, p10, messages.errors))
 
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

@@ -24,23 +24,17 @@ import sys
 
 import numpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import particlerendering as pr
-from vtkmodules.util.misc import calldata_type
+import prVTKTesting  # noqa: E402
+from prVTKTesting import check, finish  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 
-FAILURES = []
 VERTEX = {1: "<3f", 2: "<4f", 3: "<3H", 4: "<3d", 0: ""}
 COLOUR = {0: "", 1: "<3B", 2: "<4B", 3: "<f", 4: "<3f", 5: "<4f", 6: "<4H", 7: "<d"}
 
 
-def check(condition, what):
-    if not condition:
-        FAILURES.append(what)
-        print("FAIL: " + what)
-    return condition
 
 
 def make_list(vertex, colour, count, rng):
@@ -114,25 +108,8 @@ def write_mmpld(path, version, frames, times=None, timestamp=True, frame_count=N
         f.write(content[: len(content) - truncate])
 
 
-class Messages:
-    def __init__(self, reader):
-        self.text = []
-        reader.AddObserver("ErrorEvent", self.add)
-        reader.AddObserver("WarningEvent", self.add)
-
-    @calldata_type(VTK_STRING)
-    def add(self, obj, event, text):
-        self.text.append(text)
-
-
 def open_reader(path):
-    reader = pr.vtkMMPLDReader()
-    messages = Messages(reader)
-    reader.SetFileName(path)
-    reader.UpdateInformation()
-    info = reader.GetOutputInformation(0)
-    times = list(info.Get(sddp.TIME_STEPS())) if info.Has(sddp.TIME_STEPS()) else []
-    return reader, messages, times
+    return prVTKTesting.open_reader(pr.vtkMMPLDReader(), path)
 
 
 def expected_arrays(lists):
@@ -276,8 +253,7 @@ def main():
     check(times == [] and "not an MMPLD file" in " ".join(messages.text) and
           pr.vtkMMPLDReader.CanReadFile(path) == 0, "not MMPLD: %s" % messages.text)
 
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

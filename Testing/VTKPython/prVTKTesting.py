@@ -1,0 +1,59 @@
+"""Shared helpers of the plain-VTK-Python tests of ParticleRendering: a check that records
+failures, the closing line, and the capture of an object's VTK errors and warnings."""
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+
+FAILURES = []
+
+
+def check(condition, what):
+    """Record a failed check (and print it). Returns the condition."""
+    if not condition:
+        FAILURES.append(what)
+        print("FAIL: " + what)
+    return condition
+
+
+def finish():
+    """The closing line and the exit status of a test."""
+    print("%d failure(s)" % len(FAILURES))
+    return 1 if FAILURES else 0
+
+
+class Messages:
+    """The error and warning texts a VTK object gives (they are then not printed)."""
+
+    def __init__(self, obj):
+        self.errors = []
+        self.warnings = []
+        obj.AddObserver("ErrorEvent", self.on_error)
+        obj.AddObserver("WarningEvent", self.on_warning)
+
+    @property
+    def text(self):
+        return self.errors + self.warnings
+
+    @calldata_type(VTK_STRING)
+    def on_error(self, obj, event, text):
+        self.errors.append(text)
+
+    @calldata_type(VTK_STRING)
+    def on_warning(self, obj, event, text):
+        self.warnings.append(text)
+
+
+def time_steps(algorithm):
+    """The TIME_STEPS of an algorithm's first output after UpdateInformation ([] when none)."""
+    algorithm.UpdateInformation()
+    info = algorithm.GetOutputInformation(0)
+    key = vtkStreamingDemandDrivenPipeline.TIME_STEPS()
+    return list(info.Get(key)) if info.Has(key) else []
+
+
+def open_reader(reader, path):
+    """Point a reader at a file, capture its messages and read its information: returns
+    (reader, messages, time values)."""
+    messages = Messages(reader)
+    reader.SetFileName(path)
+    return reader, messages, time_steps(reader)
