@@ -461,6 +461,12 @@ void vtkParticleRepresentation::SetEarlyTermination(int on)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOpacityReference(int reference)
+{
+  this->Mapper->SetOpacityReference(reference);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetUseRadiusArray(int mode)
 {
   mode = std::min(std::max(mode, static_cast<int>(RADIUS_ARRAY_OFF)),

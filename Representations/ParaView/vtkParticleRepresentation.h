@@ -101,6 +101,7 @@ public:
   void SetHollowFraction(double fraction);
   void SetVolumeMix(double mix);
   void SetEarlyTermination(int on);
+  void SetOpacityReference(int reference); // vtkTransparentSphereMapper::OpacityReferences
   void SetUseOpacityArray(bool use);
   vtkGetMacro(UseOpacityArray, bool);
   void SetOpacityArray(const char* name);

@@ -469,6 +469,59 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
 }
 
 //------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::GetEffectiveColumnLayers()
+{
+  if (this->OpacityReference != COLUMN_OPACITY)
+  {
+    return 1.0;
+  }
+  if (this->ColumnLayers > 0.0)
+  {
+    return std::max(1.0, this->ColumnLayers);
+  }
+  // cached until the particles or the settings change
+  vtkPolyData* input = this->GetInput();
+  const vtkMTimeType key = std::max(this->GetMTime(), input ? input->GetMTime() : 0);
+  if (key == this->EstimatedColumnLayersTime)
+  {
+    return this->EstimatedColumnLayers;
+  }
+  this->EstimatedColumnLayersTime = key;
+  this->EstimatedColumnLayers = 1.0;
+  // the expected number of full chords a ray crosses along the longest side of the particles'
+  // box: (N / A) pi r^2 (2/3), A the area of the box face across that side, r the mean radius,
+  // 2/3 the mean chord of a sphere over its diameter (uniform impact parameters)
+  const double* b = this->GetBounds(); // spheres, radii included
+  vtkFloatArray* radii = this->GetParticleRadii();
+  if (!b || !(b[0] <= b[1]) || !radii || radii->GetNumberOfTuples() == 0)
+  {
+    return this->EstimatedColumnLayers;
+  }
+  double sum = 0.0;
+  vtkIdType count = 0;
+  for (vtkIdType i = 0; i < radii->GetNumberOfTuples(); ++i)
+  {
+    const double r = radii->GetValue(i);
+    if (r > 0.0 && std::isfinite(r))
+    {
+      sum += r;
+      ++count;
+    }
+  }
+  double sides[3] = { b[1] - b[0], b[3] - b[2], b[5] - b[4] };
+  std::sort(sides, sides + 3);
+  const double face = sides[0] * sides[1];
+  if (count == 0 || !(face > 0.0))
+  {
+    return this->EstimatedColumnLayers;
+  }
+  const double r = sum / count;
+  const double layers = count / face * vtkMath::Pi() * r * r * (2.0 / 3.0);
+  this->EstimatedColumnLayers = std::isfinite(layers) ? std::max(1.0, layers) : 1.0;
+  return this->EstimatedColumnLayers;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
@@ -488,8 +541,11 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
     program->SetUniform2f("prActorOpacity", actorOpacity);
     program->SetUniformf(
       "prHollowFraction2", static_cast<float>(this->HollowFraction * this->HollowFraction));
+    // COLUMN_OPACITY: kappa / L, i.e. L times the maximum integral (Theta = 1 - exp(-kappa I /
+    // I_max) in the shader)
     program->SetUniformf("prMaximumIntegral",
-      static_cast<float>(GetMaximumPathIntegral(this->DensityModel, this->HollowFraction)));
+      static_cast<float>(GetMaximumPathIntegral(this->DensityModel, this->HollowFraction) *
+        this->GetEffectiveColumnLayers()));
     program->SetUniformi(
       "prOpaqueDepth", internals.Target->GetOpaqueDepthTexture()->GetTextureUnit());
   }
@@ -877,6 +933,8 @@ void vtkTransparentSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->DensityModel == CONSTANT_DENSITY ? "Constant" : "SquaredDistance") << "\n";
   os << indent << "HollowFraction: " << this->HollowFraction << "\n";
   os << indent << "VolumeMix: " << this->VolumeMix << "\n";
+  os << indent << "OpacityReference: " << this->OpacityReference << "\n";
+  os << indent << "ColumnLayers: " << this->ColumnLayers << "\n";
   os << indent << "OpacityArrayName: "
      << (this->OpacityArrayName ? this->OpacityArrayName : "(none)") << "\n";
   os << indent << "OpacityRange: " << this->OpacityRange[0] << " " << this->OpacityRange[1]

@@ -127,6 +127,35 @@ public:
   vtkGetMacro(VolumeMix, double);
   ///@}
 
+  enum OpacityReferences
+  {
+    PARTICLE_OPACITY = 0, // Theta_i: the densest chord through one particle (the paper)
+    COLUMN_OPACITY = 1    // Theta_i: a column of ColumnLayers particles, one behind the other
+  };
+
+  ///@{
+  /**
+   * What Theta_i is the opacity of. PARTICLE_OPACITY (default, Staib et al. 2015 Sec. 3.1): the
+   * densest chord through one particle. COLUMN_OPACITY: a column of L particles one behind the
+   * other, so that the interior of dense data stays visible -- every particle's optical depth
+   * -ln(1 - Theta_i) is divided by L (the same as L times the maximum path integral I_max of
+   * Eq. 15/19), and L particles in a row compound to Theta_i. ColumnLayers is L; 0 (default)
+   * estimates it from the data as the expected number of full chords a ray crosses along the
+   * longest side of the particles' box: (N / A) pi r^2 (2/3), N the particles, A the area of the
+   * box face across that side, r the mean radius, 2/3 a sphere's mean chord over its diameter
+   * (exact for constant density, an approximation for the other models), at least 1. Opaque
+   * particles (Theta_i = 1) stay opaque.
+   */
+  vtkSetClampMacro(OpacityReference, int, PARTICLE_OPACITY, COLUMN_OPACITY);
+  vtkGetMacro(OpacityReference, int);
+  vtkSetClampMacro(ColumnLayers, double, 0.0, 1e9);
+  vtkGetMacro(ColumnLayers, double);
+  /**
+   * The L in use: 1 for PARTICLE_OPACITY, else ColumnLayers or its estimate (see above).
+   */
+  double GetEffectiveColumnLayers();
+  ///@}
+
   ///@{
   /**
    * Name of a one-component numeric point array giving each particle's maximum opacity through
@@ -259,6 +288,10 @@ protected:
   int DensityModel = CONSTANT_DENSITY;
   double HollowFraction = 0.0;
   double VolumeMix = 0.5;
+  int OpacityReference = PARTICLE_OPACITY;
+  double ColumnLayers = 0.0;
+  double EstimatedColumnLayers = 1.0;
+  vtkMTimeType EstimatedColumnLayersTime = 0;
   char* OpacityArrayName = nullptr;
   double OpacityRange[2] = { 0.0, 1.0 };
   bool EarlyTermination = false;

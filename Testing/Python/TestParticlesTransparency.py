@@ -40,6 +40,8 @@ for name, value in defaults.items():
         print("FAIL: %s is %r, expected %r" % (name, display.GetPropertyValue(name), value))
         ok = False
 
+# the baselines are of the paper's opacity (of one particle's densest chord)
+display.OpacityReference = "One Particle"
 display.UseOpacityArray = 1
 # the default range follows the chosen array (Data Range): radius first, then speed
 for array in ("radius", "speed"):
