@@ -69,6 +69,12 @@ void vtkParticleRenderView::SetDensityVolumeFetchDistance(double distance)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeStrength(double strength)
+{
+  this->DensityVolumeAOPass->SetStrength(strength);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRenderView::SetDensityVolumeSplat(int mode)
 {
   this->DensityVolumeAOPass->GetDensityVolume()->SetSplatMode(mode);

@@ -99,6 +99,7 @@ public:
   void SetDensityVolumeResolution(int resolution);
   void SetDensityVolumeFactor(double factor);
   void SetDensityVolumeFetchDistance(double distance);
+  void SetDensityVolumeStrength(double strength);
   void SetDensityVolumeSplat(int mode);
   void SetDensityVolumeRetrieval(int mode);
   void SetDensityVolumeGeneration(int mode);

@@ -329,7 +329,8 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
                          "uniform mat4 prViewToVolume;\n"
                          "uniform mat3 prViewToWorld;\n"
                          "uniform vec3 prFetchStep;\n"
-                         "uniform float prFetchDistance;\n";
+                         "uniform float prFetchDistance;\n"
+                         "uniform float prStrength;\n";
   if (this->RetrievalMode == PER_FRAGMENT)
   {
     vtkParticleShaders::ReplaceHook(
@@ -339,6 +340,7 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
       "vec3 prFetchVolume = (prViewToVolume *\n"
       "    vec4(vertexVC.xyz + prFetchDistance * normalVCVSOutput, 1.0)).xyz;\n"
       "  prAmbientOcclusion = 1.0 - texture(prDensityVolume, prFetchVolume).r;\n"
+      "  prAmbientOcclusion = clamp(1.0 - prStrength * (1.0 - prAmbientOcclusion), 0.0, 1.0);\n"
       "  //PR::AmbientOcclusion::Impl");
     return true;
   }
@@ -370,6 +372,7 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
     "vec3 prNormalWC = prViewToWorld * normalVCVSOutput;\n"
     "  vec3 prSide = mix(prAOMinusVSOutput, prAOPlusVSOutput, step(0.0, prNormalWC));\n"
     "  prAmbientOcclusion = dot(prNormalWC * prNormalWC, prSide);\n"
+    "  prAmbientOcclusion = clamp(1.0 - prStrength * (1.0 - prAmbientOcclusion), 0.0, 1.0);\n"
     "  //PR::AmbientOcclusion::Impl");
   return true;
 }
@@ -426,6 +429,7 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
   program->SetUniformi("prDensityVolume", internals.Texture->GetTextureUnit());
   program->SetUniformf("prFetchDistance",
     static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
+  program->SetUniformf("prStrength", static_cast<float>(this->Strength));
   return true;
 }
 
@@ -448,5 +452,6 @@ void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RetrievalMode: "
      << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
   os << indent << "FetchDistance: " << this->FetchDistance << "\n";
+  os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "NumberOfVolumeBuilds: " << this->NumberOfVolumeBuilds << "\n";
 }

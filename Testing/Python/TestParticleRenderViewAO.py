@@ -37,6 +37,11 @@ display = pr.show_particles(atoms, view)
 pr.set_camera(view, position=(84.0, -52.0, 62.0), focal_point=(15.1, 15.1, 13.5))
 suffix = "" if from_file else "_synthetic"
 name = "TestParticleRenderViewAO" + suffix
+if view.AmbientOcclusionStrength != 2.0:
+    print("FAIL: the default Ambient Occlusion Strength is %s, not 2" % view.AmbientOcclusionStrength)
+    ok = False
+# the baseline is of the paper's strength (1); the default strength 2 is checked against it below
+view.AmbientOcclusionStrength = 1.0
 
 
 
@@ -61,6 +66,17 @@ def full_test():
 
     a = rgb(plain).sum(axis=1)
     b = rgb(occluded).sum(axis=1)
+    # strength 2 (the default): twice the darkening (less where 1 - 2 D would go below 0)
+    view.AmbientOcclusionStrength = 2.0
+    doubled = rgb(pr.capture(view, os.path.join(args.temp_dir,
+                                                "TestParticleRenderViewAO_strength2.png"))).sum(axis=1)
+    view.AmbientOcclusionStrength = 1.0
+    shaded = a > 0
+    ratio = float((a - doubled)[shaded].sum()) / max(1.0, float((a - b)[shaded].sum()))
+    print("strength 2 darkens %.2f times as much as strength 1" % ratio)
+    if not 1.7 <= ratio <= 2.05:
+        print("FAIL: strength 2 should about double the darkening")
+        ok = False
     darker = int((b < a - 3).sum())
     brighter = int((b > a + 3).sum())
     print("AO: %d pixels darker, %d brighter" % (darker, brighter))
