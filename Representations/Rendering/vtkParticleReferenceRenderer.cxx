@@ -1179,7 +1179,9 @@ bool vtkParticleReferenceRenderer::Render()
     densityModel = transparentMapper->GetDensityModel();
     hollowFraction = transparentMapper->GetHollowFraction();
     volumeMix = transparentMapper->GetVolumeMix();
-    maximumPathIntegral = NumericalMaximumPathIntegralImpl(densityModel, hollowFraction);
+    // COLUMN_OPACITY: Theta_i is the opacity of a column of L particles, i.e. I_max x L
+    maximumPathIntegral = NumericalMaximumPathIntegralImpl(densityModel, hollowFraction) *
+      transparentMapper->GetEffectiveColumnLayers();
     if (given)
     {
       opacityArray = this->ParticleOpacities; // nullptr: Theta_a = 1

@@ -70,6 +70,8 @@
  * the emission-absorption model of that class (Staib et al. 2015, Sec. 3.1 and 4) exactly, in
  * double, and composites every particle a pixel ray meets:
  * - Theta_i = Theta_a (the mapper's GetParticleOpacities()) * property Opacity * scalar alpha.
+ *   With the mapper's COLUMN_OPACITY, I_max below is multiplied by its
+ *   GetEffectiveColumnLayers() (the opacity of a column of that many particles).
  *   Particles with Theta_i <= 0 are not drawn. Particles with Theta_i >= 1 are opaque: their
  *   visible surface and colour are exactly those of the opaque mode; like the GPU's opaque pass
  *   (depth writes) they end every translucent segment at their hit and their colour replaces the

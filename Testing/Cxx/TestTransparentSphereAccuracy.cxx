@@ -2,10 +2,11 @@
 // in its transparent mode: every hit sphere per pixel, numerically integrated density, exact
 // front-to-back composite) on a real LAMMPS scene (two Lennard-Jones droplets and their vapour,
 // 11033 atoms, radius 0.45 x the smallest pair distance so that no spheres intersect), with the
-// opacity from the atoms' speed (the fastest ones fully opaque). Four scenes cover both density
+// opacity from the atoms' speed (the fastest ones fully opaque). Five scenes cover both density
 // models, solid and hollow, perspective and parallel projection, the headlight and a light kit,
 // dual depth peeling and VTK's order-independent pass, an opaque box cutting through the cloud
-// (the reference gets the GPU's opaque image as its opaque layer) and an actor opacity < 1.
+// (the reference gets the GPU's opaque image as its opaque layer), an actor opacity < 1, and
+// the opacity of a column of 6 particles (COLUMN_OPACITY).
 // Required: RGB error <= 2/255 on every pixel farther than 1.5 pixels from the silhouettes of
 // the opaque particles and the box's edges (translucent silhouettes are continuous and not
 // excluded); the float accumulation is free of NaN/Inf. The reference's radii, colours and
@@ -369,6 +370,15 @@ int TestTransparentSphereAccuracy(int argc, char* argv[])
       mapper->SetVolumeMix(0.7);
       actor->GetProperty()->SetOpacity(0.8);
       zoom(renderer, 1.6);
+    } });
+  // Theta_i as the opacity of a column of 6 particles (the ParaView default mode, with a set
+  // layer count so that the reference does not depend on the mapper's estimate)
+  scenes.push_back({ "e_constant_column", true, false,
+    [&](vtkRenderer* renderer, vtkActor*, vtkTransparentSphereMapper* mapper) {
+      mapper->SetDensityModelToConstant();
+      mapper->SetOpacityReference(vtkTransparentSphereMapper::COLUMN_OPACITY);
+      mapper->SetColumnLayers(6.0);
+      zoom(renderer, 2.0);
     } });
 
   bool ok = true;
