@@ -27,7 +27,7 @@ import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 
-CRITERIA = pr.Criteria(tolerance=2.0, max_share=1e-3, max_mean=0.5)
+CRITERIA = pr.SAME_PLATFORM  # tolerance 2/255, 0.1 % of the pixels, mean 0.5/255
 
 args = pr.parse_arguments()
 extra = argparse.ArgumentParser()

@@ -17,10 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
 
-# Criteria: the GPU's own image on the same platform (Mesa llvmpipe) matches the baseline to
-# rounding; at most 0.1 % of the pixels may differ by more than 2/255 and the mean by 0.5/255, so
-# a missing, extra, moved or recoloured sphere, or shading a tenth darker, is rejected.
-CRITERIA = pr.Criteria(tolerance=2.0, max_share=1e-3, max_mean=0.5)
+CRITERIA = pr.SAME_PLATFORM  # tolerance 2/255, 0.1 % of the pixels, mean 0.5/255
 
 args = pr.parse_arguments()
 pr.load_plugin(args)

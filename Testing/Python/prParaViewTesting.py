@@ -50,6 +50,13 @@ class Criteria:
         c.SetMaskRadius(self.mask_radius)
         return c
 
+# The criteria of the tests whose baseline is the GPU's own picture on the same platform (Mesa
+# llvmpipe): it matches to rounding, so at most 0.1 % of the pixels may differ by more than 2/255
+# and the mean by 0.5/255 -- a missing, extra, moved or recoloured sphere, or shading a tenth
+# darker, is rejected.
+SAME_PLATFORM = Criteria(tolerance=2.0, max_share=1e-3, max_mean=0.5)
+
+
 def parse_arguments():
     parser = argparse.ArgumentParser()
     parser.add_argument("--plugin", required=True)
