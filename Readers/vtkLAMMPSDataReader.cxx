@@ -1,5 +1,5 @@
 #include "vtkLAMMPSDataReader.h"
-#include "vtkLAMMPSInternals.h"
+#include "vtkParticleReaderInternals.h"
 
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -16,7 +16,7 @@
 
 vtkStandardNewMacro(vtkLAMMPSDataReader);
 
-using namespace prLAMMPS;
+using namespace prReader;
 
 namespace
 {
@@ -510,7 +510,6 @@ int vtkLAMMPSDataReader::RequestData(
     output->GetPointData()->AddArray(place(item.second));
   }
   output->SetVerts(VertexCells(n));
-  box.Periodicity = "";
   AddBoxFieldData(output->GetFieldData(), box, timestep);
   outline->ShallowCopy(BoxOutline(box));
   AddBoxFieldData(outline->GetFieldData(), box, timestep);

@@ -1,5 +1,5 @@
 #include "vtkLAMMPSDumpReader.h"
-#include "vtkLAMMPSInternals.h"
+#include "vtkParticleReaderInternals.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -40,7 +40,7 @@ vtkStandardNewMacro(vtkLAMMPSDumpReader);
 
 namespace
 {
-using namespace prLAMMPS;
+using namespace prReader;
 
 
 struct Snapshot
@@ -779,13 +779,6 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
     return false;
   }
   return true;
-}
-
-// Size and modification time of a file: the index is rebuilt when either changes.
-long long FileStamp(const std::string& name)
-{
-  return static_cast<long long>(vtksys::SystemTools::FileLength(name)) * 1000003LL +
-    static_cast<long long>(vtksys::SystemTools::ModifiedTime(name));
 }
 }
 

@@ -1,5 +1,5 @@
 #include "vtkMMPLDReader.h"
-#include "vtkLAMMPSInternals.h" // vertex cells, outline
+#include "vtkParticleReaderInternals.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -38,34 +38,6 @@ int ColourSize(int type)
   return type >= 0 && type < 8 ? sizes[type] : -1;
 }
 
-// A binary file with 64-bit positions, read little-endian values.
-class BinaryFile
-{
-public:
-  ~BinaryFile()
-  {
-    if (this->File)
-    {
-      std::fclose(this->File);
-    }
-  }
-  bool Open(const std::string& name)
-  {
-    this->File = std::fopen(name.c_str(), "rb");
-    return this->File != nullptr;
-  }
-  bool Seek(std::uint64_t at) { return fseeko(this->File, static_cast<off_t>(at), SEEK_SET) == 0; }
-  bool Read(void* data, size_t n) { return n == 0 || std::fread(data, 1, n, this->File) == n; }
-  template <typename T>
-  bool Get(T& value)
-  {
-    return this->Read(&value, sizeof(T)); // MMPLD is little-endian, like every platform VTK runs on
-  }
-
-private:
-  std::FILE* File = nullptr;
-};
-
 // One particle list of a frame.
 struct List
 {
@@ -82,7 +54,7 @@ struct List
 // Read the list headers of the frame [begin, end) and skip their data; the frame's timestamp
 // (version >= 102, unless timestamp is false). Returns the bytes the frame's structure takes, or
 // 0 (and why) when it does not fit in the frame.
-std::uint64_t ScanFrame(BinaryFile& file, std::uint64_t begin, std::uint64_t end, int version,
+std::uint64_t ScanFrame(prReader::InputFile& file, std::uint64_t begin, std::uint64_t end, int version,
   bool timestamp, float& time, std::vector<List>& lists, std::string& why)
 {
   lists.clear();
@@ -119,7 +91,7 @@ std::uint64_t ScanFrame(BinaryFile& file, std::uint64_t begin, std::uint64_t end
   {
     List list;
     std::uint8_t types[2];
-    if (!need(2) || !file.Read(types, 2))
+    if (!need(2) || !file.ReadAll(types, 2))
     {
       return 0;
     }
@@ -143,14 +115,14 @@ std::uint64_t ScanFrame(BinaryFile& file, std::uint64_t begin, std::uint64_t end
     }
     if (list.ColourType == 0)
     {
-      if (!need(4) || !file.Read(list.Colour, 4))
+      if (!need(4) || !file.ReadAll(list.Colour, 4))
       {
         return 0;
       }
     }
     else if (list.ColourType == 3 || list.ColourType == 7)
     {
-      if (!need(8) || !file.Read(list.IntensityRange, 8))
+      if (!need(8) || !file.ReadAll(list.IntensityRange, 8))
       {
         return 0;
       }
@@ -162,7 +134,7 @@ std::uint64_t ScanFrame(BinaryFile& file, std::uint64_t begin, std::uint64_t end
     if (version >= 103)
     {
       float box[6];
-      if (!need(24) || !file.Read(box, 24))
+      if (!need(24) || !file.ReadAll(box, 24))
       {
         return 0;
       }
@@ -204,7 +176,7 @@ std::uint64_t ScanFrame(BinaryFile& file, std::uint64_t begin, std::uint64_t end
 }
 
 // Scan a frame, recognising the version 1.3 frames MegaMol wrote without a timestamp.
-bool ScanFrameAnyway(BinaryFile& file, std::uint64_t begin, std::uint64_t end, int version,
+bool ScanFrameAnyway(prReader::InputFile& file, std::uint64_t begin, std::uint64_t end, int version,
   float& time, std::vector<List>& lists, std::string& why)
 {
   std::string first;
@@ -246,9 +218,9 @@ vtkMMPLDReader::~vtkMMPLDReader() = default;
 //------------------------------------------------------------------------------
 int vtkMMPLDReader::CanReadFile(const char* fileName)
 {
-  BinaryFile file;
+  prReader::InputFile file;
   unsigned char magic[6];
-  return fileName && file.Open(fileName) && file.Read(magic, 6) &&
+  return fileName && file.Open(fileName) && file.ReadAll(magic, 6) &&
       std::memcmp(magic, Magic, 6) == 0
     ? 1
     : 0;
@@ -266,16 +238,14 @@ int vtkMMPLDReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   const std::string& name = this->FileName;
-  const long long stamp =
-    static_cast<long long>(vtksys::SystemTools::FileLength(name)) * 1000003LL +
-    static_cast<long long>(vtksys::SystemTools::ModifiedTime(name));
+  const long long stamp = prReader::FileStamp(name);
   if (name != this->IndexedFile || stamp != this->IndexedStamp)
   {
     this->Frames.clear();
     this->Version = 0;
     this->NumberOfFrames = 0;
     this->IndexedFile.clear();
-    BinaryFile file;
+    prReader::InputFile file;
     if (name.empty() || !file.Open(name))
     {
       vtkErrorMacro(<< (name.empty() ? std::string("No file name.") : name + ": cannot open the file"));
@@ -285,9 +255,9 @@ int vtkMMPLDReader::RequestInformation(
     unsigned char magic[6];
     std::uint16_t version = 0;
     std::uint32_t frames = 0;
-    if (size < HeaderSize || !file.Read(magic, 6) || std::memcmp(magic, Magic, 6) != 0 ||
-      !file.Get(version) || !file.Get(frames) || !file.Read(this->BoundingBox, 24) ||
-      !file.Read(this->ClipBox, 24))
+    if (size < HeaderSize || !file.ReadAll(magic, 6) || std::memcmp(magic, Magic, 6) != 0 ||
+      !file.Get(version) || !file.Get(frames) || !file.ReadAll(this->BoundingBox, 24) ||
+      !file.ReadAll(this->ClipBox, 24))
     {
       vtkErrorMacro(<< name << ": not an MMPLD file (no 'MMPLD' header of 60 bytes)");
       return 0;
@@ -317,7 +287,7 @@ int vtkMMPLDReader::RequestInformation(
       return 0;
     }
     std::vector<std::uint64_t> table(static_cast<size_t>(frames) + 1);
-    if (!file.Read(table.data(), 8 * table.size()))
+    if (!file.ReadAll(table.data(), 8 * table.size()))
     {
       vtkErrorMacro(<< name << ": cannot read the frame table");
       return 0;
@@ -414,7 +384,7 @@ int vtkMMPLDReader::RequestData(
       vtkDataObject::DATA_TIME_STEP(), this->TimeValues[index]);
   }
   const Frame& frame = this->Frames[index];
-  BinaryFile file;
+  prReader::InputFile file;
   std::vector<List> lists;
   float time;
   std::string why;
@@ -468,7 +438,7 @@ int vtkMMPLDReader::RequestData(
       continue;
     }
     raw.resize(static_cast<size_t>(l.Count) * l.Stride);
-    if (!file.Seek(l.Data) || !file.Read(raw.data(), raw.size()))
+    if (!file.Seek(l.Data) || !file.ReadAll(raw.data(), raw.size()))
     {
       vtkErrorMacro(<< this->FileName << ": cannot read the particles of frame " << index
                     << ", list " << li << " (byte " << l.Data << ")");
@@ -583,7 +553,7 @@ int vtkMMPLDReader::RequestData(
   {
     output->GetPointData()->AddArray(intensity);
   }
-  output->SetVerts(prLAMMPS::VertexCells(n));
+  output->SetVerts(prReader::VertexCells(n));
   vtkFieldData* fd = output->GetFieldData();
   vtkNew<vtkFloatArray> bbox;
   bbox->SetName("BoundingBox");
@@ -597,13 +567,13 @@ int vtkMMPLDReader::RequestData(
   fd->AddArray(bbox);
   fd->AddArray(clip);
   fd->AddArray(intensityRanges);
-  prLAMMPS::Box box;
+  prReader::Box box;
   for (int k = 0; k < 3; ++k)
   {
     box.Lo[k] = this->BoundingBox[k];
     box.Hi[k] = this->BoundingBox[k + 3];
   }
-  outline->ShallowCopy(prLAMMPS::BoxOutline(box));
+  outline->ShallowCopy(prReader::BoxOutline(box));
   return 1;
 }
 

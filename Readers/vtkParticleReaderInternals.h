@@ -1,8 +1,9 @@
-// Private helpers of ParticleRendering's LAMMPS readers (vtkLAMMPSDumpReader,
-// vtkLAMMPSDataReader): files read through zlib with 64-bit positions, lines with their numbers,
-// exact number parsing, the simulation box and its outline and field data.
-#ifndef vtkLAMMPSInternals_h
-#define vtkLAMMPSInternals_h
+// Private helpers of ParticleRendering's readers (vtkLAMMPSDumpReader, vtkLAMMPSDataReader,
+// vtkMMPLDReader): files read through zlib with 64-bit positions, lines with their numbers, exact
+// number parsing, the file stamp that invalidates an index, the simulation box and its outline
+// and field data, vertex cells, permutation of arrays.
+#ifndef vtkParticleReaderInternals_h
+#define vtkParticleReaderInternals_h
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -17,6 +18,7 @@
 #include "vtkTypeInt64Array.h"
 
 #include "vtk_zlib.h"
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <charconv>
@@ -31,7 +33,7 @@
 #include <sys/mman.h> // madvise
 #endif
 
-namespace prLAMMPS
+namespace prReader
 {
 //------------------------------------------------------------------------------
 // A file read sequentially with 64-bit positions: plain or gzip-compressed (zlib reads plain
@@ -91,6 +93,18 @@ public:
     }
     this->Position = position;
     return true;
+  }
+  // Exactly n bytes, or false.
+  bool ReadAll(void* data, size_t n)
+  {
+    return n == 0 || this->Read(static_cast<char*>(data), n) == static_cast<long long>(n);
+  }
+  // One value in the file's byte order (the formats read here are little-endian, like every
+  // platform VTK runs on).
+  template <typename T>
+  bool Get(T& value)
+  {
+    return this->ReadAll(&value, sizeof(T));
   }
   bool Compressed() const { return this->File && gzdirect(this->File) == 0; }
   std::uint64_t Tell() const { return this->Position; }
@@ -336,6 +350,14 @@ struct Box
   bool Triclinic = false;
   double Length(int k) const { return this->Hi[k] - this->Lo[k]; }
 };
+
+//------------------------------------------------------------------------------
+// Size and modification time of a file: an index built from it is rebuilt when either changes.
+inline long long FileStamp(const std::string& name)
+{
+  return static_cast<long long>(vtksys::SystemTools::FileLength(name)) * 1000003LL +
+    static_cast<long long>(vtksys::SystemTools::ModifiedTime(name));
+}
 
 //------------------------------------------------------------------------------
 // The box as 12 line cells (the parallelepiped spanned by the box vectors).
