@@ -20,6 +20,8 @@ layout(std430, binding = 2) buffer prCounts { uint counts[]; };
 layout(std430, binding = 0) readonly buffer prPositions { float positions[]; };
 layout(std430, binding = 1) readonly buffer prRadii { float radii[]; };
 
+// this dispatch splats particles first ... count - 1 (blocks, for progress)
+uniform uint first;
 uniform uint count;
 uniform uint positionStride;
 // voxel coordinate of a buffer position p (affine, composed in double on the CPU)
@@ -43,7 +45,7 @@ void prAddDensity(ivec3 voxel, float amount)
 
 void main()
 {
-  uint i = PR_INVOCATION_INDEX;
+  uint i = first + PR_INVOCATION_INDEX;
   if (i >= count)
   {
     return;

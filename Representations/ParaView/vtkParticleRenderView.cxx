@@ -1,13 +1,18 @@
 #include "vtkParticleRenderView.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCameraPass.h"
+#include "vtkCommand.h"
 #include "vtkDensityVolumeAOPass.h"
 #include "vtkParticleDensityVolume.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
+#include "vtkPVProgressHandler.h"
+#include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkParticlePassChain.h"
+#include "vtkProcessModule.h"
 #include "vtkRenderer.h"
 
 vtkStandardNewMacro(vtkParticleRenderView);
@@ -20,6 +25,34 @@ vtkParticleRenderView::vtkParticleRenderView()
   // The synchronized renderer keeps this pass in its render-pass slot through every rebuild of
   // the renderer's pass tree (see the class documentation).
   this->SynchronizedRenderers->SetRenderPass(this->ParticlePassChain);
+
+  // ParaView's progress bar listens to algorithms registered with the session's progress
+  // handler; a render pass is not one, so its long work (the AO volume build) is reported
+  // through a stand-in algorithm registered here.
+  this->DensityVolumeAOPass->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
+  vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
+  vtkPVSession* session =
+    processModule ? vtkPVSession::SafeDownCast(processModule->GetActiveSession()) : nullptr;
+  if (session && session->GetProgressHandler())
+  {
+    session->GetProgressHandler()->RegisterProgressEvent(this->PassProgress, 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::ForwardPassProgress(vtkObject* caller, unsigned long, void* callData)
+{
+  auto* pass = vtkDensityVolumeAOPass::SafeDownCast(caller);
+  this->PassProgress->SetProgressText(pass ? pass->GetProgressText() : nullptr);
+  this->PassProgress->UpdateProgress(*static_cast<double*>(callData));
+  this->PassProgress->SetProgressText(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkAlgorithm* vtkParticleRenderView::GetPassProgressReporter()
+{
+  return this->PassProgress;
 }
 
 //------------------------------------------------------------------------------

@@ -52,6 +52,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 
+class vtkAlgorithm;
 class vtkDensityVolumeAOPass;
 class vtkParticlePassChain;
 
@@ -106,6 +107,14 @@ public:
   vtkDensityVolumeAOPass* GetDensityVolumeAOPass();
   ///@}
 
+  /**
+   * The algorithm whose vtkCommand::ProgressEvent carries the progress of the view's passes (a
+   * long AO volume build, vtkDensityVolumeAOPass::ProgressThreshold), with the pass's progress
+   * text. It is registered with the session's progress handler, so ParaView's progress bar shows
+   * it; the representations report their mappers' work themselves.
+   */
+  vtkAlgorithm* GetPassProgressReporter();
+
 protected:
   vtkParticleRenderView();
   ~vtkParticleRenderView() override;
@@ -117,10 +126,14 @@ protected:
 
   vtkNew<vtkParticlePassChain> ParticlePassChain;
   vtkNew<vtkDensityVolumeAOPass> DensityVolumeAOPass;
+  vtkNew<vtkAlgorithm> PassProgress;
 
 private:
   vtkParticleRenderView(const vtkParticleRenderView&) = delete;
   void operator=(const vtkParticleRenderView&) = delete;
+
+  // a pass's ProgressEvent, re-invoked by PassProgress
+  void ForwardPassProgress(vtkObject* caller, unsigned long, void* callData);
 };
 
 #endif

@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkCommunicator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
@@ -41,6 +42,23 @@ vtkParticleRepresentation::vtkParticleRepresentation()
   this->Mapper->SetUseLookupTableScalarRange(1);
   this->Mapper->SetScalarVisibility(0);
   this->ProcessedData = MakeParticles(nullptr, false);
+  // ParaView listens to the progress of the representation (an algorithm registered with the
+  // session's progress handler), not to its mapper's: pass the mapper's long work on.
+  this->Mapper->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkParticleRepresentation::ForwardMapperProgress);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::ForwardMapperProgress(vtkObject*, unsigned long, void* callData)
+{
+  const char* text = this->Mapper->GetProgressText();
+  if (!text || !*text)
+  {
+    return; // the mapper's own pipeline update, not rendering work
+  }
+  this->SetProgressText(text);
+  this->UpdateProgress(*static_cast<double*>(callData));
+  this->SetProgressText(nullptr);
 }
 
 //------------------------------------------------------------------------------

@@ -227,6 +227,9 @@ protected:
 private:
   vtkParticleRepresentation(const vtkParticleRepresentation&) = delete;
   void operator=(const vtkParticleRepresentation&) = delete;
+
+  // the mapper's progress (upload, depth sort) as this representation's, for ParaView
+  void ForwardMapperProgress(vtkObject*, unsigned long, void* callData);
 };
 
 #endif

@@ -1,5 +1,6 @@
 #include "vtkParticleDensityVolume.h"
 
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
@@ -16,6 +17,32 @@
 #include <cmath>
 
 vtkStandardNewMacro(vtkParticleDensityVolume);
+
+namespace
+{
+// Particles are splatted in this many blocks (fewer for small counts, at least 65536 particles
+// per block), each followed by a ProgressEvent when someone listens.
+constexpr vtkIdType ProgressBlocks = 16;
+constexpr vtkIdType MinimumBlockSize = 65536;
+
+vtkIdType BlockSize(vtkObject* self, vtkIdType n)
+{
+  if (!self->HasObserver(vtkCommand::ProgressEvent))
+  {
+    return std::max<vtkIdType>(n, 1);
+  }
+  return std::max(MinimumBlockSize, (n + ProgressBlocks - 1) / ProgressBlocks);
+}
+
+void ReportProgress(vtkObject* self, vtkIdType done, vtkIdType n)
+{
+  if (self->HasObserver(vtkCommand::ProgressEvent))
+  {
+    double fraction = n > 0 ? static_cast<double>(done) / static_cast<double>(n) : 1.0;
+    self->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  }
+}
+}
 
 namespace
 {
@@ -143,7 +170,7 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
 
   // each thread into its own partial volume (no races), then a sum over the voxels
   vtkSMPThreadLocal<std::vector<float>> partial;
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+  auto splat = [&](vtkIdType begin, vtkIdType end) {
     std::vector<float>& local = partial.Local();
     if (local.empty())
     {
@@ -201,7 +228,14 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
         local[index] += static_cast<float>(w);
       }
     }
-  });
+  };
+  const vtkIdType block = BlockSize(this, n);
+  ReportProgress(this, 0, n);
+  for (vtkIdType first = 0; first < n; first += block)
+  {
+    vtkSMPTools::For(first, std::min(n, first + block), splat);
+    ReportProgress(this, std::min(n, first + block), n);
+  }
   this->Volume.assign(voxels, 0.0f);
   float* out = this->Volume.data();
   std::vector<const float*> parts;
@@ -292,7 +326,6 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   }
   vtkParticleComputeProgram* splat = internals.Splat;
   splat->Use();
-  splat->SetUniformui("count", static_cast<unsigned int>(count));
   splat->SetUniformui("positionStride", positionStride);
   splat->SetUniformMatrix4x4("toVoxel", toVoxel);
   splat->SetUniformf("radiusScale", static_cast<float>(radiusScale));
@@ -304,9 +337,15 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positionBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, radiusBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, internals.Counts);
-  if (count > 0)
+  const vtkIdType block = BlockSize(this, count);
+  ReportProgress(this, 0, count);
+  for (vtkIdType first = 0; first < count; first += block)
   {
-    splat->Dispatch(static_cast<unsigned int>((count + 255) / 256));
+    const vtkIdType blockCount = std::min(count - first, block);
+    splat->SetUniformui("first", static_cast<unsigned int>(first));
+    splat->SetUniformui("count", static_cast<unsigned int>(first + blockCount));
+    splat->Dispatch(static_cast<unsigned int>((blockCount + 255) / 256));
+    ReportProgress(this, first + blockCount, count);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 

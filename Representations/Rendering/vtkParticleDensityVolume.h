@@ -44,6 +44,10 @@
  *   OpenGL 4.3.
  * Both give the same volume up to the fixed-point rounding (tested).
  *
+ * Progress: with observers of vtkCommand::ProgressEvent, both splat the particles in up to 16
+ * blocks (at least 65536 particles each) and invoke the event with the fraction of particles
+ * done (a double; 0 first, 1 last). On the GPU a block counts when its dispatch is issued.
+ *
  * @sa vtkParticleSphereMapper
  */
 #ifndef vtkParticleDensityVolume_h

@@ -1,5 +1,6 @@
 #include "vtkParticleDepthSort.h"
 
+#include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderTimer.h"
@@ -359,6 +360,14 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
     }
   }
   this->LastNumberOfPasses = static_cast<int>(shifts.size());
+  const bool reportProgress = this->HasObserver(vtkCommand::ProgressEvent) != 0;
+  auto progress = [&](double fraction) {
+    if (reportProgress)
+    {
+      this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+    }
+  };
+  progress(0.0);
 
   if (shifts.empty())
   {
@@ -408,7 +417,12 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
       scatter->SetUniformui("prCountsOffset", countsOffset);
       ok = vtkInternals::Run(scatter, tiles) && ok;
       readB ^= 1u;
+      progress(static_cast<double>(pass + 1) / static_cast<double>(shifts.size()));
     }
+  }
+  if (shifts.empty())
+  {
+    progress(1.0);
   }
 
   // the results can be drawn (indices, attributes), read by shaders and read back

@@ -115,6 +115,12 @@ public:
   /**
    * Sort the first count keys of the key buffer ascending (stable). False (vtkErrorMacro) when
    * count exceeds the capacity or Reserve() was not called. count 0 does nothing.
+   *
+   * Progress: when the sort has observers of vtkCommand::ProgressEvent, it invokes the event
+   * (call data: a double, the fraction of the radix passes issued) with 0 before the first pass
+   * and after each pass, the last with 1. A software rasteriser such as llvmpipe runs each
+   * dispatch when it is issued, so there the fraction is the work done; on a GPU the commands
+   * run asynchronously and the sort is over in milliseconds, long before anyone sees it.
    */
   bool Sort(vtkIdType count);
 

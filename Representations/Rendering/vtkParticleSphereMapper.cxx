@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkParticleSphereMapper);
 
@@ -103,6 +104,10 @@ vtkParticleSphereMapper::~vtkParticleSphereMapper()
 //------------------------------------------------------------------------------
 namespace
 {
+// progress of an upload after validation and after colour mapping (see BuildBufferObjects)
+constexpr double UploadProgressValidated = 0.15;
+constexpr double UploadProgressColoured = 0.3;
+
 struct ParticleSummary
 {
   double Bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
@@ -662,10 +667,30 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
 {
   vtkInternals& internals = *this->Internals;
   const double start = vtkTimerLog::GetUniversalTime();
+  // A long upload reports its stages as progress (ProgressThreshold): validation, colour mapping
+  // and the buffer build (0.15, 0.3, 1; the build is most of an upload of 10^7 particles:
+  // 1.6 s on llvmpipe).
+  const vtkIdType inputPoints =
+    this->GetInput() && this->GetInput()->GetPoints() ? this->GetInput()->GetNumberOfPoints() : 0;
+  const bool reportProgress = inputPoints >= this->ProgressThreshold;
+  if (reportProgress)
+  {
+    const std::string text = "Uploading " + std::to_string(inputPoints) + " particles";
+    this->SetProgressText(text.c_str());
+    this->UpdateProgress(0.0);
+  }
   const vtkIdType numPts = this->PrepareParticles();
+  if (reportProgress)
+  {
+    this->UpdateProgress(UploadProgressValidated);
+  }
 
   // Scalars through the lookup table, as every vtkMapper does (sets this->Colors).
   this->MapScalars(1.0);
+  if (reportProgress)
+  {
+    this->UpdateProgress(UploadProgressColoured);
+  }
   vtkUnsignedCharArray* colors = this->Colors;
   if (colors && colors->GetNumberOfTuples() != numPts)
   {
@@ -685,6 +710,11 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   this->VBOs->CacheDataArray("scalarColor", colors, ren, VTK_UNSIGNED_CHAR);
   this->CacheParticleAttributes(ren, act);
   this->VBOs->BuildAllVBOs(ren);
+  if (reportProgress)
+  {
+    this->UpdateProgress(1.0);
+    this->SetProgressText(nullptr);
+  }
 
   posVBO = this->VBOs->GetVBO("vertexMC");
   this->VBOShiftScale->Identity();

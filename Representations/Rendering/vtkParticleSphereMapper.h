@@ -128,6 +128,21 @@ public:
   double GetLastDrawGPUSeconds();
   ///@}
 
+  ///@{
+  /**
+   * Long work reports its progress as a vtkAlgorithm does: vtkCommand::ProgressEvent with the
+   * fraction done as call data (UpdateProgress()), GetProgressText() naming the work while it
+   * runs. In ParaView the particle representation passes it on to the progress bar. Work on at
+   * least ProgressThreshold particles reports (default 2^20, about a second of depth sorting on a
+   * software rasteriser); 0 always reports, VTK_ID_MAX never. Reported today: the upload of the
+   * particles (validation, colour mapping, buffers) and the depth sort of
+   * vtkTransparentSphereMapper (per radix pass). A draw call is one GPU command whose progress
+   * cannot be observed; it is not reported.
+   */
+  vtkSetClampMacro(ProgressThreshold, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(ProgressThreshold, vtkIdType);
+  ///@}
+
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   /**
@@ -237,6 +252,7 @@ protected:
   vtkMTimeType DataMTimeBeforeScale = 0;
   vtkIdType NumberOfSkippedParticles = 0;
   bool CollectTimings = false;
+  vtkIdType ProgressThreshold = vtkIdType(1) << 20;
   vtkIdType NumberOfUploads = 0;
   double LastUploadSeconds = 0.0;
 

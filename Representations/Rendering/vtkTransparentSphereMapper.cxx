@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkFloatArray.h"
@@ -38,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkTransparentSphereMapper);
@@ -893,7 +895,21 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, 0);
   glUseProgram(0);
+  // a long sort reports its radix passes as this mapper's progress (ParaView's progress bar)
+  unsigned long progressTag = 0;
+  if (count >= this->ProgressThreshold)
+  {
+    const std::string text = "Sorting " + std::to_string(count) + " translucent particles";
+    this->SetProgressText(text.c_str());
+    progressTag = internals.Sort->AddObserver(vtkCommand::ProgressEvent, this,
+      &vtkTransparentSphereMapper::ForwardSortProgress);
+  }
   const bool sorted = internals.Sort->Sort(count);
+  if (progressTag)
+  {
+    internals.Sort->RemoveObserver(progressTag);
+    this->SetProgressText(nullptr);
+  }
   // the shader cache's notion of the bound program is stale after raw glUseProgram calls
   ctx->GetShaderCache()->ReleaseCurrentShader();
   if (this->CollectTimings)
@@ -908,6 +924,12 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
   internals.SortState = state;
   ++this->NumberOfSorts;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::ForwardSortProgress(vtkObject*, unsigned long, void* callData)
+{
+  this->UpdateProgress(*static_cast<double*>(callData));
 }
 
 //------------------------------------------------------------------------------

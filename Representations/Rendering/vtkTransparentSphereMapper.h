@@ -308,6 +308,9 @@ private:
   vtkTransparentSphereMapper(const vtkTransparentSphereMapper&) = delete;
   void operator=(const vtkTransparentSphereMapper&) = delete;
 
+  // the depth sort's ProgressEvent, passed on as this mapper's (ProgressThreshold)
+  void ForwardSortProgress(vtkObject*, unsigned long, void* callData);
+
   class vtkInternals;
   vtkInternals* Internals;
 };

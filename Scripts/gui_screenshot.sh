@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The README's GUI screenshot (Plugin/Documentation/paraview-first-minute.png): LAMMPS writes the
+# lj_droplets dump series, the ParaView GUI opens it as in the README's first minute
+# (Scripts/gui_screenshot.py, run with paraview --script), and the screen of a private Xvfb is
+# captured with xwd and converted by Scripts/xwd_to_png.py. ParaView runs with a private settings
+# directory whose only setting switches the welcome dialog off (it is modal and would block the
+# script). Needs xwd (apt-get install x11-apps) besides the project's set-up and build.
+# usage: Scripts/gui_screenshot.sh [OUTPUT.png]   (from anywhere, after Scripts/build.sh)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=${1:-$root/Plugin/Documentation/paraview-first-minute.png}
+work=$(mktemp -d)
+mkdir -p "$work/config/ParaView"
+printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' >"$work/config/ParaView/ParaView5.11.0.ini"
+(cd "$work" && env -u OMPI_COMM_WORLD_SIZE -u OMPI_COMM_WORLD_RANK \
+  lmp -in "$root/Testing/Data/Generators/in.lj_droplets" -var outdir "$work" -log none -screen none)
+
+Xvfb :77 -noreset -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb=$!
+paraview_pid=
+cleanup() {
+  [ -n "$paraview_pid" ] && kill "$paraview_pid" 2>/dev/null || true
+  kill "$xvfb" 2>/dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+sleep 2
+export DISPLAY=:77 XDG_CONFIG_HOME="$work/config"
+export PR_PLUGIN="$root/build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so"
+export PR_DUMPS="$work" PR_DONE="$work/done"
+paraview --script="$root/Scripts/gui_screenshot.py" >"$work/paraview.log" 2>&1 &
+paraview_pid=$!
+for _ in $(seq 1 300); do
+  [ -f "$PR_DONE" ] && break
+  sleep 1
+done
+if [ "$(cat "$PR_DONE" 2>/dev/null)" != rendered ]; then
+  echo "the GUI script did not finish:" >&2
+  cat "$PR_DONE" "$work/paraview.log" >&2 2>/dev/null || true
+  exit 1
+fi
+sleep 15 # let the GUI settle (the last render, the panels)
+xwd -root -silent | /usr/bin/python3 "$root/Scripts/xwd_to_png.py" "$out"
+echo "wrote $out"
