@@ -8,11 +8,14 @@
 // surface; with the eye inside a sphere (or the near plane cutting it) it is the
 // inner side of the back surface, shaded with the normal facing the viewer.
 //
-// Hooks (//PR:: tags) for ParticleRendering passes and subclasses:
-//   //PR::Sphere::Dec            declarations (uniforms, samplers, functions)
-//   //PR::AmbientOcclusion::Impl  set prAmbientOcclusion (visibility in [0,1],
-//                                 multiplies the lit colour) and prAmbientLight
-//                                 (radiance added after occlusion)
+// Hooks (//PR:: tags) for ParticleRendering passes and subclasses, all present
+// from the start (the contract, with the names in scope: vtkParticleShaderHooks.h):
+//   //PR::Sphere::Dec             declarations (uniforms, samplers, functions)
+//   //PR::Surface::Impl           after the intersection: may change prHit, prT0, prT1
+//   //PR::Coverage::Impl          before a miss is discarded (prHit)
+//   //PR::Surface::Normal         after the visible point: may change the normal
+//   //PR::AmbientOcclusion::Impl  multiply prAmbientOcclusion (visibility in [0,1])
+//                                 and add to prAmbientLight (radiance after occlusion)
 //   //PR::Shading::Impl           replace the opaque result gl_FragData[0]
 //                                 (e.g. an emission-absorption model); the ray
 //                                 (prRayS, prRayD), both hits (prT0, prT1), the
@@ -55,7 +58,10 @@ void main()
   vec3 prRayD = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(rayVCVSOutput);
   float prT0;
   float prT1;
-  if (!prIntersectSphere(prRayS, prRayD, radiusVC, prT0, prT1))
+  bool prHit = prIntersectSphere(prRayS, prRayD, radiusVC, prT0, prT1);
+  //PR::Surface::Impl
+  //PR::Coverage::Impl
+  if (!prHit)
   {
     discard;
   }
@@ -63,21 +69,22 @@ void main()
   // small rest of the point separately (exact ordering with the camera far away)
   vec3 hitRel = prRayS + prT0 * prRayD;
   float depth;
-  bool inside = false;
+  bool prInside = false;
   if (!prDepthOfSplitPointVC(clipZWOfTranslation, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
   {
     hitRel = prRayS + prT1 * prRayD;
-    inside = true;
+    prInside = true;
     if (!prDepthOfSplitPointVC(clipZWOfTranslation, centerOffsetVCVSOutput + hitRel, VCDCMatrix, depth))
     {
       discard;
     }
   }
-  // (vtkTransparentSphereMapper removes this line from its translucent variant, which must not
-  // write depths so that its early-termination mask is tested before shading)
+#ifndef PR_NO_DEPTH_WRITE
   gl_FragDepth = depth;
+#endif
   vec4 vertexVC = vec4(centerVC + hitRel, 1.0);
-  vec3 normalVCVSOutput = (inside ? -hitRel : hitRel) / radiusVC;
+  vec3 normalVCVSOutput = (prInside ? -hitRel : hitRel) / radiusVC;
+  //PR::Surface::Normal
 
   //VTK::PositionVC::Impl
   //VTK::UniformFlow::Impl
@@ -87,6 +94,20 @@ void main()
   //VTK::ValuePass::Impl
   //VTK::Color::Impl
   //VTK::Normal::Impl
+  // lighting (the mapper fills //PR::Lighting::Impl): prSurfaceColor, unless the result is
+  // not a lit colour (e.g. normals for vtkLightingMapPass), written directly with prLit false
+  bool prLit = true;
+  vec3 prSurfaceColor = vec3(0.0);
+  //PR::Lighting::Impl
+  if (prLit)
+  {
+    float prAmbientOcclusion = 1.0;
+    vec3 prAmbientLight = vec3(0.0);
+    //PR::AmbientOcclusion::Impl
+    gl_FragData[0] = vec4(prAmbientOcclusion * prSurfaceColor + prAmbientLight, opacity);
+    //PR::Shading::Impl
+  }
+  // VTK's tag stays free for VTK passes and shader replacements, which act on the result
   //VTK::Light::Impl
   //VTK::TCoord::Impl
 

@@ -9,7 +9,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleDensityVolume.h"
-#include "vtkParticleShaders.h"
+#include "vtkParticleShaderHooks.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -35,6 +35,10 @@ vtkStandardNewMacro(vtkDensityVolumeAOPass);
 class vtkDensityVolumeAOPass::vtkInternals
 {
 public:
+  explicit vtkInternals(vtkDensityVolumeAOPass* self)
+    : Hooks(self)
+  {
+  }
   vtkNew<vtkParticleDensityVolume> Volume;
   vtkNew<vtkTextureObject> Texture;
   // what the volume was built from
@@ -43,6 +47,8 @@ public:
   bool Attempted = false; // a build was attempted for BuiltState
   // the renderer being drawn (between PreRender and PostRender)
   vtkRenderer* Renderer = nullptr;
+  // the shader hooks this pass fills (warns once per missing hook)
+  vtkParticleShaderHooks Hooks;
 
   // progress of the build under way (ProgressThreshold): its text, and which part of the whole
   // the volume's own progress (0..1) covers
@@ -89,7 +95,7 @@ private:
 
 //------------------------------------------------------------------------------
 vtkDensityVolumeAOPass::vtkDensityVolumeAOPass()
-  : Internals(new vtkInternals)
+  : Internals(new vtkInternals(this))
 {
   this->Internals->Volume->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkDensityVolumeAOPass::ForwardVolumeProgress);
@@ -404,30 +410,32 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
   {
     return true;
   }
-  const char* uniforms = "uniform sampler3D prDensityVolume;\n"
-                         "uniform mat4 prViewToVolume;\n"
-                         "uniform mat3 prViewToWorld;\n"
-                         "uniform vec3 prFetchStep;\n"
-                         "uniform float prFetchDistance;\n"
-                         "uniform float prStrength;\n";
+  vtkParticleShaderHooks& hooks = this->Internals->Hooks;
+  hooks.Begin(vertexShader, geometryShader, fragmentShader);
+  using Hooks = vtkParticleShaderHooks;
+  const std::string uniforms = "uniform sampler3D prDensityVolume;\n"
+                               "uniform mat4 prViewToVolume;\n"
+                               "uniform mat3 prViewToWorld;\n"
+                               "uniform vec3 prFetchStep;\n"
+                               "uniform float prFetchDistance;\n"
+                               "uniform float prStrength;";
   if (this->RetrievalMode == PER_FRAGMENT)
   {
-    vtkParticleShaders::ReplaceHook(
-      fragmentShader, "//PR::Sphere::Dec", std::string(uniforms) + "//PR::Sphere::Dec");
-    // Eq. 4: A = 1 - D(p + eps n), the density fetched with trilinear filtering
-    vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::AmbientOcclusion::Impl",
+    hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", uniforms);
+    // Eq. 4 with the strength s: A = 1 - s D(p + eps n), the density fetched with trilinear
+    // filtering; it multiplies what other AO sources found
+    hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",
       "vec3 prFetchVolume = (prViewToVolume *\n"
-      "    vec4(vertexVC.xyz + prFetchDistance * normalVCVSOutput, 1.0)).xyz;\n"
-      "  prAmbientOcclusion = 1.0 - texture(prDensityVolume, prFetchVolume).r;\n"
-      "  prAmbientOcclusion = clamp(1.0 - prStrength * (1.0 - prAmbientOcclusion), 0.0, 1.0);\n"
-      "  //PR::AmbientOcclusion::Impl");
+      "      vec4(vertexVC.xyz + prFetchDistance * normalVCVSOutput, 1.0)).xyz;\n"
+      "    prAmbientOcclusion *=\n"
+      "      clamp(1.0 - prStrength * texture(prDensityVolume, prFetchVolume).r, 0.0, 1.0);");
     return true;
   }
-  // per sphere: six fetches in the vertex stage (once per sphere), through the geometry stage
-  vtkParticleShaders::ReplaceHook(vertexShader, "//PR::Sphere::Dec",
-    std::string(uniforms) +
-      "flat out vec3 prAOPlusVSOutput;\nflat out vec3 prAOMinusVSOutput;\n//PR::Sphere::Dec");
-  vtkParticleShaders::ReplaceHook(vertexShader, "//PR::Sphere::Impl",
+  // per sphere: six fetches (1 - D) in the vertex stage, once per sphere, carried to the fragments
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", uniforms);
+  hooks.AddSphereVarying("vec3", "prAOPlus");
+  hooks.AddSphereVarying("vec3", "prAOMinus");
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
     "vec3 prCentreVolume = (prViewToVolume * vec4(centerVC, 1.0)).xyz;\n"
     "  for (int k = 0; k < 3; ++k)\n"
     "  {\n"
@@ -435,24 +443,13 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
     "    prStep[k] = prFetchStep[k];\n"
     "    prAOPlusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume + prStep).r;\n"
     "    prAOMinusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume - prStep).r;\n"
-    "  }\n"
-    "  //PR::Sphere::Impl");
-  vtkParticleShaders::ReplaceHook(geometryShader, "//PR::Sphere::Dec",
-    "flat in vec3 prAOPlusVSOutput[];\nflat in vec3 prAOMinusVSOutput[];\n"
-    "flat out vec3 prAOPlusGSOutput;\nflat out vec3 prAOMinusGSOutput;\n//PR::Sphere::Dec");
-  vtkParticleShaders::ReplaceHook(geometryShader, "//PR::Sphere::Impl",
-    "prAOPlusGSOutput = prAOPlusVSOutput[0];\n"
-    "    prAOMinusGSOutput = prAOMinusVSOutput[0];\n"
-    "    //PR::Sphere::Impl");
-  vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::Sphere::Dec",
-    std::string(uniforms) +
-      "flat in vec3 prAOPlusVSOutput;\nflat in vec3 prAOMinusVSOutput;\n//PR::Sphere::Dec");
-  vtkParticleShaders::ReplaceHook(fragmentShader, "//PR::AmbientOcclusion::Impl",
+    "  }");
+  hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", uniforms);
+  hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",
     "vec3 prNormalWC = prViewToWorld * normalVCVSOutput;\n"
-    "  vec3 prSide = mix(prAOMinusVSOutput, prAOPlusVSOutput, step(0.0, prNormalWC));\n"
-    "  prAmbientOcclusion = dot(prNormalWC * prNormalWC, prSide);\n"
-    "  prAmbientOcclusion = clamp(1.0 - prStrength * (1.0 - prAmbientOcclusion), 0.0, 1.0);\n"
-    "  //PR::AmbientOcclusion::Impl");
+    "    vec3 prSide = mix(prAOMinusVSOutput, prAOPlusVSOutput, step(0.0, prNormalWC));\n"
+    "    float prSphereAO = dot(prNormalWC * prNormalWC, prSide);\n"
+    "    prAmbientOcclusion *= clamp(1.0 - prStrength * (1.0 - prSphereAO), 0.0, 1.0);");
   return true;
 }
 

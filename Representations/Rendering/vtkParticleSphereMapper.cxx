@@ -531,9 +531,10 @@ void vtkParticleSphereMapper::ReplaceShaderLight(
   vtkInformation* info = actor->GetPropertyKeys();
   if (info && info->Has(vtkLightingMapPass::RENDER_NORMALS()))
   {
-    vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl",
+    vtkParticleShaders::ReplaceHook(fs, "//PR::Lighting::Impl",
       "  vec3 n = (normalVCVSOutput + 1.0) * 0.5;\n"
-      "  gl_FragData[0] = vec4(n.x, n.y, n.z, 1.0);");
+      "  gl_FragData[0] = vec4(n.x, n.y, n.z, 1.0);\n"
+      "  prLit = false;");
     shaders[vtkShader::Fragment]->SetSource(fs);
     return;
   }
@@ -556,7 +557,7 @@ void vtkParticleSphereMapper::ReplaceShaderLight(
   }
   if (complexity == 0)
   {
-    impl << "  vec3 prSurfaceColor = ambientColor + diffuseColor;\n";
+    impl << "  prSurfaceColor = ambientColor + diffuseColor;\n";
   }
   else
   {
@@ -584,17 +585,11 @@ void vtkParticleSphereMapper::ReplaceShaderLight(
              << ", specularPower, diffuse, specular);\n";
       }
     }
-    impl << "  vec3 prSurfaceColor = ambientColor + diffuse * diffuseColor + specular * "
+    impl << "  prSurfaceColor = ambientColor + diffuse * diffuseColor + specular * "
             "specularColor;\n";
   }
-  impl << "  float prAmbientOcclusion = 1.0;\n"
-          "  vec3 prAmbientLight = vec3(0.0);\n"
-          "  //PR::AmbientOcclusion::Impl\n"
-          "  gl_FragData[0] = vec4(prAmbientOcclusion * prSurfaceColor + prAmbientLight, "
-          "opacity);\n"
-          "  //PR::Shading::Impl\n"
-          "  //VTK::Light::Impl\n";
-  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", impl.str(), false);
+  // (the template applies ambient occlusion and writes gl_FragData[0] after this)
+  vtkParticleShaders::ReplaceHook(fs, "//PR::Lighting::Impl", impl.str());
   shaders[vtkShader::Fragment]->SetSource(fs);
 }
 

@@ -37,17 +37,16 @@
  * - radius <= 0, NaN or Inf, or a position with NaN/Inf: that particle is skipped;
  * - the fragment stage discards any NaN/Inf colour, so no NaN or Inf reaches the framebuffer.
  *
- * Hooks for render passes and subclasses (see the two shader templates): the vertex stage has
- * //PR::Sphere::Dec and //PR::Sphere::Impl (per-sphere work, e.g. per-sphere AO fetches); the
- * fragment stage has //PR::Sphere::Dec, //PR::AmbientOcclusion::Impl (set prAmbientOcclusion and
- * prAmbientLight) and //PR::Shading::Impl (replace the opaque result, e.g. with a transparent
- * emission-absorption model). vtkOpenGLRenderPass::PreReplaceShaderValues /
- * PostReplaceShaderValues see these tags like VTK's own.
+ * Hooks for render passes and subclasses: the three shader templates carry //PR:: hooks (per
+ * sphere in the vertex and geometry stages; surface, coverage, normal, ambient occlusion and
+ * shading in the fragment stage), all present before the mapper fills VTK's tags, so
+ * vtkOpenGLRenderPass::PreReplaceShaderValues and PostReplaceShaderValues both see them. The
+ * contract (hooks, names in scope, per-sphere varyings, warnings) is vtkParticleShaderHooks.
  *
  * Picking: the hardware selector's point and cell ids are the particle (point) index.
  * Clipping planes clip whole particles by their centre.
  *
- * @sa vtkOpenGLSphereMapper vtkParticleReferenceRenderer
+ * @sa vtkOpenGLSphereMapper vtkParticleReferenceRenderer vtkParticleShaderHooks
  */
 #ifndef vtkParticleSphereMapper_h
 #define vtkParticleSphereMapper_h

@@ -23,6 +23,7 @@
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleDepthSort.h"
 #include "vtkParticleFrontToBackTarget.h"
+#include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -70,6 +71,14 @@ struct OpacitySummary
 class vtkTransparentSphereMapper::vtkInternals
 {
 public:
+  explicit vtkInternals(vtkTransparentSphereMapper* self)
+    : Hooks(self)
+  {
+  }
+
+  // the shader hooks of the sphere templates this mapper fills
+  vtkParticleShaderHooks Hooks;
+
   // per-particle opacity
   vtkNew<vtkDoubleArray> Opacities;    // Theta_a
   vtkNew<vtkFloatArray> OpticalDepths; // -ln(1 - Theta_a); -1 for Theta_a = 1
@@ -115,7 +124,7 @@ public:
 
 //------------------------------------------------------------------------------
 vtkTransparentSphereMapper::vtkTransparentSphereMapper()
-  : Internals(new vtkInternals)
+  : Internals(new vtkInternals(this))
 {
   this->Internals->Opacities->SetName("ParticleOpacity");
   this->Internals->OpticalDepths->SetName("ParticleOpticalDepth");
@@ -333,50 +342,43 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
   const bool translucent = this->Internals->Building == Variant::Translucent;
 
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkParticleShaders::ReplaceHook(vs, "//PR::Sphere::Dec",
-    "in float opticalDepthMC;\nflat out float opticalDepthVSOutput;\n//PR::Sphere::Dec");
-  vtkParticleShaders::ReplaceHook(
-    vs, "//PR::Sphere::Impl", "opticalDepthVSOutput = opticalDepthMC;\n  //PR::Sphere::Impl");
-  shaders[vtkShader::Vertex]->SetSource(vs);
-
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
-  vtkParticleShaders::ReplaceHook(gs, "//PR::Sphere::Dec",
-    "flat in float opticalDepthVSOutput[];\nflat out float opticalDepthGSOutput;\n"
-    "uniform int prCullMode;\n//PR::Sphere::Dec");
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkParticleShaderHooks& hooks = this->Internals->Hooks;
+  hooks.Begin(vs, gs, fs);
+  using Hooks = vtkParticleShaderHooks;
+
+  // the particle's optical depth kappa_a (< 0: Theta_a = 1), per sphere
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", "in float opticalDepthMC;");
+  hooks.AddSphereVarying("float", "opticalDepth");
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl", "opticalDepthVSOutput = opticalDepthMC;");
   // Theta_a = 0 is never drawn; the opaque stage draws only Theta_a = 1, the translucent stage
   // skips Theta_a = 1 when those are drawn opaque (see prCullMode)
-  vtkParticleShaders::ReplaceHook(gs, "//PR::Sphere::Cull",
+  hooks.Insert(Hooks::Geometry, "//PR::Sphere::Dec", "uniform int prCullMode;");
+  hooks.Insert(Hooks::Geometry, "//PR::Sphere::Cull",
     "float kappaA = opticalDepthVSOutput[0];\n"
     "  if (kappaA == 0.0 || (prCullMode == 0 && (kappaA < 0.0) != " +
       std::string(translucent ? "false" : "true") +
       "))\n"
       "  {\n"
       "    return;\n"
-      "  }\n"
-      "  //PR::Sphere::Cull");
-  vtkParticleShaders::ReplaceHook(gs, "//PR::Sphere::Impl",
-    "opticalDepthGSOutput = opticalDepthVSOutput[0];\n    //PR::Sphere::Impl");
-  shaders[vtkShader::Geometry]->SetSource(gs);
+      "  }");
 
-  std::string fs = shaders[vtkShader::Fragment]->GetSource();
   if (!translucent)
   {
-    vtkParticleShaders::ReplaceHook(fs, "//PR::Sphere::Dec",
-      "flat in float opticalDepthVSOutput;\nuniform int prCullMode;\n//PR::Sphere::Dec");
+    hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "uniform int prCullMode;");
     // the opaque stage keeps Theta_i = Theta_a * opacity = 1 only; picking keeps all
-    vtkParticleShaders::ReplaceHook(fs, "//PR::Shading::Impl",
+    hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
       "if (prCullMode == 0 && !(opticalDepthVSOutput < 0.0 && opacity >= 1.0))\n"
-      "  {\n"
-      "    discard;\n"
-      "  }\n"
-      "  //PR::Shading::Impl");
+      "    {\n"
+      "      discard;\n"
+      "    }");
   }
   else
   {
     // no depth writes: the early-termination mask is tested before shading
-    vtkShaderProgram::Substitute(fs, "gl_FragDepth = depth;", "");
     std::ostringstream dec;
-    dec << "flat in float opticalDepthVSOutput;\n"
+    dec << "#define PR_NO_DEPTH_WRITE\n"
            "uniform float prVolumeMix;\n"
            "uniform vec2 prActorOpacity;\n"
            "uniform int prCullMode;\n"
@@ -384,89 +386,19 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
            "uniform float prHollowFraction2;\n"
            "uniform sampler2D prOpaqueDepth;\n"
            "#define PR_DENSITY_MODEL "
-        << this->DensityModel
-        << "\n"
-           "//PR::Include EmissionAbsorption\n"
-           "//PR::Sphere::Dec";
-    vtkParticleShaders::ReplaceHook(fs, "//PR::Sphere::Dec", dec.str());
-    vtkParticleShaders::ReplaceHook(fs, "//PR::Shading::Impl",
-      "{\n"
-      "    // vtkTransparentSphereMapper: Theta_i = Theta_a * opacity, as an optical depth\n"
-      "    float kappaA = opticalDepthVSOutput;\n"
-      "    // the actor's opacity and transmittance: from the CPU in double when the opacity is\n"
-      "    // the actor's alone (no scalar alpha), else from VTK's opacity\n"
-      "    float thetaO = prActorOpacity.x >= 0.0 ? prActorOpacity.x : opacity;\n"
-      "    float tauO = prActorOpacity.x >= 0.0 ? prActorOpacity.y : 1.0 - opacity;\n"
-      "    float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);\n"
-      "    float tauA = kappaA < 0.0 ? 0.0 : exp(-kappaA);\n"
-      "    float kappa = (tauO == 0.0 && kappaA >= 0.0) ? kappaA\n"
-      "      : prCombinedOpticalDepth(thetaA, tauA, thetaO, tauO);\n"
-      "    if (kappa < 0.0 && prCullMode == 0)\n"
-      "    {\n"
-      "      discard; // opaque: drawn in the opaque stage\n"
-      "    }\n"
-      "    if (kappa == 0.0)\n"
+        << this->DensityModel << "\n//PR::Include TransparentSphereShading";
+    hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", dec.str());
+    hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
+      "if (!prShadeTranslucentSphere(opticalDepthVSOutput, opacity, gl_FragData[0].rgb,\n"
+      "          diffuseColor, prRayS, prRayD, prT0, prT1, radiusVC, centerOffsetVCVSOutput,\n"
+      "          gl_FragData[0]))\n"
       "    {\n"
       "      discard;\n"
-      "    }\n"
-      "    // the visible part of the chord, as fractions u of [entry, exit]: clip space is\n"
-      "    // affine along the ray, so each bound (in front of the eye, near and far planes,\n"
-      "    // in front of the opaque depth) is a linear inequality in u\n"
-      "    vec2 zw0 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
-      "      centerOffsetVCVSOutput + prRayS + prT0 * prRayD, VCDCMatrix);\n"
-      "    vec2 zw1 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
-      "      centerOffsetVCVSOutput + prRayS + prT1 * prRayD, VCDCMatrix);\n"
-      "    float opaqueDepth = texelFetch(prOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r;\n"
-      "    float opaqueNDC = (2.0 * opaqueDepth - gl_DepthRange.near - gl_DepthRange.far) /\n"
-      "      gl_DepthRange.diff;\n"
-      "    vec2 bounds[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0),\n"
-      "      vec2(-1.0, opaqueNDC));\n"
-      "    float un = 0.0;\n"
-      "    float uf = 1.0;\n"
-      "    bool clipN = false;\n"
-      "    bool clipF = false;\n"
-      "    for (int k = 0; k < 4; ++k)\n"
-      "    {\n"
-      "      float g0 = dot(bounds[k], zw0);\n"
-      "      float g1 = dot(bounds[k], zw1);\n"
-      "      if (g0 < 0.0 && g1 < 0.0)\n"
-      "      {\n"
-      "        discard;\n"
-      "      }\n"
-      "      if (g0 < 0.0)\n"
-      "      {\n"
-      "        un = max(un, g0 / (g0 - g1));\n"
-      "        clipN = true;\n"
-      "      }\n"
-      "      else if (g1 < 0.0)\n"
-      "      {\n"
-      "        uf = min(uf, g0 / (g0 - g1));\n"
-      "        clipF = true;\n"
-      "      }\n"
-      "    }\n"
-      "    if (!(uf > un))\n"
-      "    {\n"
-      "      discard;\n"
-      "    }\n"
-      "    // the segment in units of the radius from the closest approach to the centre\n"
-      "    float h = 0.5 * (prT1 - prT0) / radiusVC;\n"
-      "    vec3 q = prRayS - dot(prRayS, prRayD) * prRayD;\n"
-      "    float b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));\n"
-      "    float tn = -h + 2.0 * h * un;\n"
-      "    float tf = -h + 2.0 * h * uf;\n"
-      "    float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction2);\n"
-      "    // kappa < 0: an opaque particle drawn here (the actor's opacity is not 1)\n"
-      "    float theta = kappa < 0.0 ? (integral > 0.0 ? 1.0 : 0.0)\n"
-      "      : prSegmentOpacity(kappa, integral, prMaximumIntegral);\n"
-      "    // Eq. 2: surface reflection at the entry point mixed with the volume colour; without\n"
-      "    // an entry surface (the segment starts inside) only the volume emits\n"
-      "    vec3 radiance = clipN ? diffuseColor : mix(gl_FragData[0].rgb, diffuseColor, "
-      "prVolumeMix);\n"
-      "    gl_FragData[0] = vec4(theta * radiance, theta);\n"
-      "  }\n"
-      "  //PR::Shading::Impl");
+      "    }");
     fs = vtkParticleShaders::ResolveIncludes(fs);
   }
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Geometry]->SetSource(gs);
   shaders[vtkShader::Fragment]->SetSource(fs);
 }
 

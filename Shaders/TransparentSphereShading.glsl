@@ -1,0 +1,92 @@
+//=========================================================================
+// TransparentSphereShading.glsl -- the translucent fragment of
+// vtkTransparentSphereMapper (Staib et al. 2015): the opacity of the visible
+// part of a sphere's chord from its optical depth (EmissionAbsorption.glsl)
+// and the colour of Eq. 2, premultiplied, for front-to-back compositing.
+//
+// Uniforms (declared by the mapper before this file): prVolumeMix (alpha_RV),
+// prActorOpacity (the actor's opacity and transmittance from the CPU in
+// double, x < 0 when scalar alpha applies), prCullMode (0: opaque particles
+// are drawn by the opaque stage), prMaximumIntegral (I_max),
+// prHollowFraction2, prOpaqueDepth (the opaque image's depth texture); and
+// from the sphere template clipZWOfTranslation and VCDCMatrix.
+//=========================================================================
+//PR::Include EmissionAbsorption
+
+// kappaA: the particle's optical depth (< 0: opaque, Theta_a = 1); opacity: VTK's fragment
+// opacity; litColor: the lit surface colour; diffuseColor: the material colour; the ray
+// (rayS relative to the centre, unit rayD) with both hits t0 < t1; radiusVC; centerOffsetVC:
+// the centre without the MC->VC translation. Returns false when the fragment adds nothing (or
+// belongs to the opaque stage); result is premultiplied (theta * radiance, theta).
+bool prShadeTranslucentSphere(float kappaA, float opacity, vec3 litColor, vec3 diffuseColor,
+  vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC, out vec4 result)
+{
+  result = vec4(0.0);
+  // Theta_i = Theta_a * opacity, as an optical depth: the actor's opacity and transmittance
+  // from the CPU in double when the opacity is the actor's alone (no scalar alpha), else
+  // from VTK's opacity
+  float thetaO = prActorOpacity.x >= 0.0 ? prActorOpacity.x : opacity;
+  float tauO = prActorOpacity.x >= 0.0 ? prActorOpacity.y : 1.0 - opacity;
+  float thetaA = kappaA < 0.0 ? 1.0 : prOneMinusExpNeg(kappaA);
+  float tauA = kappaA < 0.0 ? 0.0 : exp(-kappaA);
+  float kappa = (tauO == 0.0 && kappaA >= 0.0) ? kappaA
+    : prCombinedOpticalDepth(thetaA, tauA, thetaO, tauO);
+  if ((kappa < 0.0 && prCullMode == 0) || kappa == 0.0)
+  {
+    return false; // opaque (drawn in the opaque stage), or clear
+  }
+  // the visible part of the chord, as fractions u of [entry, exit]: clip space is affine along
+  // the ray, so each bound (in front of the eye, near and far planes, in front of the opaque
+  // depth) is a linear inequality in u
+  vec2 zw0 = prClipZWOfSplitPointVC(clipZWOfTranslation, centerOffsetVC + rayS + t0 * rayD,
+    VCDCMatrix);
+  vec2 zw1 = prClipZWOfSplitPointVC(clipZWOfTranslation, centerOffsetVC + rayS + t1 * rayD,
+    VCDCMatrix);
+  float opaqueDepth = texelFetch(prOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
+  float opaqueNDC =
+    (2.0 * opaqueDepth - gl_DepthRange.near - gl_DepthRange.far) / gl_DepthRange.diff;
+  vec2 bounds[4] =
+    vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0), vec2(-1.0, opaqueNDC));
+  float un = 0.0;
+  float uf = 1.0;
+  bool clipN = false;
+  bool clipF = false;
+  for (int k = 0; k < 4; ++k)
+  {
+    float g0 = dot(bounds[k], zw0);
+    float g1 = dot(bounds[k], zw1);
+    if (g0 < 0.0 && g1 < 0.0)
+    {
+      return false;
+    }
+    if (g0 < 0.0)
+    {
+      un = max(un, g0 / (g0 - g1));
+      clipN = true;
+    }
+    else if (g1 < 0.0)
+    {
+      uf = min(uf, g0 / (g0 - g1));
+      clipF = true;
+    }
+  }
+  if (!(uf > un))
+  {
+    return false;
+  }
+  // the segment in units of the radius from the closest approach to the centre
+  float h = 0.5 * (t1 - t0) / radiusVC;
+  vec3 q = rayS - dot(rayS, rayD) * rayD;
+  float b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));
+  float tn = -h + 2.0 * h * un;
+  float tf = -h + 2.0 * h * uf;
+  float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction2);
+  // kappa < 0: an opaque particle drawn here (the actor's opacity is not 1)
+  float theta = kappa < 0.0 ? (integral > 0.0 ? 1.0 : 0.0)
+    : prSegmentOpacity(kappa, integral, prMaximumIntegral);
+  // Eq. 2: surface reflection at the entry point mixed with the volume colour; without an
+  // entry surface (the segment starts inside) only the volume emits
+  vec3 radiance = clipN ? diffuseColor : mix(litColor, diffuseColor, prVolumeMix);
+  result = vec4(theta * radiance, theta);
+  return true;
+}
