@@ -159,32 +159,10 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   else
   {
     // Which radius source?
-    vtkDataArray* radiusArray = nullptr;
-    if (this->RadiusArrayName && this->RadiusArrayName[0])
-    {
-      vtkAbstractArray* abstractArray =
-        input->GetPointData()->GetAbstractArray(this->RadiusArrayName);
-      if (!abstractArray)
-      {
-        warnings << "Radius array '" << this->RadiusArrayName
-                 << "' is not a point array of the input: using the constant radius "
-                 << this->Radius << ". ";
-      }
-      else if (!(radiusArray = vtkDataArray::SafeDownCast(abstractArray)))
-      {
-        warnings << "Radius array '" << this->RadiusArrayName << "' is not numeric ("
-                 << abstractArray->GetClassName() << "): using the constant radius "
-                 << this->Radius << ". ";
-      }
-      else if (radiusArray->GetNumberOfComponents() != 1)
-      {
-        warnings << "Radius array '" << this->RadiusArrayName << "' has "
-                 << radiusArray->GetNumberOfComponents()
-                 << " components, a radius needs exactly 1: using the constant radius "
-                 << this->Radius << ". ";
-        radiusArray = nullptr;
-      }
-    }
+    std::ostringstream fallback;
+    fallback << "using the constant radius " << this->Radius;
+    vtkDataArray* radiusArray =
+      GetScalarPointArray(input, this->RadiusArrayName, "Radius", fallback.str(), warnings);
 
     vtkDataArray* points = input->GetPoints()->GetData();
     internals.Radii->SetNumberOfTuples(numPts);
@@ -309,12 +287,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     }
   }
 
-  const std::string warning = warnings.str();
-  if (!warning.empty() && warning != internals.LastWarning)
-  {
-    vtkWarningMacro(<< warning);
-  }
-  internals.LastWarning = warning;
+  this->WarnOnChange(warnings.str(), internals.LastWarning);
   // a real modification stamp, later than the input's and the mapper's
   vtkTimeStamp stamp;
   stamp.Modified();
@@ -389,6 +362,66 @@ bool vtkParticleSphereMapper::GetParticleBuffers(unsigned int& positions,
   radii = static_cast<unsigned int>(radiusVBO->GetHandle());
   vtkMatrix4x4::Transpose(this->VBOShiftScale, bufferToModel); // stored transposed
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkParticleSphereMapper::GetScalarPointArray(vtkPolyData* input, const char* name,
+  const char* role, const std::string& fallback, std::ostream& warnings)
+{
+  if (!input || !name || !name[0])
+  {
+    return nullptr;
+  }
+  vtkAbstractArray* abstractArray = input->GetPointData()->GetAbstractArray(name);
+  vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
+  if (!abstractArray)
+  {
+    warnings << role << " array '" << name << "' is not a point array of the input: " << fallback
+             << ". ";
+  }
+  else if (!array)
+  {
+    warnings << role << " array '" << name << "' is not numeric ("
+             << abstractArray->GetClassName() << "): " << fallback << ". ";
+  }
+  else if (array->GetNumberOfComponents() != 1)
+  {
+    warnings << role << " array '" << name << "' has " << array->GetNumberOfComponents()
+             << " components, one value per particle is needed: " << fallback << ". ";
+    array = nullptr;
+  }
+  return array;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::WarnOnChange(const std::string& warning, std::string& lastWarning)
+{
+  if (!warning.empty() && warning != lastWarning)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  lastWarning = warning;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::GetBufferToViewMatrix(
+  vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* bufferToView)
+{
+  // view * actor * VBO shift/scale undone, composed in double (the shaders get it in float with
+  // the translation split off, see prDepthOfSplitPointVC)
+  vtkNew<vtkMatrix4x4> shiftScale;
+  vtkMatrix4x4::Transpose(this->VBOShiftScale, shiftScale); // VBOShiftScale is stored transposed
+  vtkMatrix4x4* view = ren->GetActiveCamera()->GetModelViewTransformMatrix();
+  if (!actor->GetIsIdentity())
+  {
+    vtkNew<vtkMatrix4x4> modelToView;
+    vtkMatrix4x4::Multiply4x4(view, actor->GetMatrix(), modelToView);
+    vtkMatrix4x4::Multiply4x4(modelToView, shiftScale, bufferToView);
+  }
+  else
+  {
+    vtkMatrix4x4::Multiply4x4(view, shiftScale, bufferToView);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -619,19 +652,7 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
   if (program->IsUniformUsed("clipZWOfTranslation"))
   {
     vtkNew<vtkMatrix4x4> mcvc; // row-major, points as columns
-    vtkNew<vtkMatrix4x4> shiftScale;
-    vtkMatrix4x4::Transpose(this->VBOShiftScale, shiftScale); // VBOShiftScale is stored transposed
-    if (!actor->GetIsIdentity())
-    {
-      vtkNew<vtkMatrix4x4> actorMatrix;
-      actor->GetMatrix(actorMatrix);
-      vtkMatrix4x4::Multiply4x4(actorMatrix, shiftScale, mcvc);
-      vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), mcvc, mcvc);
-    }
-    else
-    {
-      vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), shiftScale, mcvc);
-    }
+    this->GetBufferToViewMatrix(ren, actor, mcvc);
     const double t[4] = { mcvc->GetElement(0, 3), mcvc->GetElement(1, 3), mcvc->GetElement(2, 3),
       1.0 };
     // vcdc is stored transposed (column-major for OpenGL)

@@ -227,6 +227,28 @@ protected:
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
   /**
+   * The point array `name` of `input` when it is numeric with one component; otherwise nullptr
+   * and the reason appended to `warnings`, as "<role> array '<name>' is not a point array of the
+   * input / is not numeric / has N components...: <fallback>. ". nullptr without a warning when
+   * no name is given.
+   */
+  static vtkDataArray* GetScalarPointArray(vtkPolyData* input, const char* name, const char* role,
+    const std::string& fallback, std::ostream& warnings);
+
+  /**
+   * Issue `warning` (vtkWarningMacro) when it is not empty and differs from `lastWarning`, then
+   * remember it: a problem with the input is said once per change, not every frame.
+   */
+  void WarnOnChange(const std::string& warning, std::string& lastWarning);
+
+  /**
+   * The matrix from the position buffer to view coordinates (row-major, points as columns):
+   * camera view * actor matrix * VBO shift/scale undone, composed in double. The one place this
+   * precision-critical product is formed (shaders, depth sort).
+   */
+  void GetBufferToViewMatrix(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* bufferToView);
+
+  /**
    * Hook for subclasses: add per-particle vertex attributes with this->VBOs->CacheDataArray()
    * (called while the buffers are built, before the upload).
    */

@@ -204,28 +204,11 @@ void vtkTransparentSphereMapper::PrepareOpacities()
   internals.OpacitiesValid = true;
 
   std::ostringstream warnings;
-  vtkDataArray* array = nullptr;
-  if (!name.empty() && numPts > 0)
-  {
-    if (!abstractArray)
-    {
-      warnings << "Opacity array '" << name
-               << "' is not a point array of the input: every particle has maximum opacity 1 "
-                  "(times the actor's opacity). ";
-    }
-    else if (!(array = vtkDataArray::SafeDownCast(abstractArray)))
-    {
-      warnings << "Opacity array '" << name << "' is not numeric ("
-               << abstractArray->GetClassName() << "): every particle has maximum opacity 1. ";
-    }
-    else if (array->GetNumberOfComponents() != 1)
-    {
-      warnings << "Opacity array '" << name << "' has " << array->GetNumberOfComponents()
-               << " components, an opacity needs exactly 1: every particle has maximum "
-                  "opacity 1. ";
-      array = nullptr;
-    }
-  }
+  vtkDataArray* array = numPts > 0 ? GetScalarPointArray(input, name.c_str(), "Opacity",
+                                       "every particle has maximum opacity 1 (times the actor's "
+                                       "opacity)",
+                                       warnings)
+                                   : nullptr;
 
   internals.Opacities->SetNumberOfTuples(numPts);
   internals.OpticalDepths->SetNumberOfTuples(numPts);
@@ -285,12 +268,7 @@ void vtkTransparentSphereMapper::PrepareOpacities()
     warnings << total.NaNs << " of " << numPts << " values of opacity array '" << name
              << "' are NaN: those particles are fully transparent. ";
   }
-  const std::string warning = warnings.str();
-  if (!warning.empty() && warning != internals.LastWarning)
-  {
-    vtkWarningMacro(<< warning);
-  }
-  internals.LastWarning = warning;
+  this->WarnOnChange(warnings.str(), internals.LastWarning);
 }
 
 //------------------------------------------------------------------------------
@@ -742,19 +720,7 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
 
   // MC -> VC as the shaders use it: view * actor * VBO shift/scale, in double
   vtkNew<vtkMatrix4x4> mcvc;
-  vtkNew<vtkMatrix4x4> shiftScale;
-  vtkMatrix4x4::Transpose(this->VBOShiftScale, shiftScale); // stored transposed
-  if (!act->GetIsIdentity())
-  {
-    vtkNew<vtkMatrix4x4> actorMatrix;
-    act->GetMatrix(actorMatrix);
-    vtkMatrix4x4::Multiply4x4(actorMatrix, shiftScale, mcvc);
-    vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), mcvc, mcvc);
-  }
-  else
-  {
-    vtkMatrix4x4::Multiply4x4(cam->GetModelViewTransformMatrix(), shiftScale, mcvc);
-  }
+  this->GetBufferToViewMatrix(ren, act, mcvc);
   const double radiusScale = this->GetRadiusScaleVC(act);
   const int parallel = cam->GetParallelProjection() ? 1 : 0;
 
