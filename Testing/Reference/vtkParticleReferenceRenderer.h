@@ -127,7 +127,7 @@
 #define vtkParticleReferenceRenderer_h
 
 #include "vtkObject.h"
-#include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkParticleRenderingReferenceModule.h" // for export macro
 #include "vtkSmartPointer.h"            // for vtkSmartPointer
 
 class vtkActor;
@@ -137,7 +137,7 @@ class vtkImageData;
 class vtkRenderer;
 class vtkUnsignedCharArray;
 
-class VTKPARTICLERENDERING_EXPORT vtkParticleReferenceRenderer : public vtkObject
+class VTKPARTICLERENDERINGREFERENCE_EXPORT vtkParticleReferenceRenderer : public vtkObject
 {
 public:
   static vtkParticleReferenceRenderer* New();

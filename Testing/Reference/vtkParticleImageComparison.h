@@ -44,7 +44,7 @@
 #define vtkParticleImageComparison_h
 
 #include "vtkObject.h"
-#include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkParticleRenderingReferenceModule.h" // for export macro
 #include "vtkSmartPointer.h"            // for vtkSmartPointer
 
 #include <string> // for std::string
@@ -56,7 +56,7 @@ class vtkRenderWindow;
 class vtkRenderer;
 class vtkUnsignedCharArray;
 
-class VTKPARTICLERENDERING_EXPORT vtkParticleImageComparison : public vtkObject
+class VTKPARTICLERENDERINGREFERENCE_EXPORT vtkParticleImageComparison : public vtkObject
 {
 public:
   static vtkParticleImageComparison* New();
