@@ -121,6 +121,14 @@
  * vtkParticleSphereMapper) an opacity < 1 is shaded as an opaque surface and the opaque layer is
  * ignored.
  *
+ * Implementation, one file per concern (private headers of the module): the camera, spheres and
+ * the grid along rays (vtkParticleReferenceRays.h), lights, material and the opaque pass
+ * (vtkParticleReferenceShading), the emission-absorption model and the transparent pass
+ * (vtkParticleReferenceEmissionAbsorption), ray-traced ambient occlusion
+ * (vtkParticleReferenceAmbientOcclusion), and the frame they share (vtkParticleReferenceFrame.h).
+ * Render() sets the frame up and runs one pass; a new term (metaballs, super-sampling) gets its
+ * own file and its own stage.
+ *
  * @sa vtkParticleSphereMapper vtkParticleImageComparison
  */
 #ifndef vtkParticleReferenceRenderer_h

@@ -1,0 +1,82 @@
+// Private header of ParticleRendering::Reference (vtkParticleReferenceRenderer): the state one
+// Render() hands from its set-up (camera, spheres, lights, material) to its per-pixel stages
+// (RenderOpaque with AmbientOcclusion, RenderTranslucent), and the images they write.
+#ifndef vtkParticleReferenceFrame_h
+#define vtkParticleReferenceFrame_h
+
+#include "vtkParticleReferenceRays.h"
+#include "vtkParticleReferenceShading.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace prReference
+{
+struct Frame
+{
+  // image size and the camera as the rays see it
+  int Width = 0;
+  int Height = 0;
+  const RayCamera* Camera = nullptr;
+  // visible spheres in view coordinates, their particle ids, the grid over them
+  std::vector<SphereVC> Spheres;
+  std::vector<vtkIdType> Ids;
+  const SphereGrid* Grid = nullptr;
+
+  // transparent mode: density model, Theta_i, kappa_i and I_max per sphere, the opaque layer
+  int DensityModel = 0;
+  double HollowFraction = 0.0;
+  double VolumeMix = 0.0;
+  std::vector<double> SphereTheta;
+  std::vector<double> SphereKappa;
+  std::vector<double> SphereMaximum;
+  std::vector<double> LayerColors; // RGBA per pixel, empty: none
+  std::vector<double> LayerDepths; // window depth per pixel
+
+  // lights (complexity as vtkOpenGLRenderer's: 0 unlit, 1 headlight, 2 directional, 3 positional)
+  std::vector<LightVC> Lights;
+  int Complexity = 0;
+  // material: the actor's opacity, coefficients and colours; per-particle RGBA or nullptr
+  double Opacity = 1.0;
+  double AmbientK = 0.0;
+  double DiffuseK = 1.0;
+  double AmbientColor[3] = { 0, 0, 0 };
+  double DiffuseColor[3] = { 1, 1, 1 };
+  double SpecularColor[3] = { 0, 0, 0 }; // times the specular coefficient
+  double SpecularPower = 1.0;
+  const unsigned char* RGBA = nullptr;
+  double Background[3] = { 0, 0, 0 };
+  double BackgroundAlpha = 0.0;
+
+  // ray-traced ambient occlusion (opaque mode): samples (0: none), distance, applied to colour
+  int AmbientOcclusionSamples = 0;
+  double AmbientOcclusionDistance = 0.0;
+  bool ApplyAmbientOcclusion = false;
+
+  // outputs, Width x Height, row-major from the bottom row
+  double* ColorOut = nullptr;     // RGBA
+  double* DepthOut = nullptr;     // window depth
+  double* ViewDepthOut = nullptr; // ray parameter of the visible point, -1 for background
+  double* NormalOut = nullptr;    // view-coordinate normal
+  vtkIdType* IdOut = nullptr;     // particle id, -1 for background
+  unsigned char* InsideOut = nullptr;
+  std::uint32_t* ConeOut = nullptr; // spot cones containing the visible point
+  double* AmbientOcclusionOut = nullptr;
+  double* TranslucentAlphaOut = nullptr;
+
+  /**
+   * Material of a particle as vtkOpenGLPolyDataMapper: ambient and diffuse colours (with their
+   * coefficients) and the fragment opacity. (vtkParticleReferenceShading.cxx)
+   */
+  void Material(vtkIdType pid, double amb[3], double dif[3], double& alpha) const;
+
+  /**
+   * VTK's lit colour (not clamped) at the surface point p (view coordinates) with unit normal n;
+   * returns the bits of the spot cones containing p. (vtkParticleReferenceShading.cxx)
+   */
+  std::uint32_t Shade(const double n[3], const double p[3], const double amb[3],
+    const double dif[3], double color[3]) const;
+};
+} // namespace prReference
+
+#endif
