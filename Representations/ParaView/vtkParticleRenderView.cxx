@@ -4,7 +4,6 @@
 #include "vtkCameraPass.h"
 #include "vtkCommand.h"
 #include "vtkDensityVolumeAOPass.h"
-#include "vtkParticleDensityVolume.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
@@ -29,8 +28,7 @@ vtkParticleRenderView::vtkParticleRenderView()
   // ParaView's progress bar listens to algorithms registered with the session's progress
   // handler; a render pass is not one, so its long work (the AO volume build) is reported
   // through a stand-in algorithm registered here.
-  this->DensityVolumeAOPass->AddObserver(
-    vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
+  this->SetDensityVolumeAOPass(vtkSmartPointer<vtkDensityVolumeAOPass>::New());
   vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
   vtkPVSession* session =
     processModule ? vtkPVSession::SafeDownCast(processModule->GetActiveSession()) : nullptr;
@@ -84,45 +82,29 @@ int vtkParticleRenderView::GetDensityVolumeAmbientOcclusion()
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeResolution(int resolution)
+void vtkParticleRenderView::SetDensityVolumeAOPass(vtkDensityVolumeAOPass* pass)
 {
-  this->DensityVolumeAOPass->GetDensityVolume()->SetResolution(resolution);
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeFactor(double factor)
-{
-  this->DensityVolumeAOPass->GetDensityVolume()->SetDensityFactor(factor);
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeFetchDistance(double distance)
-{
-  this->DensityVolumeAOPass->SetFetchDistance(distance);
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeStrength(double strength)
-{
-  this->DensityVolumeAOPass->SetStrength(strength);
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeSplat(int mode)
-{
-  this->DensityVolumeAOPass->GetDensityVolume()->SetSplatMode(mode);
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeRetrieval(int mode)
-{
-  this->DensityVolumeAOPass->SetRetrievalMode(mode);
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeGeneration(int mode)
-{
-  this->DensityVolumeAOPass->SetGenerationMode(mode);
+  if (!pass || pass == this->DensityVolumeAOPass)
+  {
+    return;
+  }
+  const bool installed = this->GetDensityVolumeAmbientOcclusion() != 0;
+  if (installed)
+  {
+    this->ParticlePassChain->RemovePass(this->DensityVolumeAOPass);
+  }
+  if (this->DensityVolumeAOPass)
+  {
+    this->DensityVolumeAOPass->RemoveObserver(this->PassProgressTag);
+  }
+  this->DensityVolumeAOPass = pass;
+  this->PassProgressTag = pass->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
+  if (installed)
+  {
+    this->ParticlePassChain->AddPass(pass);
+  }
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -187,18 +169,6 @@ int vtkParticleRenderView::GetParticlePassChainInstalled()
 int vtkParticleRenderView::GetNumberOfParticlePasses()
 {
   return this->ParticlePassChain->GetNumberOfPasses();
-}
-
-//------------------------------------------------------------------------------
-int vtkParticleRenderView::GetDensityVolumeLastGeneration()
-{
-  return this->DensityVolumeAOPass->GetLastGenerationMode();
-}
-
-//------------------------------------------------------------------------------
-int vtkParticleRenderView::GetNumberOfDensityVolumeBuilds()
-{
-  return static_cast<int>(this->DensityVolumeAOPass->GetNumberOfVolumeBuilds());
 }
 
 //------------------------------------------------------------------------------

@@ -48,7 +48,8 @@
 #ifndef vtkParticleRenderView_h
 #define vtkParticleRenderView_h
 
-#include "vtkNew.h" // for vtkNew
+#include "vtkNew.h"          // for vtkNew
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 #include "vtkPVRenderView.h"
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 
@@ -82,28 +83,17 @@ public:
 
   ///@{
   /**
-   * Where the density volume of the AO pass was last built (vtkDensityVolumeAOPass::
-   * CPU_GENERATION or GPU_GENERATION) and how many volumes it has built (information properties
-   * for tests: they show that the generation property reaches the pass).
-   */
-  int GetDensityVolumeLastGeneration();
-  int GetNumberOfDensityVolumeBuilds();
-  ///@}
-
-  ///@{
-  /**
    * Object-space ambient occlusion of the particles from a coarse density volume
-   * (vtkDensityVolumeAOPass, Grottel et al. 2012): on/off and its parameters.
+   * (vtkDensityVolumeAOPass, Grottel et al. 2012): on/off puts the pass into the chain or takes
+   * it out. The pass's own settings are not forwarded by the view: in ParaView the pass is a
+   * proxy of its own (group particle_passes) whose VTK object the view receives through
+   * SetDensityVolumeAOPass (a SubProxy command), and whose properties the view exposes -- the
+   * pattern every further pass follows. Without a proxy (plain VTK use of this class) the view
+   * has a pass of its own.
    */
   void SetDensityVolumeAmbientOcclusion(int on);
   int GetDensityVolumeAmbientOcclusion();
-  void SetDensityVolumeResolution(int resolution);
-  void SetDensityVolumeFactor(double factor);
-  void SetDensityVolumeFetchDistance(double distance);
-  void SetDensityVolumeStrength(double strength);
-  void SetDensityVolumeSplat(int mode);
-  void SetDensityVolumeRetrieval(int mode);
-  void SetDensityVolumeGeneration(int mode);
+  void SetDensityVolumeAOPass(vtkDensityVolumeAOPass* pass);
   vtkDensityVolumeAOPass* GetDensityVolumeAOPass();
   ///@}
 
@@ -125,7 +115,8 @@ protected:
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
   vtkNew<vtkParticlePassChain> ParticlePassChain;
-  vtkNew<vtkDensityVolumeAOPass> DensityVolumeAOPass;
+  vtkSmartPointer<vtkDensityVolumeAOPass> DensityVolumeAOPass;
+  unsigned long PassProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;
 
 private:

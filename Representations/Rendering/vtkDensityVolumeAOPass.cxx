@@ -19,6 +19,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 
 #include "vtk_glew.h"
@@ -39,7 +40,8 @@ public:
     : Hooks(self)
   {
   }
-  vtkNew<vtkParticleDensityVolume> Volume;
+  vtkSmartPointer<vtkParticleDensityVolume> Volume;
+  unsigned long VolumeProgressTag = 0;
   vtkNew<vtkTextureObject> Texture;
   // what the volume was built from
   std::vector<double> BuiltState;
@@ -97,8 +99,26 @@ private:
 vtkDensityVolumeAOPass::vtkDensityVolumeAOPass()
   : Internals(new vtkInternals(this))
 {
-  this->Internals->Volume->AddObserver(
+  this->SetDensityVolume(vtkSmartPointer<vtkParticleDensityVolume>::New());
+}
+
+//------------------------------------------------------------------------------
+void vtkDensityVolumeAOPass::SetDensityVolume(vtkParticleDensityVolume* volume)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!volume || volume == internals.Volume)
+  {
+    return;
+  }
+  if (internals.Volume)
+  {
+    internals.Volume->RemoveObserver(internals.VolumeProgressTag);
+  }
+  internals.Volume = volume;
+  internals.VolumeProgressTag = volume->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkDensityVolumeAOPass::ForwardVolumeProgress);
+  internals.Attempted = false; // a new volume object: build it
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -159,6 +179,7 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
     vtkMatrix4x4* m = actor->GetMatrix();
     state.insert(state.end(), m->GetData(), m->GetData() + 16);
   }
+  state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(internals.Volume.Get())));
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
   state.push_back(this->GenerationMode);
   if (state == internals.BuiltState && internals.Attempted)

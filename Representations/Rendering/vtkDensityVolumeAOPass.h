@@ -109,10 +109,15 @@ public:
   vtkGetMacro(Strength, double);
   ///@}
 
+  ///@{
   /**
    * The density volume (resolution, density factor g, ...). Changing its settings rebuilds it.
+   * The pass makes its own; SetDensityVolume replaces it (ParaView hands over the VTK object of
+   * the pass proxy's density-volume sub-proxy this way). nullptr is ignored.
    */
   vtkParticleDensityVolume* GetDensityVolume();
+  void SetDensityVolume(vtkParticleDensityVolume* volume);
+  ///@}
 
   /**
    * Number of density-volume builds so far.
