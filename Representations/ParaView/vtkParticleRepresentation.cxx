@@ -37,6 +37,16 @@ vtkStandardNewMacro(vtkParticleRepresentation);
 //------------------------------------------------------------------------------
 vtkParticleRepresentation::vtkParticleRepresentation()
 {
+  this->Mapper = NewMapper(this->Technique);
+  // the translucency defaults are the mapper's own
+  if (auto* transparent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper))
+  {
+    this->DensityModel = transparent->GetDensityModel();
+    this->HollowFraction = transparent->GetHollowFraction();
+    this->VolumeMix = transparent->GetVolumeMix();
+    this->EarlyTermination = transparent->GetEarlyTermination();
+    this->OpacityReference = transparent->GetOpacityReference();
+  }
   this->Actor->SetMapper(this->Mapper);
   // Colours come from the lookup table's range (set by ParaView), as for every representation.
   this->Mapper->SetUseLookupTableScalarRange(1);
@@ -46,6 +56,65 @@ vtkParticleRepresentation::vtkParticleRepresentation()
   // session's progress handler), not to its mapper's: pass the mapper's long work on.
   this->Mapper->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkParticleRepresentation::ForwardMapperProgress);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkParticleSphereMapper> vtkParticleRepresentation::NewMapper(int technique)
+{
+  switch (technique)
+  {
+    case SPHERES:
+    default:
+      return vtkSmartPointer<vtkTransparentSphereMapper>::New();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetTechnique(int technique)
+{
+  if (technique != SPHERES)
+  {
+    vtkErrorMacro(<< "Unknown particle technique " << technique << ": keeping " << this->Technique
+                  << ".");
+    return;
+  }
+  if (technique == this->Technique)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkParticleSphereMapper> previous = this->Mapper;
+  this->Technique = technique;
+  this->Mapper = NewMapper(technique);
+  // what the representation does not hold itself lives on the previous mapper: carry it over
+  this->Mapper->SetInputDataObject(previous->GetInputDataObject(0, 0));
+  this->Mapper->SetRadius(previous->GetRadius());
+  this->Mapper->SetRadiusScaleFactor(previous->GetRadiusScaleFactor());
+  this->Mapper->SetLookupTable(previous->GetLookupTable());
+  this->Mapper->SetColorMode(previous->GetColorMode());
+  this->Mapper->SetUseLookupTableScalarRange(previous->GetUseLookupTableScalarRange());
+  this->Mapper->SetScalarVisibility(previous->GetScalarVisibility());
+  this->Mapper->SetScalarMode(previous->GetScalarMode());
+  this->Mapper->SelectColorArray(previous->GetArrayName());
+  this->Mapper->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkParticleRepresentation::ForwardMapperProgress);
+  this->ApplyMapperSettings();
+  this->Actor->SetMapper(this->Mapper);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::ApplyMapperSettings()
+{
+  this->UpdateMapperRadiusArray();
+  this->UpdateMapperOpacityArray();
+  if (auto* transparent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper))
+  {
+    transparent->SetDensityModel(this->DensityModel);
+    transparent->SetHollowFraction(this->HollowFraction);
+    transparent->SetVolumeMix(this->VolumeMix);
+    transparent->SetEarlyTermination(this->EarlyTermination);
+    transparent->SetOpacityReference(this->OpacityReference);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -364,15 +433,20 @@ void vtkParticleRepresentation::UpdateMapperRadiusArray()
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::UpdateMapperOpacityArray()
 {
-  this->Mapper->SetOpacityArrayName(
+  auto* transparent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper);
+  if (!transparent)
+  {
+    return; // a technique without per-particle opacity
+  }
+  transparent->SetOpacityArrayName(
     (this->UseOpacityArray && !this->OpacityArray.empty()) ? this->OpacityArray.c_str() : nullptr);
   if (this->OpacityArrayRangeMode == OPACITY_RANGE_CUSTOM)
   {
-    this->Mapper->SetOpacityRange(this->OpacityArrayRange);
+    transparent->SetOpacityRange(this->OpacityArrayRange);
   }
   else
   {
-    this->Mapper->SetOpacityRange(this->OpacityArrayDataRange);
+    transparent->SetOpacityRange(this->OpacityArrayDataRange);
   }
 }
 
@@ -457,31 +531,36 @@ void vtkParticleRepresentation::SetOpacityArrayRange(double lo, double hi)
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetDensityModel(int model)
 {
-  this->Mapper->SetDensityModel(model);
+  this->DensityModel = model;
+  this->ApplyMapperSettings();
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetHollowFraction(double fraction)
 {
-  this->Mapper->SetHollowFraction(fraction);
+  this->HollowFraction = fraction;
+  this->ApplyMapperSettings();
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetVolumeMix(double mix)
 {
-  this->Mapper->SetVolumeMix(mix);
+  this->VolumeMix = mix;
+  this->ApplyMapperSettings();
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetEarlyTermination(int on)
 {
-  this->Mapper->SetEarlyTermination(on != 0);
+  this->EarlyTermination = on != 0;
+  this->ApplyMapperSettings();
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetOpacityReference(int reference)
 {
-  this->Mapper->SetOpacityReference(reference);
+  this->OpacityReference = reference;
+  this->ApplyMapperSettings();
 }
 
 //------------------------------------------------------------------------------

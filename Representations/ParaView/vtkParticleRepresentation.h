@@ -162,6 +162,23 @@ public:
   void SetOpacity(double val);
   ///@}
 
+  ///@{
+  /**
+   * The drawing technique, i.e. which mapper draws the particles. Every technique's mapper is a
+   * vtkParticleSphereMapper (same input handling, radii, colours); NewMapper() is the one place
+   * that maps a technique to its mapper, and switching re-applies every setting the
+   * representation holds. SPHERES (the only one today): vtkTransparentSphereMapper, which draws
+   * opaque spheres as its superclass does and translucent ones exactly (Staib et al. 2015).
+   * The metaball mapper joins here.
+   */
+  enum ParticleTechniques
+  {
+    SPHERES = 0
+  };
+  void SetTechnique(int technique);
+  vtkGetMacro(Technique, int);
+  ///@}
+
   /**
    * The mapper and actor, for passes of vtkParticleRenderView and for tests.
    */
@@ -205,8 +222,19 @@ protected:
   std::string EffectiveRadiusArray(vtkPolyData* particles) const;
   void UpdateMapperOpacityArray();
 
-  vtkNew<vtkTransparentSphereMapper> Mapper;
+  // the mapper of a technique (the one switch), and the representation's settings applied to it
+  static vtkSmartPointer<vtkParticleSphereMapper> NewMapper(int technique);
+  void ApplyMapperSettings();
+
+  int Technique = SPHERES;
+  vtkSmartPointer<vtkParticleSphereMapper> Mapper;
   vtkNew<vtkActor> Actor;
+  // settings of the translucent techniques (vtkTransparentSphereMapper), kept for re-application
+  int DensityModel = 0;
+  double HollowFraction = 0.0;
+  double VolumeMix = 0.0;
+  bool EarlyTermination = false;
+  int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;
   int OpacityArrayRangeMode = OPACITY_RANGE_DATA;
