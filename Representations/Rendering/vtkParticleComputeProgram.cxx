@@ -2,6 +2,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
 
@@ -16,6 +17,8 @@ class vtkParticleComputeProgram::vtkInternals
 {
 public:
   std::map<std::string, GLint> Locations;
+  // the context the program was built in
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
 };
 
 namespace
@@ -175,6 +178,7 @@ bool vtkParticleComputeProgram::Build(vtkOpenGLRenderWindow* context)
     return false;
   }
   this->ReleaseGraphicsResources(context);
+  context->MakeCurrent(); // (releasing made the old program's context current)
   vtkParticleComputeProgram::GetMaxWorkGroupCount(context, this->MaxGroups);
 
   GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
@@ -204,6 +208,7 @@ bool vtkParticleComputeProgram::Build(vtkOpenGLRenderWindow* context)
     return false;
   }
   this->Handle = program;
+  this->Internals->Context = context;
   this->SourceChanged = false;
   return true;
 }
@@ -354,12 +359,27 @@ bool vtkParticleComputeProgram::Dispatch(unsigned int x, unsigned int y, unsigne
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::MakeCurrentForRelease(vtkOpenGLRenderWindow* context)
+{
+  if (!context)
+  {
+    return false;
+  }
+  context->MakeCurrent();
+  return context->IsCurrent();
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleComputeProgram::ReleaseGraphicsResources(vtkWindow*)
 {
   if (this->Handle != 0)
   {
-    glDeleteProgram(this->Handle);
+    if (MakeCurrentForRelease(this->Internals->Context))
+    {
+      glDeleteProgram(this->Handle);
+    }
     this->Handle = 0;
+    this->Internals->Context = nullptr;
   }
   this->Internals->Locations.clear();
   this->SourceChanged = true;

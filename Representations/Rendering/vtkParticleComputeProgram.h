@@ -56,6 +56,14 @@ public:
   static void GetMaxWorkGroupCount(vtkOpenGLRenderWindow* context, unsigned int count[3]);
   static unsigned long long GetMaxLinearWorkGroupCount(vtkOpenGLRenderWindow* context);
 
+  /**
+   * Make `context` current before deleting the OpenGL objects it owns (ParaView releases a view's
+   * props while another view's context is current, and names mean nothing in another context).
+   * False when there is no such context any more or it cannot be made current: its objects went
+   * with it, delete nothing.
+   */
+  static bool MakeCurrentForRelease(vtkOpenGLRenderWindow* context);
+
   ///@{
   /**
    * The complete GLSL source, including the `#version` line. Changing it makes the next Build()

@@ -10,6 +10,7 @@
 #include "vtkParticleShaders.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
 
@@ -59,6 +60,7 @@ public:
   unsigned int Counts = 0;
   unsigned int VolumeBuffer = 0;
   size_t Capacity = 0; // voxels
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context; // of the buffers
 };
 
 //------------------------------------------------------------------------------
@@ -287,6 +289,12 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   {
     return false;
   }
+  if (internals.Context && internals.Context != context)
+  {
+    this->ReleaseGraphicsResources(internals.Context); // buffers of another context
+    context->MakeCurrent();                            // back to the one drawing now
+  }
+  internals.Context = context;
   if (internals.Capacity < voxels)
   {
     if (!internals.Counts)
@@ -412,10 +420,14 @@ void vtkParticleDensityVolume::ReleaseGraphicsResources(vtkWindow* window)
   internals.Convert->ReleaseGraphicsResources(window);
   if (internals.Counts)
   {
-    glDeleteBuffers(1, &internals.Counts);
-    glDeleteBuffers(1, &internals.VolumeBuffer);
+    if (vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context))
+    {
+      glDeleteBuffers(1, &internals.Counts);
+      glDeleteBuffers(1, &internals.VolumeBuffer);
+    }
     internals.Counts = internals.VolumeBuffer = 0;
   }
+  internals.Context = nullptr;
   internals.Capacity = 0;
 }
 

@@ -465,11 +465,14 @@ void vtkParticleDepthSort::ReleaseGraphicsResources(vtkWindow* window)
   {
     program.first->ReleaseGraphicsResources(window);
   }
-  this->Internals->Timer.ReleaseGraphicsResources();
   this->Internals->Timed = false;
   if (this->Buffers[0] != 0)
   {
-    glDeleteBuffers(4, this->Buffers);
+    if (vtkParticleComputeProgram::MakeCurrentForRelease(this->Internals->Context))
+    {
+      this->Internals->Timer.ReleaseGraphicsResources();
+      glDeleteBuffers(4, this->Buffers);
+    }
     for (unsigned int& buffer : this->Buffers)
     {
       buffer = 0;

@@ -151,6 +151,7 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
   if (internals.Context && internals.Context != ctx)
   {
     this->ReleaseGraphicsResources(internals.Context);
+    ctx->MakeCurrent(); // back to the context drawing now
   }
   vtkOpenGLState* ostate = ctx->GetState();
   internals.State = ostate;
@@ -417,6 +418,13 @@ void vtkParticleFrontToBackTarget::ClearRetainedAccumulation()
 void vtkParticleFrontToBackTarget::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& internals = *this->Internals;
+  // (framebuffers and queries belong to the context that made them, which need not be current:
+  // ParaView releases a view's props while another view's context is current)
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (context && context == internals.Context)
+  {
+    context->MakeCurrent();
+  }
   if (internals.MaskQuad)
   {
     internals.MaskQuad->ReleaseGraphicsResources(window);
