@@ -6,7 +6,10 @@
 
 #include "vtkParticleReferenceRays.h"
 #include "vtkParticleReferenceShading.h"
+#include "vtkSMPTools.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -65,6 +68,22 @@ struct Frame
   double* TranslucentAlphaOut = nullptr;
 
   /**
+   * Write what a pixel shows besides its colour: window and view depth, particle id, whether the
+   * ray starts inside it, its spot cones (0 without a particle), normal, translucent alpha.
+   */
+  void WriteSurface(std::size_t pixel, double depth, double viewDepth, vtkIdType id, bool inside,
+    std::uint32_t cones, const double normal[3], double translucentAlpha) const
+  {
+    this->DepthOut[pixel] = depth;
+    this->ViewDepthOut[pixel] = viewDepth;
+    this->IdOut[pixel] = id;
+    this->InsideOut[pixel] = inside ? 1 : 0;
+    this->ConeOut[pixel] = id >= 0 ? cones : 0;
+    std::copy(normal, normal + 3, this->NormalOut + 3 * pixel);
+    this->TranslucentAlphaOut[pixel] = translucentAlpha;
+  }
+
+  /**
    * Material of a particle as vtkOpenGLPolyDataMapper: ambient and diffuse colours (with their
    * coefficients) and the fragment opacity. (vtkParticleReferenceShading.cxx)
    */
@@ -77,6 +96,33 @@ struct Frame
   std::uint32_t Shade(const double n[3], const double p[3], const double amb[3],
     const double dif[3], double color[3]) const;
 };
+/**
+ * Call perPixel(x, y, pixel, o, d, tNear, tFar, scratch) for every pixel's centre ray (origin o,
+ * unit direction d, the near and far planes at tNear and tFar), rows in parallel (vtkSMPTools);
+ * Scratch is default-constructed once per block of rows (per-thread work space).
+ */
+template <class Scratch, class PerPixel>
+void ForEachPixelRay(const Frame& frame, PerPixel perPixel)
+{
+  const int width = frame.Width;
+  const RayCamera& cam = *frame.Camera;
+  vtkSMPTools::For(0, frame.Height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
+    Scratch scratch;
+    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+        double o[3];
+        double d[3];
+        double tNear;
+        double tFar;
+        cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+        perPixel(x, static_cast<int>(y), pixel, o, d, tNear, tFar, scratch);
+      }
+    }
+  });
+}
 } // namespace prReference
 
 #endif

@@ -143,7 +143,7 @@ int SetUpLights(vtkRenderer* renderer, vtkCamera* camera, const double viewMatri
   {
     const bool haveNormals = input && input->GetPointData()->GetNormals() != nullptr;
     needLighting = (property->GetInterpolation() != VTK_FLAT && haveNormals) ||
-      property->GetRenderPointsAsSpheres();
+                   property->GetRenderPointsAsSpheres();
   }
   if (!property->GetLighting() || !needLighting || lights.empty())
   {
@@ -222,8 +222,7 @@ std::uint32_t Frame::Shade(const double n[3], const double p[3], const double am
       {
         const bool inCone =
           SceneLight(n, p, light, complexity == 3, specularPower, diffuse, specular);
-        if (complexity == 3 && light.Positional && light.ConeAngle < 90.0 &&
-          bit < MaximumConeBits)
+        if (complexity == 3 && light.Positional && light.ConeAngle < 90.0 && bit < MaximumConeBits)
         {
           cones |= (inCone ? 1u : 0u) << bit++;
         }
@@ -240,105 +239,78 @@ std::uint32_t Frame::Shade(const double n[3], const double p[3], const double am
 //------------------------------------------------------------------------------
 void RenderOpaque(const Frame& frame)
 {
-  const int width = frame.Width;
-  const int height = frame.Height;
   const RayCamera& cam = *frame.Camera;
-  const SphereGrid& grid = *frame.Grid;
   const std::vector<SphereVC>& spheres = frame.Spheres;
   const std::vector<vtkIdType>& ids = frame.Ids;
   const int aoSamples = frame.AmbientOcclusionSamples;
-  const double* background = frame.Background;
-  const double backgroundAlpha = frame.BackgroundAlpha;
   double* colorOut = frame.ColorOut;
-  double* depthOut = frame.DepthOut;
-  double* viewDepthOut = frame.ViewDepthOut;
-  double* normalOut = frame.NormalOut;
-  vtkIdType* idOut = frame.IdOut;
-  unsigned char* insideOut = frame.InsideOut;
-  std::uint32_t* coneOut = frame.ConeOut;
   double* aoOut = frame.AmbientOcclusionOut;
-  double* translucentAlphaOut = frame.TranslucentAlphaOut;
-  vtkSMPTools::For(0, height,
-    [&](vtkIdType rowBegin, vtkIdType rowEnd)
+  ForEachPixelRay<std::vector<std::uint32_t>>(frame,
+    [&](int x, int y, std::size_t pixel, const double o[3], const double d[3], double tNear,
+      double tFar, std::vector<std::uint32_t>& scratch)
     {
-      std::vector<std::uint32_t> aoCandidates;
-      for (vtkIdType y = rowBegin; y < rowEnd; ++y)
-      {
-        for (int x = 0; x < width; ++x)
-        {
-          const size_t pixel = static_cast<size_t>(y) * width + x;
-          double o[3];
-          double d[3];
-          double tNear;
-          double tFar;
-          cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
-          Hit hit;
-          const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
-          const double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
-          grid.Trace(cam, spheres, o, d, tMin, tMax, hit);
+      std::vector<std::uint32_t>& aoCandidates = scratch;
+      Hit hit;
+      const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
+      const double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
+      frame.Grid->Trace(cam, spheres, o, d, tMin, tMax, hit);
 
-          double rgbaOut[4] = { background[0], background[1], background[2], backgroundAlpha };
-          double depth = 1.0;
-          double viewDepth = -1.0;
-          vtkIdType id = -1;
-          unsigned char inside = 0;
-          std::uint32_t cones = 0;
-          double normal[3] = { 0, 0, 0 };
-          if (hit.Index >= 0)
+      double rgbaOut[4] = { frame.Background[0], frame.Background[1], frame.Background[2],
+        frame.BackgroundAlpha };
+      double depth = 1.0;
+      double viewDepth = -1.0;
+      vtkIdType id = -1;
+      unsigned char inside = 0;
+      std::uint32_t cones = 0;
+      double normal[3] = { 0, 0, 0 };
+      if (hit.Index >= 0)
+      {
+        const SphereVC& s = spheres[hit.Index];
+        const vtkIdType pid = ids[hit.Index];
+        double n[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
+        }
+        const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
+        double amb[3];
+        double dif[3];
+        double alpha;
+        frame.Material(pid, amb, dif, alpha);
+        double color[3];
+        cones = frame.Shade(n, p, amb, dif, color);
+        double occlusion = 1.0;
+        if (aoSamples > 0)
+        {
+          occlusion = AmbientOcclusion(frame, p, n, hit.Index, x, y, aoCandidates);
+          if (frame.ApplyAmbientOcclusion)
           {
-            const SphereVC& s = spheres[hit.Index];
-            const vtkIdType pid = ids[hit.Index];
-            double n[3];
             for (int k = 0; k < 3; ++k)
             {
-              n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
-            }
-            const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
-            double amb[3];
-            double dif[3];
-            double alpha;
-            frame.Material(pid, amb, dif, alpha);
-            double color[3];
-            cones = frame.Shade(n, p, amb, dif, color);
-            double occlusion = 1.0;
-            if (aoSamples > 0)
-            {
-              occlusion = AmbientOcclusion(frame, p, n, hit.Index, x, y, aoCandidates);
-              if (frame.ApplyAmbientOcclusion)
-              {
-                for (int k = 0; k < 3; ++k)
-                {
-                  color[k] *= occlusion;
-                }
-              }
-            }
-            const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
-              std::isfinite(color[2]) && std::isfinite(alpha);
-            if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
-            {
-              aoOut[pixel] = occlusion;
-              for (int k = 0; k < 3; ++k)
-              {
-                rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
-              }
-              rgbaOut[3] = std::min(1.0, std::max(0.0, alpha));
-              depth = hit.Depth;
-              viewDepth = hit.T;
-              id = pid;
-              inside = hit.Inside ? 1 : 0;
-              std::copy(n, n + 3, normal);
+              color[k] *= occlusion;
             }
           }
-          std::copy(rgbaOut, rgbaOut + 4, colorOut + 4 * pixel);
-          depthOut[pixel] = depth;
-          viewDepthOut[pixel] = viewDepth;
-          idOut[pixel] = id;
-          insideOut[pixel] = inside;
-          coneOut[pixel] = id >= 0 ? cones : 0;
-          std::copy(normal, normal + 3, normalOut + 3 * pixel);
-          translucentAlphaOut[pixel] = id >= 0 ? 1.0 : 0.0;
+        }
+        const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
+                            std::isfinite(color[2]) && std::isfinite(alpha);
+        if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
+        {
+          aoOut[pixel] = occlusion;
+          for (int k = 0; k < 3; ++k)
+          {
+            rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
+          }
+          rgbaOut[3] = std::min(1.0, std::max(0.0, alpha));
+          depth = hit.Depth;
+          viewDepth = hit.T;
+          id = pid;
+          inside = hit.Inside ? 1 : 0;
+          std::copy(n, n + 3, normal);
         }
       }
+      std::copy(rgbaOut, rgbaOut + 4, colorOut + 4 * pixel);
+      frame.WriteSurface(
+        pixel, depth, viewDepth, id, inside != 0, cones, normal, id >= 0 ? 1.0 : 0.0);
     });
 }
 } // namespace prReference
