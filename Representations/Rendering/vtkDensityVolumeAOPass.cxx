@@ -3,21 +3,15 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkFloatArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkParticleComputeProgram.h"
 #include "vtkParticleDensityVolume.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleSphereMapper.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -52,12 +46,9 @@ public:
   // the shader hooks this pass fills (warns once per missing hook)
   vtkParticleShaderHooks Hooks;
 
-  // progress of the build under way (ProgressThreshold): its text, and which part of the whole
-  // the volume's own progress (0..1) covers
+  // progress of the build under way (ProgressThreshold): its text
   std::string ProgressText;
   bool Reporting = false;
-  double VolumeProgressBase = 0.0;
-  double VolumeProgressSpan = 1.0;
 };
 
 //------------------------------------------------------------------------------
@@ -139,9 +130,7 @@ void vtkDensityVolumeAOPass::ReportProgress(double fraction)
 //------------------------------------------------------------------------------
 void vtkDensityVolumeAOPass::ForwardVolumeProgress(vtkObject*, unsigned long, void* callData)
 {
-  const vtkInternals& internals = *this->Internals;
-  this->ReportProgress(
-    internals.VolumeProgressBase + internals.VolumeProgressSpan * *static_cast<double*>(callData));
+  this->ReportProgress(*static_cast<double*>(callData));
 }
 
 //------------------------------------------------------------------------------
@@ -196,141 +185,17 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
     return;
   }
 
-  // All particles in world coordinates: their bounds and mean radius set up the grid; the
-  // positions and radii themselves are kept only for a CPU build.
-  vtkIdType total = 0;
+  // voxelise every particle prop into the volume and its texture (vtkParticleDensityVolume)
+  vtkParticleDensityVolume* volume = internals.Volume;
+  volume->BeginParticles();
   for (auto& item : particles)
   {
-    total += item.second->GetParticleRadii()->GetNumberOfTuples();
+    volume->AddParticles(item.first, item.second);
   }
-  // Progress (for a long build): the gathering of positions and bounds is about the first
-  // half of a CPU build (10^7 particles on two llvmpipe cores: 0.76 s of 1.4 s), the splat the rest.
-  const vtkProgressScope progressScope(this, total);
-  const double gatherShare = 0.5;
-  vtkNew<vtkFloatArray> positions;
-  positions->SetNumberOfComponents(3);
-  vtkNew<vtkFloatArray> radii;
-  double bounds[6];
-  double radiusSum = 0.0;
-  vtkIdType valid = 0;
-  // in parallel (vtkSMPTools): per thread bounds, radius sum and count, merged afterwards
-  struct Partial
-  {
-    double Bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
-      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
-    double RadiusSum = 0.0;
-    vtkIdType Valid = 0;
-  };
-  auto gather = [&](bool keep) {
-    for (int k = 0; k < 3; ++k)
-    {
-      bounds[2 * k] = VTK_DOUBLE_MAX;
-      bounds[2 * k + 1] = VTK_DOUBLE_MIN;
-    }
-    radiusSum = 0.0;
-    valid = 0;
-    positions->SetNumberOfTuples(keep ? total : 0);
-    radii->SetNumberOfTuples(keep ? total : 0);
-    float* outPositions = keep ? positions->GetPointer(0) : nullptr;
-    float* outRadii = keep ? radii->GetPointer(0) : nullptr;
-    vtkIdType offset = 0;
-    for (auto& item : particles)
-    {
-      const vtkIdType n = item.second->GetParticleRadii()->GetNumberOfTuples();
-      vtkPoints* inputPoints = item.second->GetInput()->GetPoints();
-      if (n == 0 || !inputPoints || inputPoints->GetNumberOfPoints() < n)
-      {
-        if (outRadii)
-        {
-          std::fill(outRadii + offset, outRadii + offset + n, 0.0f); // skipped
-        }
-        offset += n; // nothing drawn (the mapper reported why)
-        continue;
-      }
-      const float* r = item.second->GetParticleRadii()->GetPointer(0);
-      vtkDataArray* points = inputPoints->GetData();
-      vtkFloatArray* floatPoints = vtkFloatArray::FastDownCast(points);
-      const float* xyz = floatPoints ? floatPoints->GetPointer(0) : nullptr;
-      const double scale = item.second->GetRadiusScaleVC(item.first);
-      const double* m = item.first->GetMatrix()->GetData();
-      vtkSMPThreadLocal<Partial> partials;
-      vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-        Partial& partial = partials.Local();
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const double radius = r[i] * scale;
-          double q[3];
-          if (xyz)
-          {
-            q[0] = xyz[3 * i];
-            q[1] = xyz[3 * i + 1];
-            q[2] = xyz[3 * i + 2];
-          }
-          else
-          {
-            points->GetTuple(i, q);
-          }
-          double p[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
-          }
-          if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              partial.Bounds[2 * k] = std::min(partial.Bounds[2 * k], p[k]);
-              partial.Bounds[2 * k + 1] = std::max(partial.Bounds[2 * k + 1], p[k]);
-            }
-            partial.RadiusSum += radius;
-            ++partial.Valid;
-          }
-          if (outPositions)
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              outPositions[3 * (offset + i) + k] = static_cast<float>(p[k]);
-            }
-            outRadii[offset + i] = static_cast<float>(radius > 0.0 ? radius : 0.0);
-          }
-        }
-      });
-      for (const Partial& partial : partials)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          bounds[2 * k] = std::min(bounds[2 * k], partial.Bounds[2 * k]);
-          bounds[2 * k + 1] = std::max(bounds[2 * k + 1], partial.Bounds[2 * k + 1]);
-        }
-        radiusSum += partial.RadiusSum;
-        valid += partial.Valid;
-      }
-      offset += n;
-    }
-  };
-  const bool tryGPU = this->GenerationMode == GPU_GENERATION &&
-    vtkParticleComputeProgram::IsSupported(
-      vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()), nullptr);
-  gather(!tryGPU);
-  this->ReportProgress(gatherShare);
-  if (valid == 0)
-  {
-    vtkWarningMacro(<< "The particle props have no particle with a finite position and a "
-                       "radius > 0: no ambient occlusion.");
-    return;
-  }
-  // the GPU's largest 3D texture bounds the voxels per axis
-  GLint maxTexture3D = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxTexture3D);
-  if (!internals.Volume->SetUpGrid(bounds, radiusSum / valid, maxTexture3D))
-  {
-    return;
-  }
-  const int* dims = internals.Volume->GetDimensions();
+  const vtkProgressScope progressScope(this, volume->GetNumberOfParticles());
   vtkOpenGLRenderWindow* ctx =
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   vtkTextureObject* texture = internals.Texture;
-  texture->SetContext(ctx);
   texture->SetMinificationFilter(vtkTextureObject::Linear);
   texture->SetMagnificationFilter(vtkTextureObject::Linear);
   // outside the volume there is nothing: density 0
@@ -338,59 +203,12 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   texture->SetWrapT(vtkTextureObject::ClampToBorder);
   texture->SetWrapR(vtkTextureObject::ClampToBorder);
   texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
-
-  // GPU: splat every mapper's own vertex buffers into one volume
-  bool generated = false;
-  if (tryGPU)
-  {
-    generated = texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT, nullptr);
-    bool first = true;
-    std::size_t index = 0;
-    for (auto& item : particles)
-    {
-      internals.VolumeProgressSpan = (1.0 - gatherShare) / static_cast<double>(particles.size());
-      internals.VolumeProgressBase = gatherShare + internals.VolumeProgressSpan * index++;
-      unsigned int positionBuffer = 0;
-      unsigned int stride = 0;
-      unsigned int radiusBuffer = 0;
-      vtkIdType count = 0;
-      vtkNew<vtkMatrix4x4> bufferToModel;
-      if (!generated ||
-        !item.second->GetParticleBuffers(positionBuffer, stride, radiusBuffer, count, bufferToModel))
-      {
-        generated = false; // not drawn yet (first frame): the CPU builds this one
-        break;
-      }
-      vtkNew<vtkMatrix4x4> bufferToWorld;
-      vtkMatrix4x4::Multiply4x4(item.first->GetMatrix(), bufferToModel, bufferToWorld);
-      generated = internals.Volume->ComputeOnGPU(ctx, positionBuffer, stride,
-        bufferToWorld->GetData(), radiusBuffer, item.second->GetRadiusScaleVC(item.first), count,
-        !first);
-      first = false;
-    }
-    generated = generated && internals.Volume->CopyVolumeBufferToTexture(texture->GetHandle());
-  }
-  this->LastGenerationMode = generated ? GPU_GENERATION : CPU_GENERATION;
+  const bool generated =
+    volume->EndParticles(ctx, this->GenerationMode == GPU_GENERATION, texture);
+  this->LastGenerationMode = volume->GetLastBuiltOnGPU() ? GPU_GENERATION : CPU_GENERATION;
   if (!generated)
   {
-    if (tryGPU)
-    {
-      gather(true); // the GPU could not build it: the CPU needs the particles after all
-    }
-    internals.VolumeProgressBase = gatherShare;
-    internals.VolumeProgressSpan = 1.0 - gatherShare;
-    if (!internals.Volume->ComputeOnCPU(positions, radii))
-    {
-      return;
-    }
-    generated = texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT,
-      const_cast<float*>(internals.Volume->GetVolume().data()));
-  }
-  if (!generated)
-  {
-    vtkErrorMacro(<< "Cannot create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
-                  << " density texture: ambient occlusion is off.");
-    return;
+    return; // the volume said why; no ambient occlusion
   }
   internals.TextureValid = true;
   ++this->NumberOfVolumeBuilds;

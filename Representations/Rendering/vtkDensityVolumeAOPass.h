@@ -28,7 +28,10 @@
  * The volume is rebuilt only when the particles' positions or radii, the set of particle props,
  * their matrices or the pass's settings change -- never when only the camera moves
  * (GetNumberOfVolumeBuilds counts). Generation on the CPU (vtkSMPTools) or the GPU (compute
- * shader over the mappers' own vertex buffers), see GenerationMode.
+ * shader over the mappers' own vertex buffers), see GenerationMode; the voxelisation itself
+ * (gathering the props' particles, the grid, the splat, the texture) is
+ * vtkParticleDensityVolume's BeginParticles / AddParticles / EndParticles, which other
+ * volume-based techniques reuse.
  *
  * @sa vtkParticleDensityVolume vtkParticleSphereMapper vtkSSAOPass
  */

@@ -1,21 +1,30 @@
 #include "vtkParticleDensityVolume.h"
 
+#include "vtkActor.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleShaders.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkParticleDensityVolume);
 
@@ -35,14 +44,6 @@ vtkIdType BlockSize(vtkObject* self, vtkIdType n)
   return std::max(MinimumBlockSize, (n + ProgressBlocks - 1) / ProgressBlocks);
 }
 
-void ReportProgress(vtkObject* self, vtkIdType done, vtkIdType n)
-{
-  if (self->HasObserver(vtkCommand::ProgressEvent))
-  {
-    double fraction = n > 0 ? static_cast<double>(done) / static_cast<double>(n) : 1.0;
-    self->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
-  }
-}
 }
 
 namespace
@@ -61,7 +62,25 @@ public:
   unsigned int VolumeBuffer = 0;
   size_t Capacity = 0; // voxels
   vtkWeakPointer<vtkOpenGLRenderWindow> Context; // of the buffers
+
+  // the particle props of BeginParticles ... EndParticles
+  std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> Props;
+  // the part of the whole progress (0..1) the current block loop covers (EndParticles)
+  double ProgressBase = 0.0;
+  double ProgressSpan = 1.0;
 };
+
+//------------------------------------------------------------------------------
+void vtkParticleDensityVolume::ReportProgress(vtkIdType done, vtkIdType n)
+{
+  if (this->HasObserver(vtkCommand::ProgressEvent))
+  {
+    const vtkInternals& internals = *this->Internals;
+    const double part = n > 0 ? static_cast<double>(done) / static_cast<double>(n) : 1.0;
+    double fraction = internals.ProgressBase + internals.ProgressSpan * part;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  }
+}
 
 //------------------------------------------------------------------------------
 vtkParticleDensityVolume::vtkParticleDensityVolume()
@@ -232,11 +251,11 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
     }
   };
   const vtkIdType block = BlockSize(this, n);
-  ReportProgress(this, 0, n);
+  this->ReportProgress(0, n);
   for (vtkIdType first = 0; first < n; first += block)
   {
     vtkSMPTools::For(first, std::min(n, first + block), splat);
-    ReportProgress(this, std::min(n, first + block), n);
+    this->ReportProgress(std::min(n, first + block), n);
   }
   this->Volume.assign(voxels, 0.0f);
   float* out = this->Volume.data();
@@ -346,14 +365,14 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, radiusBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, internals.Counts);
   const vtkIdType block = BlockSize(this, count);
-  ReportProgress(this, 0, count);
+  this->ReportProgress(0, count);
   for (vtkIdType first = 0; first < count; first += block)
   {
     const vtkIdType blockCount = std::min(count - first, block);
     splat->SetUniformui("first", static_cast<unsigned int>(first));
     splat->SetUniformui("count", static_cast<unsigned int>(first + blockCount));
     splat->Dispatch(static_cast<unsigned int>((blockCount + 255) / 256));
-    ReportProgress(this, first + blockCount, count);
+    this->ReportProgress(first + blockCount, count);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -410,6 +429,234 @@ bool vtkParticleDensityVolume::ReadVolumeBuffer()
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, voxels * sizeof(float), this->Volume.data());
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDensityVolume::BeginParticles()
+{
+  this->Internals->Props.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDensityVolume::AddParticles(vtkActor* actor, vtkParticleSphereMapper* mapper)
+{
+  if (actor && mapper && mapper->GetInput())
+  {
+    this->Internals->Props.emplace_back(actor, mapper);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkParticleDensityVolume::GetNumberOfParticles()
+{
+  vtkIdType total = 0;
+  for (auto& item : this->Internals->Props)
+  {
+    total += item.second->GetParticleRadii()->GetNumberOfTuples();
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::GatherParticles(
+  vtkFloatArray* positions, vtkFloatArray* radii, double bounds[6], double& meanRadius)
+{
+  const vtkIdType total = this->GetNumberOfParticles();
+  double radiusSum = 0.0;
+  vtkIdType valid = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] = VTK_DOUBLE_MAX;
+    bounds[2 * k + 1] = VTK_DOUBLE_MIN;
+  }
+  const bool keep = positions && radii;
+  if (keep)
+  {
+    positions->SetNumberOfComponents(3);
+    positions->SetNumberOfTuples(total);
+    radii->SetNumberOfTuples(total);
+  }
+  float* outPositions = keep ? positions->GetPointer(0) : nullptr;
+  float* outRadii = keep ? radii->GetPointer(0) : nullptr;
+  // in parallel (vtkSMPTools): per thread bounds, radius sum and count, merged afterwards
+  struct Partial
+  {
+    double Bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    double RadiusSum = 0.0;
+    vtkIdType Valid = 0;
+  };
+  vtkIdType offset = 0;
+  for (auto& item : this->Internals->Props)
+  {
+    const vtkIdType n = item.second->GetParticleRadii()->GetNumberOfTuples();
+    vtkPoints* inputPoints = item.second->GetInput()->GetPoints();
+    if (n == 0 || !inputPoints || inputPoints->GetNumberOfPoints() < n)
+    {
+      if (outRadii)
+      {
+        std::fill(outRadii + offset, outRadii + offset + n, 0.0f); // skipped
+      }
+      offset += n; // nothing drawn (the mapper reported why)
+      continue;
+    }
+    const float* r = item.second->GetParticleRadii()->GetPointer(0);
+    vtkDataArray* points = inputPoints->GetData();
+    vtkFloatArray* floatPoints = vtkFloatArray::FastDownCast(points);
+    const float* xyz = floatPoints ? floatPoints->GetPointer(0) : nullptr;
+    const double scale = item.second->GetRadiusScaleVC(item.first);
+    const double* m = item.first->GetMatrix()->GetData();
+    vtkSMPThreadLocal<Partial> partials;
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      Partial& partial = partials.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double radius = r[i] * scale;
+        double q[3];
+        if (xyz)
+        {
+          q[0] = xyz[3 * i];
+          q[1] = xyz[3 * i + 1];
+          q[2] = xyz[3 * i + 2];
+        }
+        else
+        {
+          points->GetTuple(i, q);
+        }
+        double p[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
+        }
+        if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            partial.Bounds[2 * k] = std::min(partial.Bounds[2 * k], p[k]);
+            partial.Bounds[2 * k + 1] = std::max(partial.Bounds[2 * k + 1], p[k]);
+          }
+          partial.RadiusSum += radius;
+          ++partial.Valid;
+        }
+        if (outPositions)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            outPositions[3 * (offset + i) + k] = static_cast<float>(p[k]);
+          }
+          outRadii[offset + i] = static_cast<float>(radius > 0.0 ? radius : 0.0);
+        }
+      }
+    });
+    for (const Partial& partial : partials)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        bounds[2 * k] = std::min(bounds[2 * k], partial.Bounds[2 * k]);
+        bounds[2 * k + 1] = std::max(bounds[2 * k + 1], partial.Bounds[2 * k + 1]);
+      }
+      radiusSum += partial.RadiusSum;
+      valid += partial.Valid;
+    }
+    offset += n;
+  }
+  meanRadius = valid > 0 ? radiusSum / valid : 0.0;
+  return valid > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::EndParticles(
+  vtkOpenGLRenderWindow* context, bool onGPU, vtkTextureObject* texture)
+{
+  vtkInternals& internals = *this->Internals;
+  this->LastBuiltOnGPU = false;
+  if (internals.Props.empty() || !context || !texture)
+  {
+    vtkErrorMacro(<< "EndParticles() needs particle props (AddParticles), a context and a texture.");
+    return false;
+  }
+  onGPU = onGPU && vtkParticleComputeProgram::IsSupported(context, nullptr);
+  // the particles in world coordinates: bounds and mean radius set up the grid; positions and
+  // radii are kept only for a CPU build. Progress: gathering is about the first half of a CPU
+  // build (10^7 particles on two llvmpipe cores: 0.76 s of 1.4 s), the splat the rest.
+  const double gatherShare = 0.5;
+  vtkNew<vtkFloatArray> positions;
+  vtkNew<vtkFloatArray> radii;
+  double bounds[6];
+  double meanRadius = 0.0;
+  const bool any = this->GatherParticles(
+    onGPU ? nullptr : positions.Get(), onGPU ? nullptr : radii.Get(), bounds, meanRadius);
+  internals.ProgressBase = 0.0;
+  internals.ProgressSpan = 1.0;
+  this->ReportProgress(1, 2); // gathered: gatherShare
+  if (!any)
+  {
+    vtkWarningMacro(<< "The particle props have no particle with a finite position and a "
+                       "radius > 0: the density volume stays empty.");
+    return false;
+  }
+  // the GPU's largest 3D texture bounds the voxels per axis
+  if (!this->SetUpGrid(bounds, meanRadius, vtkTextureObject::GetMaximumTextureSize3D(context)))
+  {
+    return false;
+  }
+  const int* dims = this->Dimensions;
+  texture->SetContext(context);
+
+  // GPU: splat every mapper's own vertex buffers into one volume
+  bool generated = false;
+  if (onGPU)
+  {
+    generated = texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT, nullptr);
+    bool first = true;
+    std::size_t index = 0;
+    for (auto& item : internals.Props)
+    {
+      internals.ProgressSpan = (1.0 - gatherShare) / static_cast<double>(internals.Props.size());
+      internals.ProgressBase = gatherShare + internals.ProgressSpan * index++;
+      unsigned int positionBuffer = 0;
+      unsigned int stride = 0;
+      unsigned int radiusBuffer = 0;
+      vtkIdType count = 0;
+      vtkNew<vtkMatrix4x4> bufferToModel;
+      if (!generated ||
+        !item.second->GetParticleBuffers(positionBuffer, stride, radiusBuffer, count, bufferToModel))
+      {
+        generated = false; // not drawn yet (first frame): the CPU builds this one
+        break;
+      }
+      vtkNew<vtkMatrix4x4> bufferToWorld;
+      vtkMatrix4x4::Multiply4x4(item.first->GetMatrix(), bufferToModel, bufferToWorld);
+      generated = this->ComputeOnGPU(context, positionBuffer, stride, bufferToWorld->GetData(),
+        radiusBuffer, item.second->GetRadiusScaleVC(item.first), count, !first);
+      first = false;
+    }
+    generated = generated && this->CopyVolumeBufferToTexture(texture->GetHandle());
+    if (!generated)
+    {
+      // the GPU could not build it: the CPU needs the particles after all
+      this->GatherParticles(positions, radii, bounds, meanRadius);
+    }
+  }
+  this->LastBuiltOnGPU = generated;
+  if (!generated)
+  {
+    internals.ProgressBase = gatherShare;
+    internals.ProgressSpan = 1.0 - gatherShare;
+    if (this->ComputeOnCPU(positions, radii))
+    {
+      generated = texture->Create3DFromRaw(
+        dims[0], dims[1], dims[2], 1, VTK_FLOAT, const_cast<float*>(this->Volume.data()));
+    }
+  }
+  internals.ProgressBase = 0.0;
+  internals.ProgressSpan = 1.0;
+  if (!generated)
+  {
+    vtkErrorMacro(<< "Cannot create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " density texture.");
+  }
+  return generated;
 }
 
 //------------------------------------------------------------------------------

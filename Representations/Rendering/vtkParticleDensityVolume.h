@@ -58,9 +58,12 @@
 
 #include <vector> // for std::vector
 
+class vtkActor;
 class vtkDataArray;
 class vtkFloatArray;
 class vtkOpenGLRenderWindow;
+class vtkParticleSphereMapper;
+class vtkTextureObject;
 class vtkWindow;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleDensityVolume : public vtkObject
@@ -152,6 +155,28 @@ public:
   unsigned int GetVolumeBuffer();
   bool ReadVolumeBuffer();
 
+  ///@{
+  /**
+   * Voxelise the particles of several props into this volume, in MegaMol's start / insert / end
+   * shape, for any technique that needs a particle volume (density AO, later voxel-cone AO):
+   * BeginParticles() forgets the previous props; AddParticles() adds the spheres a
+   * vtkParticleSphereMapper draws for an actor (world coordinates through the actor's matrix,
+   * radii as drawn, skipped particles left out); EndParticles() gathers their bounds and mean
+   * radius (vtkSMPTools), sets up the grid (capped by the context's largest 3D texture),
+   * splats them on the GPU from the mappers' own vertex buffers (onGPU, OpenGL 4.3, once every
+   * mapper has drawn) or else on the CPU, and fills texture (a one-component float 3D texture,
+   * whose sampling parameters the caller sets). False, with a message, when there is nothing to
+   * voxelise or the texture cannot be made. Progress: 0.5 once gathered, then the splat blocks.
+   * GetNumberOfParticles() counts the particles added (for progress thresholds);
+   * GetLastBuiltOnGPU() says where the last EndParticles() built the volume.
+   */
+  void BeginParticles();
+  void AddParticles(vtkActor* actor, vtkParticleSphereMapper* mapper);
+  vtkIdType GetNumberOfParticles();
+  bool EndParticles(vtkOpenGLRenderWindow* context, bool onGPU, vtkTextureObject* texture);
+  vtkGetMacro(LastBuiltOnGPU, bool);
+  ///@}
+
   /**
    * The last volume computed on the CPU or read back from the GPU.
    */
@@ -172,10 +197,18 @@ protected:
   double Origin[3] = { 0.0, 0.0, 0.0 };
   double VoxelSize = 0.0;
   std::vector<float> Volume;
+  bool LastBuiltOnGPU = false;
 
 private:
   vtkParticleDensityVolume(const vtkParticleDensityVolume&) = delete;
   void operator=(const vtkParticleDensityVolume&) = delete;
+
+  // the particles of the props added, in world coordinates (positions and radii only when
+  // both are given); false when none is valid
+  bool GatherParticles(
+    vtkFloatArray* positions, vtkFloatArray* radii, double bounds[6], double& meanRadius);
+  // a ProgressEvent for `done` of `n` particles, in the current progress window
+  void ReportProgress(vtkIdType done, vtkIdType n);
 
   class vtkInternals;
   vtkInternals* Internals;
