@@ -1,6 +1,7 @@
 #include "vtkParticleComputeProgram.h"
 
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkWeakPointer.h"
 
@@ -367,6 +368,76 @@ bool vtkParticleComputeProgram::MakeCurrentForRelease(vtkOpenGLRenderWindow* con
   }
   context->MakeCurrent();
   return context->IsCurrent();
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::AllocateStorage(vtkOpenGLBufferObject* buffer, std::size_t bytes)
+{
+  if (!buffer || (buffer->GetHandle() == 0 && !buffer->GenerateBuffer(buffer->GetType())))
+  {
+    return false;
+  }
+  while (glGetError() != GL_NO_ERROR)
+  {
+    // errors of earlier code are not ours to report; clear them to see our own
+  }
+  glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
+  glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  return glGetError() == GL_NO_ERROR;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleComputeProgram::BindStorage(unsigned int binding, vtkOpenGLBufferObject* buffer)
+{
+  glBindBufferBase(
+    GL_SHADER_STORAGE_BUFFER, binding, buffer ? static_cast<GLuint>(buffer->GetHandle()) : 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::UploadStorage(
+  vtkOpenGLBufferObject* buffer, std::size_t offset, std::size_t bytes, const void* data)
+{
+  if (!buffer || buffer->GetHandle() == 0)
+  {
+    return false;
+  }
+  glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
+  glBufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset),
+    static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::DownloadStorage(
+  vtkOpenGLBufferObject* buffer, std::size_t offset, std::size_t bytes, void* data)
+{
+  if (!buffer || buffer->GetHandle() == 0)
+  {
+    return false;
+  }
+  glBindBuffer(GL_COPY_READ_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
+  glGetBufferSubData(GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset),
+    static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::ClearStorage(
+  vtkOpenGLBufferObject* buffer, std::size_t bytes, unsigned int value)
+{
+  if (!buffer || buffer->GetHandle() == 0)
+  {
+    return false;
+  }
+  const GLuint word = value;
+  glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
+  glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, 0, static_cast<GLsizeiptr>(bytes),
+    GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -4,9 +4,12 @@
  *
  * A small wrapper for OpenGL 4.3 compute shaders: set the full GLSL source (including its
  * `#version 430` line; sources of Shaders/ come from vtkParticleShaders::Get()), Build() it in a
- * context, Use() it, set uniforms by name and Dispatch() work groups. Shader storage buffers are
- * bound by the caller with glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ...), and the caller issues
- * the glMemoryBarrier() its next reader needs.
+ * context, Use() it, set uniforms by name and Dispatch() work groups. It is also the project's one
+ * shader-storage layer: buffers are VTK's vtkOpenGLBufferObject (a mapper's vertex buffers serve
+ * as input as they are), allocated, filled, read and bound to the binding points a compute source
+ * declares through the static *Storage() functions -- shaped like newer VTK's compute shaders
+ * and shader-storage buffer objects, so that it can give way to them when ParaView moves on. The
+ * caller issues the glMemoryBarrier() its next reader needs.
  *
  * Every method that talks to OpenGL expects the context given to Build() to be current.
  *
@@ -29,8 +32,10 @@
 #include "vtkObject.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
+#include <cstddef> // for std::size_t
 #include <string> // for std::string
 
+class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkWindow;
 
@@ -63,6 +68,25 @@ public:
    * with it, delete nothing.
    */
   static bool MakeCurrentForRelease(vtkOpenGLRenderWindow* context);
+
+  ///@{
+  /**
+   * Shader storage, on VTK's buffer objects (so a mapper's vertex buffers serve as input too):
+   * AllocateStorage() creates `buffer` in the current context when needed and sizes it to
+   * `bytes` for GPU-side use (contents undefined); BindStorage() binds it to the indexed shader
+   * storage binding point `binding` that the compute source declares (nullptr unbinds);
+   * UploadStorage() / DownloadStorage() copy bytes to / from it and ClearStorage() fills its
+   * first `bytes` with a 32-bit value. They use the GL_COPY_READ/WRITE targets, so the
+   * array, element and storage bindings of the caller stay as they were. False on a GL error.
+   */
+  static bool AllocateStorage(vtkOpenGLBufferObject* buffer, std::size_t bytes);
+  static void BindStorage(unsigned int binding, vtkOpenGLBufferObject* buffer);
+  static bool UploadStorage(
+    vtkOpenGLBufferObject* buffer, std::size_t offset, std::size_t bytes, const void* data);
+  static bool DownloadStorage(
+    vtkOpenGLBufferObject* buffer, std::size_t offset, std::size_t bytes, void* data);
+  static bool ClearStorage(vtkOpenGLBufferObject* buffer, std::size_t bytes, unsigned int value);
+  ///@}
 
   ///@{
   /**

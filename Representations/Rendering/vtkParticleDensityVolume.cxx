@@ -8,6 +8,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleShaders.h"
@@ -58,8 +59,8 @@ class vtkParticleDensityVolume::vtkInternals
 public:
   vtkNew<vtkParticleComputeProgram> Splat;
   vtkNew<vtkParticleComputeProgram> Convert;
-  unsigned int Counts = 0;
-  unsigned int VolumeBuffer = 0;
+  vtkNew<vtkOpenGLBufferObject> Counts;       // fixed-point sums per voxel
+  vtkNew<vtkOpenGLBufferObject> VolumeBuffer; // densities per voxel
   size_t Capacity = 0; // voxels
   vtkWeakPointer<vtkOpenGLRenderWindow> Context; // of the buffers
 
@@ -284,8 +285,9 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
 
 //------------------------------------------------------------------------------
 bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
-  unsigned int positionBuffer, unsigned int positionStride, const double bufferToGrid[16],
-  unsigned int radiusBuffer, double radiusScale, vtkIdType count, bool accumulate)
+  vtkOpenGLBufferObject* positionBuffer, unsigned int positionStride,
+  const double bufferToGrid[16], vtkOpenGLBufferObject* radiusBuffer, double radiusScale,
+  vtkIdType count, bool accumulate)
 {
   vtkInternals& internals = *this->Internals;
   const size_t voxels =
@@ -316,25 +318,18 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   internals.Context = context;
   if (internals.Capacity < voxels)
   {
-    if (!internals.Counts)
+    if (!vtkParticleComputeProgram::AllocateStorage(internals.Counts, voxels * sizeof(GLuint)) ||
+      !vtkParticleComputeProgram::AllocateStorage(internals.VolumeBuffer, voxels * sizeof(float)))
     {
-      glGenBuffers(1, &internals.Counts);
-      glGenBuffers(1, &internals.VolumeBuffer);
+      vtkErrorMacro(<< "Cannot allocate the GPU buffers of " << voxels << " voxels.");
+      internals.Capacity = 0;
+      return false;
     }
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Counts);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, voxels * sizeof(GLuint), nullptr, GL_DYNAMIC_COPY);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.VolumeBuffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, voxels * sizeof(float), nullptr, GL_DYNAMIC_COPY);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     internals.Capacity = voxels;
   }
   if (!accumulate)
   {
-    const GLuint zero = 0;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Counts);
-    glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0, voxels * sizeof(GLuint),
-      GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    vtkParticleComputeProgram::ClearStorage(internals.Counts, voxels * sizeof(GLuint), 0);
   }
 
   // voxel coordinate = (M p - origin) / edge, folded in double; column-major for GL
@@ -361,9 +356,9 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
     this->Dimensions[2]);
   splat->SetUniformf("unitContribution",
     static_cast<float>(4.0 / 3.0 * vtkMath::Pi() / std::pow(this->VoxelSize, 3) * FixedPointScale));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positionBuffer);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, radiusBuffer);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, internals.Counts);
+  vtkParticleComputeProgram::BindStorage(0, positionBuffer);
+  vtkParticleComputeProgram::BindStorage(1, radiusBuffer);
+  vtkParticleComputeProgram::BindStorage(2, internals.Counts);
   const vtkIdType block = BlockSize(this, count);
   this->ReportProgress(0, count);
   for (vtkIdType first = 0; first < count; first += block)
@@ -380,27 +375,30 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   convert->Use();
   convert->SetUniformui("voxelCount", static_cast<unsigned int>(voxels));
   convert->SetUniformf("toDensity", static_cast<float>(this->DensityFactor / FixedPointScale));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, internals.VolumeBuffer);
+  vtkParticleComputeProgram::BindStorage(3, internals.VolumeBuffer);
   convert->Dispatch(static_cast<unsigned int>((voxels + 255) / 256));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_TEXTURE_UPDATE_BARRIER_BIT);
-  for (GLuint binding = 0; binding < 4; ++binding)
+  for (unsigned int binding = 0; binding < 4; ++binding)
   {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+    vtkParticleComputeProgram::BindStorage(binding, nullptr);
   }
   glUseProgram(0);
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleDensityVolume::CopyVolumeBufferToTexture(unsigned int texture3D)
+bool vtkParticleDensityVolume::CopyVolumeBufferToTexture(vtkTextureObject* texture)
 {
-  if (!this->Internals->VolumeBuffer || !texture3D)
+  vtkOpenGLBufferObject* volume = this->Internals->VolumeBuffer;
+  if (volume->GetHandle() == 0 || !texture || texture->GetHandle() == 0 ||
+    texture->GetTarget() != GL_TEXTURE_3D)
   {
     return false;
   }
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, this->Internals->VolumeBuffer);
-  glBindTexture(GL_TEXTURE_3D, texture3D);
+  // from the buffer as the pixel source: no round trip through the CPU
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(volume->GetHandle()));
+  texture->Bind();
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, this->Dimensions[0], this->Dimensions[1],
     this->Dimensions[2], GL_RED, GL_FLOAT, nullptr);
@@ -410,7 +408,7 @@ bool vtkParticleDensityVolume::CopyVolumeBufferToTexture(unsigned int texture3D)
 }
 
 //------------------------------------------------------------------------------
-unsigned int vtkParticleDensityVolume::GetVolumeBuffer()
+vtkOpenGLBufferObject* vtkParticleDensityVolume::GetVolumeBuffer()
 {
   return this->Internals->VolumeBuffer;
 }
@@ -420,15 +418,13 @@ bool vtkParticleDensityVolume::ReadVolumeBuffer()
 {
   const size_t voxels =
     static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
-  if (!this->Internals->VolumeBuffer || voxels > this->Internals->Capacity)
+  if (this->Internals->VolumeBuffer->GetHandle() == 0 || voxels > this->Internals->Capacity)
   {
     return false;
   }
   this->Volume.resize(voxels);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Internals->VolumeBuffer);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, voxels * sizeof(float), this->Volume.data());
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return true;
+  return vtkParticleComputeProgram::DownloadStorage(
+    this->Internals->VolumeBuffer, 0, voxels * sizeof(float), this->Volume.data());
 }
 
 //------------------------------------------------------------------------------
@@ -614,9 +610,9 @@ bool vtkParticleDensityVolume::EndParticles(
     {
       internals.ProgressSpan = (1.0 - gatherShare) / static_cast<double>(internals.Props.size());
       internals.ProgressBase = gatherShare + internals.ProgressSpan * index++;
-      unsigned int positionBuffer = 0;
+      vtkOpenGLBufferObject* positionBuffer = nullptr;
       unsigned int stride = 0;
-      unsigned int radiusBuffer = 0;
+      vtkOpenGLBufferObject* radiusBuffer = nullptr;
       vtkIdType count = 0;
       vtkNew<vtkMatrix4x4> bufferToModel;
       if (!generated ||
@@ -631,7 +627,7 @@ bool vtkParticleDensityVolume::EndParticles(
         radiusBuffer, item.second->GetRadiusScaleVC(item.first), count, !first);
       first = false;
     }
-    generated = generated && this->CopyVolumeBufferToTexture(texture->GetHandle());
+    generated = generated && this->CopyVolumeBufferToTexture(texture);
     if (!generated)
     {
       // the GPU could not build it: the CPU needs the particles after all
@@ -665,14 +661,11 @@ void vtkParticleDensityVolume::ReleaseGraphicsResources(vtkWindow* window)
   vtkInternals& internals = *this->Internals;
   internals.Splat->ReleaseGraphicsResources(window);
   internals.Convert->ReleaseGraphicsResources(window);
-  if (internals.Counts)
+  if (internals.Counts->GetHandle() != 0 &&
+    vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context))
   {
-    if (vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context))
-    {
-      glDeleteBuffers(1, &internals.Counts);
-      glDeleteBuffers(1, &internals.VolumeBuffer);
-    }
-    internals.Counts = internals.VolumeBuffer = 0;
+    internals.Counts->ReleaseGraphicsResources();
+    internals.VolumeBuffer->ReleaseGraphicsResources();
   }
   internals.Context = nullptr;
   internals.Capacity = 0;

@@ -61,6 +61,7 @@
 class vtkActor;
 class vtkDataArray;
 class vtkFloatArray;
+class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkParticleSphereMapper;
 class vtkTextureObject;
@@ -148,11 +149,12 @@ public:
    * volume). The result stays in GetVolumeBuffer() (floats, x fastest); ReadVolumeBuffer()
    * copies it to GetVolume() (for tests), CopyVolumeBufferToTexture() into a 3D texture.
    */
-  bool ComputeOnGPU(vtkOpenGLRenderWindow* context, unsigned int positionBuffer,
-    unsigned int positionStride, const double bufferToGrid[16], unsigned int radiusBuffer,
-    double radiusScale, vtkIdType count, bool accumulate = false);
-  bool CopyVolumeBufferToTexture(unsigned int texture3D);
-  unsigned int GetVolumeBuffer();
+  bool ComputeOnGPU(vtkOpenGLRenderWindow* context, vtkOpenGLBufferObject* positionBuffer,
+    unsigned int positionStride, const double bufferToGrid[16],
+    vtkOpenGLBufferObject* radiusBuffer, double radiusScale, vtkIdType count,
+    bool accumulate = false);
+  bool CopyVolumeBufferToTexture(vtkTextureObject* texture3D);
+  vtkOpenGLBufferObject* GetVolumeBuffer();
   bool ReadVolumeBuffer();
 
   ///@{

@@ -3,6 +3,7 @@
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
@@ -69,6 +70,8 @@ public:
   vtkNew<vtkParticleComputeProgram> Scatter;
   vtkOpenGLRenderTimer Timer;
   bool Timed = false;
+  // keys, indices (an element array), scratch keys (+ tail), scratch indices
+  vtkNew<vtkOpenGLBufferObject> Buffers[4];
   bool BuiltCoalescedWrites = true;
 
   std::vector<std::pair<vtkParticleComputeProgram*, const char*>> Programs()
@@ -159,7 +162,7 @@ bool vtkParticleDepthSort::Reserve(vtkOpenGLRenderWindow* context, vtkIdType cou
   {
     return false;
   }
-  if (count <= this->Capacity && this->Buffers[0] != 0)
+  if (count <= this->Capacity && this->Internals->Buffers[0]->GetHandle() != 0)
   {
     return true;
   }
@@ -213,35 +216,36 @@ bool vtkParticleDepthSort::Reserve(vtkOpenGLRenderWindow* context, vtkIdType cou
   const std::uint64_t capacity = n < Tile ? Tile : n;
   const std::uint64_t bytes[4] = { 4 * capacity, 4 * capacity, 4 * (capacity + TailSize(capacity)),
     4 * capacity };
-  if (this->Buffers[0] == 0)
-  {
-    glGenBuffers(4, this->Buffers);
-  }
-  GLint previous = 0;
-  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &previous);
-  while (glGetError() != GL_NO_ERROR)
-  {
-    // errors of earlier code are not ours to report; clear them to see our own
-  }
+  this->Internals->Buffers[1]->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+  bool allocated = true;
   for (int i = 0; i < 4; ++i)
   {
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[i]);
-    glBufferData(
-      GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes[i]), nullptr, GL_DYNAMIC_COPY);
+    allocated = vtkParticleComputeProgram::AllocateStorage(
+                  this->Internals->Buffers[i], static_cast<std::size_t>(bytes[i])) &&
+      allocated;
   }
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(previous));
-  const GLenum error = glGetError();
-  if (error != GL_NO_ERROR)
+  if (!allocated)
   {
     vtkErrorMacro(<< "Could not allocate " << (bytes[0] + bytes[1] + bytes[2] + bytes[3])
-                  << " bytes of buffers for " << count << " keys (GL error 0x" << std::hex
-                  << error << std::dec << ").");
+                  << " bytes of buffers for " << count << " keys (out of GPU memory?).");
     this->Capacity = 0;
     return false;
   }
   this->Capacity = static_cast<vtkIdType>(capacity);
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLBufferObject* vtkParticleDepthSort::GetKeyBuffer()
+{
+  return this->Internals->Buffers[0];
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLBufferObject* vtkParticleDepthSort::GetIndexBuffer()
+{
+  return this->Internals->Buffers[1];
 }
 
 //------------------------------------------------------------------------------
@@ -286,7 +290,7 @@ bool vtkParticleDepthSort::Scan(unsigned int offset, unsigned int length)
 bool vtkParticleDepthSort::Sort(vtkIdType count)
 {
   vtkInternals& internals = *this->Internals;
-  if (this->Buffers[0] == 0 || !internals.Context)
+  if (internals.Buffers[0]->GetHandle() == 0 || !internals.Context)
   {
     vtkErrorMacro(<< "Sort() before Reserve().");
     return false;
@@ -321,9 +325,9 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
 
   // the caller's shader writes of the keys become visible to ours
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  for (GLuint binding = 0; binding < 4; ++binding)
+  for (unsigned int binding = 0; binding < 4; ++binding)
   {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, this->Buffers[binding]);
+    vtkParticleComputeProgram::BindStorage(binding, internals.Buffers[binding]);
   }
 
   const std::uint64_t n = static_cast<std::uint64_t>(count);
@@ -337,9 +341,8 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
   if (this->SkipUniformDigits)
   {
     const GLuint initial[2] = { 0xFFFFFFFFu, 0u };
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[2]);
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 4 * static_cast<GLintptr>(bitsOffset),
-      sizeof(initial), initial);
+    vtkParticleComputeProgram::UploadStorage(
+      internals.Buffers[2], 4 * static_cast<std::size_t>(bitsOffset), sizeof(initial), initial);
     vtkParticleComputeProgram* bits = internals.Bits;
     bits->Use();
     bits->SetUniformui("prCount", static_cast<unsigned int>(n));
@@ -347,8 +350,8 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
     ok = vtkInternals::Run(bits, DivUp(n, BitsTile)) && ok;
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     GLuint andOr[2] = { 0u, 0u };
-    glGetBufferSubData(
-      GL_SHADER_STORAGE_BUFFER, 4 * static_cast<GLintptr>(bitsOffset), sizeof(andOr), andOr);
+    vtkParticleComputeProgram::DownloadStorage(
+      internals.Buffers[2], 4 * static_cast<std::size_t>(bitsOffset), sizeof(andOr), andOr);
     differing = andOr[0] ^ andOr[1];
   }
   std::vector<unsigned int> shifts;
@@ -466,16 +469,15 @@ void vtkParticleDepthSort::ReleaseGraphicsResources(vtkWindow* window)
     program.first->ReleaseGraphicsResources(window);
   }
   this->Internals->Timed = false;
-  if (this->Buffers[0] != 0)
+  if (this->Internals->Buffers[0]->GetHandle() != 0)
   {
     if (vtkParticleComputeProgram::MakeCurrentForRelease(this->Internals->Context))
     {
       this->Internals->Timer.ReleaseGraphicsResources();
-      glDeleteBuffers(4, this->Buffers);
-    }
-    for (unsigned int& buffer : this->Buffers)
-    {
-      buffer = 0;
+      for (auto& buffer : this->Internals->Buffers)
+      {
+        buffer->ReleaseGraphicsResources();
+      }
     }
   }
   this->Capacity = 0;
@@ -487,8 +489,8 @@ void vtkParticleDepthSort::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Capacity: " << this->Capacity << "\n";
-  os << indent << "KeyBuffer: " << this->Buffers[0] << "\n";
-  os << indent << "IndexBuffer: " << this->Buffers[1] << "\n";
+  os << indent << "KeyBuffer: " << this->Internals->Buffers[0]->GetHandle() << "\n";
+  os << indent << "IndexBuffer: " << this->Internals->Buffers[1]->GetHandle() << "\n";
   os << indent << "SkipUniformDigits: " << this->SkipUniformDigits << "\n";
   os << indent << "CoalescedWrites: " << this->CoalescedWrites << "\n";
   os << indent << "LastNumberOfPasses: " << this->LastNumberOfPasses << "\n";

@@ -7,10 +7,10 @@
  * count, GL_UNSIGNED_INT, 0)). Typical use, once per frame, for back-to-front compositing:
  * @code
  *   sort->Reserve(window, n);                        // grows the buffers when needed
- *   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, sort->GetKeyBuffer());
+ *   vtkParticleComputeProgram::BindStorage(b, sort->GetKeyBuffer());
  *   ...dispatch your shader writing n float keys (e.g. -depth)...
  *   sort->Sort(n);                                   // issues the barriers it needs
- *   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sort->GetIndexBuffer());  // in your VAO
+ *   sort->GetIndexBuffer()->Bind();                  // the element array of your VAO
  *   glDrawElements(GL_POINTS, n, GL_UNSIGNED_INT, nullptr);
  * @endcode
  *
@@ -83,6 +83,7 @@
 #include "vtkObject.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
+class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkWindow;
 
@@ -106,11 +107,11 @@ public:
   vtkIdType GetCapacity() const { return this->Capacity; }
 
   /**
-   * GL name of the key buffer: the caller writes count float32 keys (e.g. with its own compute
-   * shader, as a shader storage buffer) before Sort(); afterwards it holds the sorted keys.
-   * 0 before Reserve().
+   * The key buffer: the caller writes count float32 keys (e.g. with its own compute shader, as
+   * a shader storage buffer, vtkParticleComputeProgram::BindStorage) before Sort(); afterwards
+   * it holds the sorted keys. Its handle is 0 before Reserve().
    */
-  unsigned int GetKeyBuffer() const { return this->Buffers[0]; }
+  vtkOpenGLBufferObject* GetKeyBuffer();
 
   /**
    * Sort the first count keys of the key buffer ascending (stable). False (vtkErrorMacro) when
@@ -125,10 +126,11 @@ public:
   bool Sort(vtkIdType count);
 
   /**
-   * GL name of the index buffer: after Sort(count), count uint32 indices into the keys' input
-   * order, smallest key first. Usable as GL_ELEMENT_ARRAY_BUFFER. The name never changes.
+   * The index buffer: after Sort(count), count uint32 indices into the keys' input order,
+   * smallest key first. An element-array buffer object: Bind() makes it the element array of
+   * the bound vertex array. Its handle never changes after Reserve().
    */
-  unsigned int GetIndexBuffer() const { return this->Buffers[1]; }
+  vtkOpenGLBufferObject* GetIndexBuffer();
 
   ///@{
   /**
@@ -177,7 +179,6 @@ protected:
   bool Scan(unsigned int offset, unsigned int length);
 
   vtkIdType Capacity = 0;
-  unsigned int Buffers[4] = { 0, 0, 0, 0 }; // keys, indices, scratch keys (+ tail), scratch indices
   bool SkipUniformDigits = true;
   bool CoalescedWrites = true;
   bool CollectTimings = false;

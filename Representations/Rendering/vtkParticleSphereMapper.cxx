@@ -346,8 +346,8 @@ double* vtkParticleSphereMapper::GetBounds()
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleSphereMapper::GetParticleBuffers(unsigned int& positions,
-  unsigned int& positionStride, unsigned int& radii, vtkIdType& count,
+bool vtkParticleSphereMapper::GetParticleBuffers(vtkOpenGLBufferObject*& positions,
+  unsigned int& positionStride, vtkOpenGLBufferObject*& radii, vtkIdType& count,
   vtkMatrix4x4* bufferToModel)
 {
   vtkOpenGLVertexBufferObject* positionVBO = this->VBOs->GetVBO("vertexMC");
@@ -357,9 +357,9 @@ bool vtkParticleSphereMapper::GetParticleBuffers(unsigned int& positions,
   {
     return false;
   }
-  positions = static_cast<unsigned int>(positionVBO->GetHandle());
+  positions = positionVBO;
   positionStride = positionVBO->GetStride() / sizeof(float);
-  radii = static_cast<unsigned int>(radiusVBO->GetHandle());
+  radii = radiusVBO;
   vtkMatrix4x4::Transpose(this->VBOShiftScale, bufferToModel); // stored transposed
   return true;
 }

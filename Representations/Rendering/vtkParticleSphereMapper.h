@@ -59,6 +59,7 @@
 
 class vtkFloatArray;
 class vtkMatrix4x4;
+class vtkOpenGLBufferObject;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleSphereMapper : public vtkOpenGLPolyDataMapper
 {
@@ -171,13 +172,14 @@ public:
   vtkFloatArray* GetParticleRadii();
 
   /**
-   * The particle vertex buffers for compute passes: GL names of the positions (float, stride in
-   * floats) and radii (float, model-coordinate radius, 0 for skipped particles) and the matrix
-   * from buffer to model coordinates (VTK's VBO shift/scale undone), valid once the mapper has
-   * drawn. Returns false before that.
+   * The particle vertex buffers for compute passes: the positions (float, stride in floats) and
+   * radii (float, model-coordinate radius, 0 for skipped particles) as VTK's buffer objects
+   * (bind them with vtkParticleComputeProgram::BindStorage), and the matrix from buffer to model
+   * coordinates (VTK's VBO shift/scale undone), valid once the mapper has drawn. Returns false
+   * before that.
    */
-  bool GetParticleBuffers(unsigned int& positions, unsigned int& positionStride,
-    unsigned int& radii, vtkIdType& count, vtkMatrix4x4* bufferToModel);
+  bool GetParticleBuffers(vtkOpenGLBufferObject*& positions, unsigned int& positionStride,
+    vtkOpenGLBufferObject*& radii, vtkIdType& count, vtkMatrix4x4* bufferToModel);
 
   /**
    * Time of the last change of the particles' positions or radii (the input's points, the radius

@@ -10,6 +10,7 @@
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderPass.h"
@@ -615,7 +616,7 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
   {
     if (sorted)
     {
-      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, internals.Sort->GetIndexBuffer());
+      internals.Sort->GetIndexBuffer()->Bind(); // the element array of the bound VAO
       glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
     }
     if (this->CollectTimings)
@@ -650,7 +651,7 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     {
       internals.DrawTimer.Stop();
     }
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    internals.Sort->GetIndexBuffer()->Release();
   }
   internals.Building = Variant::Opaque;
   opaqueDepth->Deactivate();
@@ -784,14 +785,15 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
   keys->SetUniformi("parallelProjection", parallel);
   keys->SetUniformui("count", static_cast<unsigned int>(count));
   keys->SetUniformui("positionStride", positions->GetStride() / sizeof(float));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions->GetHandle());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, radii->GetHandle());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, internals.Sort->GetKeyBuffer());
+  vtkParticleComputeProgram::BindStorage(0, positions);
+  vtkParticleComputeProgram::BindStorage(1, radii);
+  vtkParticleComputeProgram::BindStorage(2, internals.Sort->GetKeyBuffer());
   keys->Dispatch(static_cast<unsigned int>((count + 255) / 256));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, 0);
+  for (unsigned int binding = 0; binding < 3; ++binding)
+  {
+    vtkParticleComputeProgram::BindStorage(binding, nullptr);
+  }
   glUseProgram(0);
   // a long sort reports its radix passes as this mapper's progress (ParaView's progress bar)
   unsigned long progressTag = 0;

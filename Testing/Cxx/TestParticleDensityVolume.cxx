@@ -10,6 +10,7 @@
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleDensityVolume.h"
@@ -132,18 +133,21 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
       xyz[3 * i + k] = static_cast<float>(p[k]);
     }
   }
-  GLuint buffers[2];
-  glGenBuffers(2, buffers);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, std::max<size_t>(4, xyz.size() * 4), xyz.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, std::max<vtkIdType>(4, n * 4), radii->GetPointer(0), GL_STATIC_DRAW);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  // the positions and radii as buffer objects, as a mapper's vertex buffers are
+  vtkNew<vtkOpenGLBufferObject> positionBuffer;
+  vtkNew<vtkOpenGLBufferObject> radiusBuffer;
+  xyz.resize(std::max<size_t>(1, xyz.size()));
+  std::vector<float> r(radii->GetPointer(0), radii->GetPointer(0) + n);
+  r.resize(std::max<size_t>(1, r.size()));
+  positionBuffer->Upload(xyz, vtkOpenGLBufferObject::ArrayBuffer);
+  radiusBuffer->Upload(r, vtkOpenGLBufferObject::ArrayBuffer);
   const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-  ok &= prTest::Check(volume->ComputeOnGPU(ctx, buffers[0], 3, identity, buffers[1], 1.0, n),
+  ok &= prTest::Check(
+    volume->ComputeOnGPU(ctx, positionBuffer, 3, identity, radiusBuffer, 1.0, n),
     what + ": GPU volume");
   ok &= prTest::Check(volume->ReadVolumeBuffer(), what + ": GPU volume read back");
-  glDeleteBuffers(2, buffers);
+  positionBuffer->ReleaseGraphicsResources();
+  radiusBuffer->ReleaseGraphicsResources();
   const std::vector<float>& gpu = volume->GetVolume();
   // Equal up to the fixed point, except where a particle's centre lies within float rounding
   // (~1e-6 voxels) of a voxel face and lands in the neighbour voxel on one side: such voxels

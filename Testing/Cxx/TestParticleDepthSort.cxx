@@ -5,6 +5,7 @@
 #include "prTestUtilities.h"
 
 #include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleDepthSort.h"
@@ -83,14 +84,12 @@ int ExpectedPasses(const std::vector<float>& keys)
 }
 
 template <typename T>
-std::vector<T> ReadBuffer(unsigned int buffer, std::size_t count)
+std::vector<T> ReadBuffer(vtkOpenGLBufferObject* buffer, std::size_t count)
 {
   std::vector<T> data(count);
   if (count > 0)
   {
-    glBindBuffer(GL_COPY_READ_BUFFER, buffer);
-    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, count * sizeof(T), data.data());
-    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+    vtkParticleComputeProgram::DownloadStorage(buffer, 0, count * sizeof(T), data.data());
   }
   return data;
 }
@@ -146,9 +145,8 @@ double SortAndCheck(vtkOpenGLRenderWindow* context, vtkParticleDepthSort* sort,
   }
   if (n > 0)
   {
-    glBindBuffer(GL_COPY_WRITE_BUFFER, sort->GetKeyBuffer());
-    glBufferSubData(GL_COPY_WRITE_BUFFER, 0, n * sizeof(float), keys.data());
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    vtkParticleComputeProgram::UploadStorage(
+      sort->GetKeyBuffer(), 0, n * sizeof(float), keys.data());
   }
   Expect(sort->Sort(n), name + ": Sort()");
   const double seconds = sort->GetLastSortGPUSeconds();
@@ -165,9 +163,8 @@ void TimeSorts(vtkParticleDepthSort* sort, const std::string& name, const std::v
   std::vector<double> seconds;
   for (int r = 0; r < repeats; ++r)
   {
-    glBindBuffer(GL_COPY_WRITE_BUFFER, sort->GetKeyBuffer());
-    glBufferSubData(GL_COPY_WRITE_BUFFER, 0, n * sizeof(float), keys.data());
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    vtkParticleComputeProgram::UploadStorage(
+      sort->GetKeyBuffer(), 0, n * sizeof(float), keys.data());
     const double start = vtkTimerLog::GetUniversalTime();
     sort->Sort(n);
     seconds.push_back(sort->GetLastSortGPUSeconds());
@@ -253,7 +250,7 @@ std::vector<float> WriteKeysWithShader(
   Expect(program->SetUniformui("count", n), "SetUniformui on an active uniform");
   Expect(program->SetUniformf("scale", 0.25f), "SetUniformf on an active uniform");
   Expect(!program->SetUniformf("absent", 1.0f), "SetUniformf on a missing uniform is false");
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, sort->GetKeyBuffer());
+  vtkParticleComputeProgram::BindStorage(5, sort->GetKeyBuffer());
   Expect(program->Dispatch((n + 63) / 64), "key shader dispatch");
   glUseProgram(0);
   program->ReleaseGraphicsResources(context);
@@ -285,14 +282,13 @@ void CheckDrawWithIndices(vtkParticleDepthSort* sort, std::size_t n)
   glGetProgramiv(program, GL_LINK_STATUS, &linked);
   if (Expect(linked == GL_TRUE, "transform feedback program links"))
   {
-    GLuint vao = 0, captured = 0;
+    GLuint vao = 0;
     glGenVertexArrays(1, &vao);
     glBindVertexArray(vao);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sort->GetIndexBuffer());
-    glGenBuffers(1, &captured);
-    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, captured);
-    glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, n * sizeof(std::uint32_t), nullptr, GL_STREAM_READ);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captured);
+    sort->GetIndexBuffer()->Bind(); // the element array of the bound VAO
+    vtkNew<vtkOpenGLBufferObject> captured;
+    vtkParticleComputeProgram::AllocateStorage(captured, n * sizeof(std::uint32_t));
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, static_cast<GLuint>(captured->GetHandle()));
     glUseProgram(program);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_POINTS);
@@ -306,7 +302,7 @@ void CheckDrawWithIndices(vtkParticleDepthSort* sort, std::size_t n)
     const std::vector<std::uint32_t> indices =
       ReadBuffer<std::uint32_t>(sort->GetIndexBuffer(), n);
     Expect(drawn == indices, "glDrawElements with the index buffer fetches the sorted indices");
-    glDeleteBuffers(1, &captured);
+    captured->ReleaseGraphicsResources();
     glDeleteVertexArrays(1, &vao);
   }
   glDeleteProgram(program);
@@ -334,12 +330,11 @@ void CheckDispatchSplit(vtkOpenGLRenderWindow* context)
   {
     return;
   }
-  GLuint buffer = 0;
-  glGenBuffers(1, &buffer);
+  vtkNew<vtkOpenGLBufferObject> buffer;
   const GLuint zero[2] = { 0, 0 };
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(zero), zero, GL_DYNAMIC_COPY);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  vtkParticleComputeProgram::AllocateStorage(buffer, sizeof(zero));
+  vtkParticleComputeProgram::UploadStorage(buffer, 0, sizeof(zero), zero);
+  vtkParticleComputeProgram::BindStorage(0, buffer);
   program->Use();
   program->SetUniformui("groups", groups);
   Expect(program->Dispatch(groups), "Dispatch above the x limit");
@@ -357,7 +352,7 @@ void CheckDispatchSplit(vtkOpenGLRenderWindow* context)
   Expect(result[0] == groups && result[1] == groups - 1,
     "split dispatch ran " + std::to_string(result[0]) + " groups up to id " +
       std::to_string(result[1]) + ", expected " + std::to_string(groups));
-  glDeleteBuffers(1, &buffer);
+  buffer->ReleaseGraphicsResources();
   program->ReleaseGraphicsResources(context);
 }
 }
@@ -439,15 +434,16 @@ int TestParticleDepthSort(int, char*[])
       TimeSorts(sort, "1e6 keys, low 8 bits differ (2 passes)", LowBitKeys(1000000, 8, 3.0f, 9),
         skip);
     }
-    const unsigned int keyBuffer = sort->GetKeyBuffer();
-    const unsigned int indexBuffer = sort->GetIndexBuffer();
+    const int keyBuffer = sort->GetKeyBuffer()->GetHandle();
+    const int indexBuffer = sort->GetIndexBuffer()->GetHandle();
     // smaller after larger: the buffers are reused
     SortAndCheck(context, sort, "random 3000 after 1e6", RandomKeys(3000, 2), skip);
     Expect(sort->GetCapacity() >= 1000000, "capacity kept after a smaller sort");
     // larger after smaller: growth keeps the buffer names
     SortAndCheck(context, sort, "random 1.2e6+ (growth)",
       RandomKeys(1200000 + 100000 * configuration, 3), skip);
-    Expect(sort->GetKeyBuffer() == keyBuffer && sort->GetIndexBuffer() == indexBuffer,
+    Expect(sort->GetKeyBuffer()->GetHandle() == keyBuffer &&
+        sort->GetIndexBuffer()->GetHandle() == indexBuffer,
       "buffer names kept through growth");
   }
 
@@ -486,6 +482,7 @@ int TestParticleDepthSort(int, char*[])
   }
 
   sort->ReleaseGraphicsResources(context);
-  Expect(sort->GetKeyBuffer() == 0 && sort->GetCapacity() == 0, "ReleaseGraphicsResources");
+  Expect(sort->GetKeyBuffer()->GetHandle() == 0 && sort->GetCapacity() == 0,
+    "ReleaseGraphicsResources");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
