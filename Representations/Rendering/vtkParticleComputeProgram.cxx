@@ -3,6 +3,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
@@ -217,7 +218,19 @@ bool vtkParticleComputeProgram::Build(vtkOpenGLRenderWindow* context)
 //------------------------------------------------------------------------------
 void vtkParticleComputeProgram::Use()
 {
+  // VTK's shader cache keeps track of the bound program: tell it that its program is no longer
+  // bound, so that the next VTK draw binds its own again
+  if (vtkOpenGLRenderWindow* context = this->Internals->Context)
+  {
+    context->GetShaderCache()->ReleaseCurrentShader();
+  }
   glUseProgram(this->Handle);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleComputeProgram::UseNone()
+{
+  glUseProgram(0);
 }
 
 //------------------------------------------------------------------------------

@@ -108,8 +108,12 @@ public:
   /** True after a successful Build() whose program is still alive. */
   bool IsBuilt() const { return this->Handle != 0; }
 
-  /** Bind the program (glUseProgram). The caller restores the previously bound program. */
+  /**
+   * Bind the program (glUseProgram), telling VTK's shader cache that its program is no longer
+   * bound (the next VTK draw rebinds its own). UseNone() binds no program.
+   */
   void Use();
+  static void UseNone();
 
   /** The GL program name, 0 before a successful Build(). */
   unsigned int GetHandle() const { return this->Handle; }

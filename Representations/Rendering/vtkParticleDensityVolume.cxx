@@ -383,7 +383,7 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   {
     vtkParticleComputeProgram::BindStorage(binding, nullptr);
   }
-  glUseProgram(0);
+  vtkParticleComputeProgram::UseNone();
   return true;
 }
 

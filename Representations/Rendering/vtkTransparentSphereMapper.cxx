@@ -794,7 +794,7 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
   {
     vtkParticleComputeProgram::BindStorage(binding, nullptr);
   }
-  glUseProgram(0);
+  vtkParticleComputeProgram::UseNone();
   // a long sort reports its radix passes as this mapper's progress (ParaView's progress bar)
   unsigned long progressTag = 0;
   if (count >= this->ProgressThreshold)
@@ -810,8 +810,6 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
     internals.Sort->RemoveObserver(progressTag);
     this->SetProgressText(nullptr);
   }
-  // the shader cache's notion of the bound program is stale after raw glUseProgram calls
-  ctx->GetShaderCache()->ReleaseCurrentShader();
   if (this->CollectTimings)
   {
     internals.SortTimer.Stop();
