@@ -25,7 +25,6 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 
 CRITERIA = pr.SAME_PLATFORM  # tolerance 2/255, 0.1 % of the pixels, mean 0.5/255
 
@@ -61,9 +60,6 @@ print("series:", [os.path.basename(f) for f in series], "logged:", logged)
 # VTK's messages are captured while ParaView works (pvpython also routes Python's own output
 # through the output window, so the test's report is printed after the window is restored)
 report = []
-messages = vtkStringOutputWindow()
-previous_window = vtkOutputWindow.GetInstance()
-vtkOutputWindow.SetInstance(messages)
 
 
 def fail(text):
@@ -72,44 +68,43 @@ def fail(text):
     ok = False
 
 
-try:
-    pr.load_plugin(args)
-    reader = simple.OpenDataFile(series)
-    if reader is None or reader.GetXMLName() != "LAMMPSDumpReader":
-        raise RuntimeError("OpenDataFile picked %s" % (reader.GetXMLName() if reader else None))
-    reader.TypeRadii = [2, 0.35]
-    times = list(reader.TimestepValues)
-    if times != [float(t) for t, _ in logged]:
-        fail("time values %s, LAMMPS timesteps %s" % (times, [t for t, _ in logged]))
+with pr.captured_messages() as messages:
+    try:
+        pr.load_plugin(args)
+        reader = simple.OpenDataFile(series)
+        if reader is None or reader.GetXMLName() != "LAMMPSDumpReader":
+            raise RuntimeError("OpenDataFile picked %s" % (reader.GetXMLName() if reader else None))
+        reader.TypeRadii = [2, 0.35]
+        times = list(reader.TimestepValues)
+        if times != [float(t) for t, _ in logged]:
+            fail("time values %s, LAMMPS timesteps %s" % (times, [t for t, _ in logged]))
 
-    view = pr.setup_view(simple.CreateView("RenderView"), size=(500, 400))
-    display = simple.Show(reader, view)
-    if display.Representation != "Particles":
-        fail("the dump is shown as %r, not as Particles" % display.Representation)
-    if display.UseRadiusArray != "Automatic":
-        fail("Use Radius Array is %r" % display.UseRadiusArray)
-    simple.ColorBy(display, ("POINTS", "type"))
-    display.LookupTable = pr.type_lookup_table()
-    box = simple.Show(simple.OutputPort(reader, 1), view)
-    box.DiffuseColor = [0.9, 0.9, 0.9]
-    box.AmbientColor = [0.9, 0.9, 0.9]
+        view = pr.setup_view(simple.CreateView("RenderView"), size=(500, 400))
+        display = simple.Show(reader, view)
+        if display.Representation != "Particles":
+            fail("the dump is shown as %r, not as Particles" % display.Representation)
+        if display.UseRadiusArray != "Automatic":
+            fail("Use Radius Array is %r" % display.UseRadiusArray)
+        simple.ColorBy(display, ("POINTS", "type"))
+        display.LookupTable = pr.type_lookup_table()
+        box = simple.Show(simple.OutputPort(reader, 1), view)
+        box.DiffuseColor = [0.9, 0.9, 0.9]
+        box.AmbientColor = [0.9, 0.9, 0.9]
 
-    scene = simple.GetAnimationScene()
-    scene.UpdateAnimationUsingDataTimeSteps()
-    pr.set_camera(view, position=(22.0, -14.0, 16.0), focal_point=(4.2, 4.2, 4.2))
-    for t, n in logged:
-        scene.AnimationTime = float(t)
-        simple.Render(view)
-        count = reader.GetDataInformation().GetNumberOfPoints()
-        report.append("timestep %d: %d atoms (LAMMPS logged %d)" % (t, count, n))
-        if count != n:
-            fail("timestep %d: %d atoms, LAMMPS logged %d" % (t, count, n))
-    image_path = os.path.join(args.temp_dir, "TestLAMMPSDumpParaView_capture.png")
-    pr.capture(view, image_path)
-except Exception as error:  # reported below, after the output window is restored
-    fail("%s: %s" % (type(error).__name__, error))
-finally:
-    vtkOutputWindow.SetInstance(previous_window)
+        scene = simple.GetAnimationScene()
+        scene.UpdateAnimationUsingDataTimeSteps()
+        pr.set_camera(view, position=(22.0, -14.0, 16.0), focal_point=(4.2, 4.2, 4.2))
+        for t, n in logged:
+            scene.AnimationTime = float(t)
+            simple.Render(view)
+            count = reader.GetDataInformation().GetNumberOfPoints()
+            report.append("timestep %d: %d atoms (LAMMPS logged %d)" % (t, count, n))
+            if count != n:
+                fail("timestep %d: %d atoms, LAMMPS logged %d" % (t, count, n))
+        image_path = os.path.join(args.temp_dir, "TestLAMMPSDumpParaView_capture.png")
+        pr.capture(view, image_path)
+    except Exception as error:  # reported below, after the output window is restored
+        fail("%s: %s" % (type(error).__name__, error))
 print("\n".join(report))
 text = messages.GetOutput().strip()
 if text:

@@ -21,7 +21,6 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 
 CRITERIA = pr.SAME_PLATFORM  # tolerance 2/255, 0.1 % of the pixels, mean 0.5/255
 
@@ -30,58 +29,55 @@ pr.load_plugin(args)
 ok = True
 
 # collect the warnings (they are printed at the end)
-messages = vtkStringOutputWindow()
-previous_window = vtkOutputWindow.GetInstance()
-vtkOutputWindow.SetInstance(messages)
+with pr.captured_messages() as messages:  # (reported after the block)
 
-view = pr.setup_view(simple.CreateView("RenderView"))
+    view = pr.setup_view(simple.CreateView("RenderView"))
 
-# (a) empty polydata
-empty = simple.ProgrammableSource(OutputDataSetType="vtkPolyData", Script="")
-shown_a = simple.Show(empty, view)
-shown_a.Representation = "Particles"
-shown_a.UseRadiusArray = 1
-shown_a.RadiusArray = ["POINTS", "radius"]
+    # (a) empty polydata
+    empty = simple.ProgrammableSource(OutputDataSetType="vtkPolyData", Script="")
+    shown_a = simple.Show(empty, view)
+    shown_a.Representation = "Particles"
+    shown_a.UseRadiusArray = 1
+    shown_a.RadiusArray = ["POINTS", "radius"]
 
-# (b) no radius array
-plane_b = simple.Plane(Origin=[-6.0, -2.5, 0.0], Point1=[-1.0, -2.5, 0.0], Point2=[-6.0, 2.5, 0.0],
-                       XResolution=6, YResolution=6)
-shown_b = simple.Show(plane_b, view)
-shown_b.Representation = "Particles"
-shown_b.Radius = 0.3
-shown_b.UseRadiusArray = 1
-shown_b.RadiusArray = ["POINTS", "radius"]
-shown_b.ColorArrayName = ["POINTS", ""]
-shown_b.DiffuseColor = [0.55, 0.65, 0.9]
+    # (b) no radius array
+    plane_b = simple.Plane(Origin=[-6.0, -2.5, 0.0], Point1=[-1.0, -2.5, 0.0], Point2=[-6.0, 2.5, 0.0],
+                           XResolution=6, YResolution=6)
+    shown_b = simple.Show(plane_b, view)
+    shown_b.Representation = "Particles"
+    shown_b.Radius = 0.3
+    shown_b.UseRadiusArray = 1
+    shown_b.RadiusArray = ["POINTS", "radius"]
+    shown_b.ColorArrayName = ["POINTS", ""]
+    shown_b.DiffuseColor = [0.55, 0.65, 0.9]
 
-# (c) 2-component radius array
-plane_c = simple.Plane(Origin=[1.0, -2.5, 0.0], Point1=[6.0, -2.5, 0.0], Point2=[1.0, 2.5, 0.0],
-                       XResolution=6, YResolution=6)
-shown_c = simple.Show(plane_c, view)
-shown_c.Representation = "Particles"
-shown_c.Radius = 0.3
-shown_c.UseRadiusArray = 1
-shown_c.RadiusArray = ["POINTS", "TextureCoordinates"]
-shown_c.ColorArrayName = ["POINTS", ""]
-shown_c.DiffuseColor = [0.95, 0.8, 0.25]
+    # (c) 2-component radius array
+    plane_c = simple.Plane(Origin=[1.0, -2.5, 0.0], Point1=[6.0, -2.5, 0.0], Point2=[1.0, 2.5, 0.0],
+                           XResolution=6, YResolution=6)
+    shown_c = simple.Show(plane_c, view)
+    shown_c.Representation = "Particles"
+    shown_c.Radius = 0.3
+    shown_c.UseRadiusArray = 1
+    shown_c.RadiusArray = ["POINTS", "TextureCoordinates"]
+    shown_c.ColorArrayName = ["POINTS", ""]
+    shown_c.DiffuseColor = [0.95, 0.8, 0.25]
 
-pr.set_camera(view, position=(0.0, -14.0, 16.0), focal_point=(0.0, 0.0, 0.0), view_up=(0, 1, 0))
-simple.Render(view)
-
-# switching things back and forth on bad input must not crash either
-for display in (shown_a, shown_b, shown_c):
-    display.Representation = "Surface"
-    simple.Render(view)
-    display.Representation = "Particles"
-    display.UseRadiusArray = 0
-    simple.Render(view)
-    display.UseRadiusArray = 1
+    pr.set_camera(view, position=(0.0, -14.0, 16.0), focal_point=(0.0, 0.0, 0.0), view_up=(0, 1, 0))
     simple.Render(view)
 
-name = "TestParticlesBadInput"
-ok = pr.capture_and_compare(view, name, args, CRITERIA)[0] and ok
+    # switching things back and forth on bad input must not crash either
+    for display in (shown_a, shown_b, shown_c):
+        display.Representation = "Surface"
+        simple.Render(view)
+        display.Representation = "Particles"
+        display.UseRadiusArray = 0
+        simple.Render(view)
+        display.UseRadiusArray = 1
+        simple.Render(view)
 
-vtkOutputWindow.SetInstance(previous_window)
+    name = "TestParticlesBadInput"
+    ok = pr.capture_and_compare(view, name, args, CRITERIA)[0] and ok
+
 text = messages.GetOutput()
 print("---- warnings ----\n%s\n------------------" % text.strip())
 

@@ -19,15 +19,11 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 
 args = pr.parse_arguments()
 report = []
 ok = True
-messages = vtkStringOutputWindow()
-previous_window = vtkOutputWindow.GetInstance()
-vtkOutputWindow.SetInstance(messages)  # (pvpython routes Python's output here too: report later)
-try:
+with pr.captured_messages() as messages:  # (reported after the block)
     pr.load_plugin(args)
     atoms, _ = pr.open_particles(args, "lj_droplets.vtp")
     view = pr.setup_view(simple.CreateView("RenderView"), size=(400, 300))
@@ -51,8 +47,6 @@ try:
     display.OpacityTransferFunction = opacity
     display.OpacityByArray = 1
     on = pr.capture(view, os.path.join(args.temp_dir, "TestStockParaViewIntact_on.png"))
-finally:
-    vtkOutputWindow.SetInstance(previous_window)
 
 text = messages.GetOutput().strip()
 print("\n".join(report))

@@ -24,7 +24,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 
 args = pr.parse_arguments()
 ok = True
@@ -45,10 +44,7 @@ def grab(view, name):
     return values.reshape(height, width, -1)[:, :, :3].astype(float)
 
 
-messages = vtkStringOutputWindow()
-previous_window = vtkOutputWindow.GetInstance()
-vtkOutputWindow.SetInstance(messages)  # (pvpython routes Python's output here too: report later)
-try:
+with pr.captured_messages() as messages:  # (reported after the block)
     pr.load_plugin(args)
     atoms, _ = pr.open_particles(args, "lj_droplets.vtp")
     views = {}
@@ -99,8 +95,6 @@ try:
                 fail("%s: density AO on translucent particles: darker %.2f, brighter %d, "
                      "background %d" % (kind, darker, brighter, background_change))
 
-finally:
-    vtkOutputWindow.SetInstance(previous_window)
 
 # Teardown: a separate pvpython shows translucent particles in two views and exits, as a user's
 # script does; ParaView then releases one view's props while the other view's context is

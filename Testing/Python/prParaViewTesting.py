@@ -17,10 +17,12 @@ and VTK Python image test uses too), imported from the Python-wrapped module `pa
 (Criteria below).
 """
 import argparse
+import contextlib
 import os
 import sys
 
 from paraview import simple
+from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader
 
@@ -55,6 +57,20 @@ class Criteria:
 # and the mean by 0.5/255 -- a missing, extra, moved or recoloured sphere, or shading a tenth
 # darker, is rejected.
 SAME_PLATFORM = Criteria(tolerance=2.0, max_share=1e-3, max_mean=0.5)
+
+
+@contextlib.contextmanager
+def captured_messages():
+    """Every VTK message (errors, warnings, text) while the block runs, in a vtkStringOutputWindow
+    (its GetOutput()); they are not printed. pvpython routes Python's own output through VTK's
+    output window too: print what the test reports after the block."""
+    messages = vtkStringOutputWindow()
+    previous_window = vtkOutputWindow.GetInstance()
+    vtkOutputWindow.SetInstance(messages)
+    try:
+        yield messages
+    finally:
+        vtkOutputWindow.SetInstance(previous_window)
 
 
 def parse_arguments():

@@ -106,12 +106,8 @@ void RenderTranslucent(const Frame& frame)
         const SphereVC& s = spheres[opaqueHit.Index];
         const vtkIdType pid = ids[opaqueHit.Index];
         double n[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          n[k] = (opaqueHit.Inside ? -opaqueHit.Rel[k] : opaqueHit.Rel[k]) / s.R;
-        }
-        const double p[3] = { s.C[0] + opaqueHit.Rel[0], s.C[1] + opaqueHit.Rel[1],
-          s.C[2] + opaqueHit.Rel[2] };
+        double p[3];
+        HitGeometry(opaqueHit, s, n, p);
         double amb[3];
         double dif[3];
         double alpha;

@@ -187,6 +187,17 @@ struct Hit
   bool Inside = false;
 };
 
+// The unit normal (facing the viewer: inward for a hit from inside) and the view-coordinate
+// point of a hit on the sphere s.
+inline void HitGeometry(const Hit& hit, const SphereVC& s, double n[3], double p[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
+    p[k] = s.C[k] + hit.Rel[k];
+  }
+}
+
 // Intersect the ray (o, d) with a sphere in the sphere-relative form of RaySphere.glsl and keep
 // the first visible intersection if it is nearer than best (ties: larger index, as the GPU's
 // GL_LEQUAL depth test with instances drawn in id order).

@@ -268,11 +268,8 @@ void RenderOpaque(const Frame& frame)
         const SphereVC& s = spheres[hit.Index];
         const vtkIdType pid = ids[hit.Index];
         double n[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
-        }
-        const double p[3] = { s.C[0] + hit.Rel[0], s.C[1] + hit.Rel[1], s.C[2] + hit.Rel[2] };
+        double p[3];
+        HitGeometry(hit, s, n, p);
         double amb[3];
         double dif[3];
         double alpha;
