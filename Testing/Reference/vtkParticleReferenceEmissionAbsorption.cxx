@@ -103,17 +103,12 @@ void RenderTranslucent(const Frame& frame)
       double tOpaqueFront = inf;
       if (opaqueHit.Index >= 0)
       {
-        const SphereVC& s = spheres[opaqueHit.Index];
         const vtkIdType pid = ids[opaqueHit.Index];
         double n[3];
         double p[3];
-        HitGeometry(opaqueHit, s, n, p);
-        double amb[3];
-        double dif[3];
-        double alpha;
-        frame.Material(pid, amb, dif, alpha);
         double color[3];
-        const std::uint32_t cones = frame.Shade(n, p, amb, dif, color);
+        double alpha;
+        const std::uint32_t cones = frame.ShadeHit(opaqueHit, n, p, color, alpha);
         const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
                             std::isfinite(color[2]) && std::isfinite(alpha);
         // otherwise the GPU discards the fragment; at a tie the particle (drawn later,

@@ -84,6 +84,14 @@ struct Frame
   }
 
   /**
+   * The lit colour (not clamped) and fragment opacity of a hit, with its unit normal n and
+   * view-coordinate point p; returns the bits of the spot cones containing p.
+   * (vtkParticleReferenceShading.cxx)
+   */
+  std::uint32_t ShadeHit(
+    const Hit& hit, double n[3], double p[3], double color[3], double& alpha) const;
+
+  /**
    * Material of a particle as vtkOpenGLPolyDataMapper: ambient and diffuse colours (with their
    * coefficients) and the fragment opacity. (vtkParticleReferenceShading.cxx)
    */

@@ -237,6 +237,17 @@ std::uint32_t Frame::Shade(const double n[3], const double p[3], const double am
 }
 
 //------------------------------------------------------------------------------
+std::uint32_t Frame::ShadeHit(
+  const Hit& hit, double n[3], double p[3], double color[3], double& alpha) const
+{
+  HitGeometry(hit, this->Spheres[hit.Index], n, p);
+  double amb[3];
+  double dif[3];
+  this->Material(this->Ids[hit.Index], amb, dif, alpha);
+  return this->Shade(n, p, amb, dif, color);
+}
+
+//------------------------------------------------------------------------------
 void RenderOpaque(const Frame& frame)
 {
   const RayCamera& cam = *frame.Camera;
@@ -265,17 +276,12 @@ void RenderOpaque(const Frame& frame)
       double normal[3] = { 0, 0, 0 };
       if (hit.Index >= 0)
       {
-        const SphereVC& s = spheres[hit.Index];
         const vtkIdType pid = ids[hit.Index];
         double n[3];
         double p[3];
-        HitGeometry(hit, s, n, p);
-        double amb[3];
-        double dif[3];
-        double alpha;
-        frame.Material(pid, amb, dif, alpha);
         double color[3];
-        cones = frame.Shade(n, p, amb, dif, color);
+        double alpha;
+        cones = frame.ShadeHit(hit, n, p, color, alpha);
         double occlusion = 1.0;
         if (aoSamples > 0)
         {
