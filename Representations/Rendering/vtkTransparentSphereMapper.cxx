@@ -79,6 +79,9 @@ public:
 
   // the shader hooks of the sphere templates this mapper fills
   vtkParticleShaderHooks Hooks;
+  // the translucent variant's program, vertex array and shader times, beside the opaque one
+  // (the superclass's triangle helper); its index count is the number of particles
+  vtkOpenGLHelper Translucent;
 
   // per-particle opacity
   vtkNew<vtkDoubleArray> Opacities;    // Theta_a
@@ -127,6 +130,8 @@ public:
 vtkTransparentSphereMapper::vtkTransparentSphereMapper()
   : Internals(new vtkInternals(this))
 {
+  // spheres are lit surfaces: VTK lights the triangle primitives (GetNeedToRebuildShaders)
+  this->Internals->Translucent.PrimitiveType = PrimitiveTris;
   this->Internals->Opacities->SetName("ParticleOpacity");
   this->Internals->OpticalDepths->SetName("ParticleOpticalDepth");
 }
@@ -307,10 +312,8 @@ void vtkTransparentSphereMapper::CacheParticleAttributes(vtkRenderer* ren, vtkAc
 void vtkTransparentSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildBufferObjects(ren, act);
-  // The triangle-strip helper holds the translucent variant's program and attribute bindings;
-  // like the triangle helper its index count is the number of particles.
-  this->Primitives[PrimitiveTriStrips].IBO->IndexCount =
-    this->Primitives[PrimitiveTris].IBO->IndexCount;
+  // the translucent variant's helper draws the same particles
+  this->Internals->Translucent.IBO->IndexCount = this->Primitives[PrimitiveTris].IBO->IndexCount;
 }
 
 //------------------------------------------------------------------------------
@@ -442,7 +445,7 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
   vtkShaderProgram* program = cellBO.Program;
   vtkInternals& internals = *this->Internals;
   program->SetUniformi("prCullMode", internals.CullMode);
-  if (&cellBO == &this->Primitives[PrimitiveTriStrips])
+  if (&cellBO == &internals.Translucent)
   {
     program->SetUniformf("prVolumeMix", static_cast<float>(this->VolumeMix));
     // Opacity and 1 - Opacity from double (Opacity = 1 - 1e-7 or 1e-6 does not survive 1 - x in
@@ -603,7 +606,7 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
   vtkTextureObject* opaqueDepth = internals.Target->GetOpaqueDepthTexture();
   opaqueDepth->Activate();
 
-  vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTriStrips];
+  vtkOpenGLHelper& cellBO = internals.Translucent;
   internals.Building = Variant::Translucent;
   // Theta_a = 1 particles are drawn opaque unless the actor or its colours lower the opacity
   // (scalar colours with alpha < 1: asked once per frame, used here and by the shader uniforms)
@@ -837,6 +840,7 @@ void vtkTransparentSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
   internals.KeyProgram->ReleaseGraphicsResources(window);
   internals.Sort->ReleaseGraphicsResources(window);
   internals.Target->ReleaseGraphicsResources(window);
+  internals.Translucent.ReleaseGraphicsResources(window);
   internals.TotalTimer.ReleaseGraphicsResources();
   internals.SortTimer.ReleaseGraphicsResources();
   internals.DrawTimer.ReleaseGraphicsResources();
