@@ -66,6 +66,83 @@ struct OpacitySummary
   bool AnyTranslucent = false;
   vtkIdType NaNs = 0;
 };
+
+// The render passes registered with an actor for its next draw (vtkOpenGLRenderPass::
+// RenderPasses), and what they mean for the translucent particles: which translucency pass
+// composites the scene, and -- while an object of this class lives, after HideTranslucencyPasses()
+// -- the list without the translucency passes, whose shader replacements and uniforms must not
+// reach the particles' own front-to-back composite (they are put back on destruction).
+class RenderPassList
+{
+public:
+  explicit RenderPassList(vtkActor* actor)
+    : Info(actor->GetPropertyKeys())
+  {
+    vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
+    if (!this->Info || !this->Info->Has(key))
+    {
+      return;
+    }
+    for (int i = 0; i < key->Length(this->Info); ++i)
+    {
+      vtkObjectBase* pass = key->Get(this->Info, i);
+      this->Passes.emplace_back(pass);
+      if (auto* peeling = vtkDualDepthPeelingPass::SafeDownCast(pass))
+      {
+        this->Peeling = peeling;
+      }
+      else if (vtkOrderIndependentTranslucentPass::SafeDownCast(pass))
+      {
+        this->OrderIndependent = true;
+      }
+      else if (vtkDepthPeelingPass::SafeDownCast(pass))
+      {
+        this->SinglePeeling = true;
+      }
+    }
+  }
+  ~RenderPassList()
+  {
+    if (this->Hidden)
+    {
+      this->Set(false);
+    }
+  }
+  RenderPassList(const RenderPassList&) = delete;
+  void operator=(const RenderPassList&) = delete;
+
+  void HideTranslucencyPasses()
+  {
+    if (!this->Passes.empty() && !this->Hidden)
+    {
+      this->Set(true);
+      this->Hidden = true;
+    }
+  }
+
+  vtkDualDepthPeelingPass* Peeling = nullptr; // dual depth peeling composites
+  bool OrderIndependent = false;              // the order-independent pass composites
+  bool SinglePeeling = false;                 // single-layer depth peeling (no dual) composites
+
+private:
+  void Set(bool withoutTranslucency)
+  {
+    this->Info->Remove(vtkOpenGLRenderPass::RenderPasses());
+    for (auto& pass : this->Passes)
+    {
+      if (!withoutTranslucency ||
+        (!vtkDualDepthPeelingPass::SafeDownCast(pass) &&
+          !vtkOrderIndependentTranslucentPass::SafeDownCast(pass)))
+      {
+        vtkOpenGLRenderPass::RenderPasses()->Append(this->Info, pass);
+      }
+    }
+  }
+
+  vtkInformation* Info;
+  std::vector<vtkSmartPointer<vtkObjectBase>> Passes;
+  bool Hidden = false;
+};
 }
 
 //------------------------------------------------------------------------------
@@ -485,32 +562,9 @@ void vtkTransparentSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
   }
 
   // The translucent stage. Which pass (if any) composites translucency?
-  vtkInformation* info = act->GetPropertyKeys();
-  vtkDualDepthPeelingPass* peeling = nullptr;
-  bool orderIndependent = false;
-  bool singlePeeling = false;
-  std::vector<vtkSmartPointer<vtkObjectBase>> passes;
-  if (info && info->Has(vtkOpenGLRenderPass::RenderPasses()))
-  {
-    vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
-    for (int i = 0; i < key->Length(info); ++i)
-    {
-      vtkObjectBase* pass = key->Get(info, i);
-      passes.emplace_back(pass);
-      if (vtkDualDepthPeelingPass::SafeDownCast(pass))
-      {
-        peeling = vtkDualDepthPeelingPass::SafeDownCast(pass);
-      }
-      else if (vtkOrderIndependentTranslucentPass::SafeDownCast(pass))
-      {
-        orderIndependent = true;
-      }
-      else if (vtkDepthPeelingPass::SafeDownCast(pass))
-      {
-        singlePeeling = true;
-      }
-    }
-  }
+  RenderPassList passes(act);
+  vtkDualDepthPeelingPass* peeling = passes.Peeling;
+  const bool singlePeeling = passes.SinglePeeling;
 
   // OpenGL 4.3 for the sort
   vtkOpenGLRenderWindow* ctx = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -552,28 +606,10 @@ void vtkTransparentSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
     internals.LastPeelingStageTime = peeling->GetShaderStageMTime();
   }
 
-  // Our own drawing must not get the translucency passes' shader replacements.
-  if (!passes.empty())
-  {
-    info->Remove(vtkOpenGLRenderPass::RenderPasses());
-    for (auto& pass : passes)
-    {
-      if (!vtkDualDepthPeelingPass::SafeDownCast(pass) &&
-        !vtkOrderIndependentTranslucentPass::SafeDownCast(pass))
-      {
-        vtkOpenGLRenderPass::RenderPasses()->Append(info, pass);
-      }
-    }
-  }
-  this->RenderTranslucentParticles(ren, act, peeling != nullptr || orderIndependent);
-  if (!passes.empty())
-  {
-    info->Remove(vtkOpenGLRenderPass::RenderPasses());
-    for (auto& pass : passes)
-    {
-      vtkOpenGLRenderPass::RenderPasses()->Append(info, pass);
-    }
-  }
+  // Our own drawing must not get the translucency passes' shader replacements (put back when
+  // `passes` goes).
+  passes.HideTranslucencyPasses();
+  this->RenderTranslucentParticles(ren, act, peeling != nullptr || passes.OrderIndependent);
 }
 
 //------------------------------------------------------------------------------
