@@ -15,30 +15,28 @@ printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' >"$work/config/ParaVie
 (cd "$work" && env -u OMPI_COMM_WORLD_SIZE -u OMPI_COMM_WORLD_RANK \
   lmp -in "$root/Testing/Data/Generators/in.lj_droplets" -var outdir "$work" -log none -screen none)
 
-Xvfb :77 -noreset -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-paraview_pid=
-cleanup() {
-  [ -n "$paraview_pid" ] && kill "$paraview_pid" 2>/dev/null || true
-  kill "$xvfb" 2>/dev/null || true
-  rm -rf "$work"
+# the capture, on a private Xvfb whose screen is the picture's size (the main window fills it)
+capture() {
+  paraview --script="$root/Scripts/gui_screenshot.py" >"$work/paraview.log" 2>&1 &
+  local paraview_pid=$!
+  for _ in $(seq 1 300); do
+    [ -f "$PR_DONE" ] && break
+    sleep 1
+  done
+  if [ "$(cat "$PR_DONE" 2>/dev/null)" != rendered ]; then
+    echo "the GUI script did not finish:" >&2
+    cat "$PR_DONE" "$work/paraview.log" >&2 2>/dev/null || true
+    kill "$paraview_pid" 2>/dev/null || true
+    return 1
+  fi
+  sleep 15 # let the GUI settle (the last render, the panels)
+  xwd -root -silent | /usr/bin/python3 "$root/Scripts/xwd_to_png.py" "$out"
+  kill "$paraview_pid" 2>/dev/null || true
 }
-trap cleanup EXIT
-sleep 2
-export DISPLAY=:77 XDG_CONFIG_HOME="$work/config"
+trap 'rm -rf "$work"' EXIT
+export -f capture
+export root out work XDG_CONFIG_HOME="$work/config"
 export PR_PLUGIN="$root/build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so"
 export PR_DUMPS="$work" PR_DONE="$work/done"
-paraview --script="$root/Scripts/gui_screenshot.py" >"$work/paraview.log" 2>&1 &
-paraview_pid=$!
-for _ in $(seq 1 300); do
-  [ -f "$PR_DONE" ] && break
-  sleep 1
-done
-if [ "$(cat "$PR_DONE" 2>/dev/null)" != rendered ]; then
-  echo "the GUI script did not finish:" >&2
-  cat "$PR_DONE" "$work/paraview.log" >&2 2>/dev/null || true
-  exit 1
-fi
-sleep 15 # let the GUI settle (the last render, the panels)
-xwd -root -silent | /usr/bin/python3 "$root/Scripts/xwd_to_png.py" "$out"
+PR_USE_EXISTING_DISPLAY=0 PR_XVFB_SCREEN=1280x800x24 "$root/Scripts/with_xvfb.sh" bash -c capture
 echo "wrote $out"

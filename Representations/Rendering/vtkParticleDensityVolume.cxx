@@ -582,9 +582,10 @@ bool vtkParticleDensityVolume::EndParticles(
   double meanRadius = 0.0;
   const bool any = this->GatherParticles(
     onGPU ? nullptr : positions.Get(), onGPU ? nullptr : radii.Get(), bounds, meanRadius);
-  internals.ProgressBase = 0.0;
-  internals.ProgressSpan = 1.0;
-  this->ReportProgress(1, 2); // gathered: gatherShare
+  // gathered: the first gatherShare of the whole
+  internals.ProgressBase = gatherShare;
+  internals.ProgressSpan = 1.0 - gatherShare;
+  this->ReportProgress(0, 1);
   if (!any)
   {
     vtkWarningMacro(<< "The particle props have no particle with a finite position and a "

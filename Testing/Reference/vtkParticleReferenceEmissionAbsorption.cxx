@@ -1,7 +1,6 @@
 #include "vtkParticleReferenceEmissionAbsorption.h"
 
 #include "vtkParticleReferenceFrame.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>

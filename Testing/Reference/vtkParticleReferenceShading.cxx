@@ -10,7 +10,6 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
