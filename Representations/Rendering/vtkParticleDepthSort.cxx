@@ -312,10 +312,6 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
     return false;
   }
 
-  GLint previousProgram = 0;
-  GLint previousBuffer = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &previousBuffer);
   if (this->CollectTimings)
   {
     internals.Timer.Reset();
@@ -435,8 +431,9 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
   {
     internals.Timer.Stop();
   }
-  glUseProgram(static_cast<GLuint>(previousProgram));
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(previousBuffer));
+  // vtkParticleComputeProgram::Use() told VTK's shader cache that its program is unbound: the
+  // caller's next VTK draw binds its own program again (ReadyShaderProgram)
+  vtkParticleComputeProgram::UseNone();
   if (!ok)
   {
     vtkErrorMacro(<< "A sort dispatch failed; the index buffer is undefined.");

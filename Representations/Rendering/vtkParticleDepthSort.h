@@ -68,8 +68,10 @@
  * of shared memory and 256 invocations per work group.
  *
  * GL state: Sort() binds its four buffers to the indexed GL_SHADER_STORAGE_BUFFER binding points
- * 0 (keys), 1 (indices), 2 (scratch keys), 3 (scratch indices) and leaves them bound; it restores
- * the bound program and the generic GL_SHADER_STORAGE_BUFFER binding. It starts with a
+ * 0 (keys), 1 (indices), 2 (scratch keys), 3 (scratch indices) through vtkParticleComputeProgram's
+ * storage layer and leaves them bound; it leaves no program bound and VTK's shader cache told so
+ * (vtkParticleComputeProgram::Use()), so the caller's next draw binds its program through
+ * vtkOpenGLShaderCache::ReadyShaderProgram as usual. It starts with a
  * glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT) (so the caller's shader writes of the keys are
  * seen) and ends with one for GL_ELEMENT_ARRAY, GL_VERTEX_ATTRIB_ARRAY, GL_SHADER_STORAGE and
  * GL_BUFFER_UPDATE, so the indices can be drawn, read by shaders or read back directly.

@@ -6,7 +6,9 @@
  * stage (Staib et al. 2015, Sec. 5.2). Begin() finds the framebuffer that holds the opaque image
  * (the one bound by the renderer, or the one a translucency pass -- VTK's dual depth peeling or
  * order-independent pass -- saved on the vtkOpenGLState binding stack before redirecting drawing
- * to its own buffers), copies its depth into GetOpaqueDepthTexture(), and binds an RGBA32F
+ * to its own buffers; VTK 9.2's passes offer no getter for it, so Begin() reads the top of that
+ * stack by popping it and pushing it back, the one place in the project that does), copies its
+ * depth into GetOpaqueDepthTexture(), and binds an RGBA32F
  * accumulation buffer cleared to 0 with front-to-back "under" blending of premultiplied colours
  * (C += (1 - A) c, A += (1 - A) a) and a depth buffer used only as the early-termination mask
  * (cleared to 1; fragments are drawn at depth 0.5 with GL_LESS and no depth writes).
