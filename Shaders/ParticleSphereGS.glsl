@@ -14,6 +14,10 @@ layout(triangle_strip, max_vertices = 3) out;
 uniform mat4 VCDCMatrix;
 uniform mat4 DCVCMatrix;
 uniform int cameraParallel;
+#ifdef PR_OCCLUSION_CULLING
+// clip-space z and w of the MC->VC translation (see prDepthOfSplitPointVC)
+uniform vec2 clipZWOfTranslation;
+#endif
 
 in vec4 centerRadiusVCVSOutput[];
 in vec3 centerOffsetVCVSOutput[];
@@ -31,6 +35,10 @@ out vec3 rayVCGSOutput;
 //VTK::PrimID::Dec
 
 //PR::Include SphereImposter
+#ifdef PR_OCCLUSION_CULLING
+//PR::Include RaySphere
+//PR::Include OcclusionCull
+#endif
 //PR::Sphere::Dec
 
 void main()
@@ -41,12 +49,29 @@ void main()
   {
     return;
   }
+  vec4 cornersDC[3];
+  vec3 offsetsVC[3];
+  vec3 raysVC[3];
+  for (int corner = 0; corner < 3; ++corner)
+  {
+    prSphereBillboard(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
+      cornersDC[corner], offsetsVC[corner], raysVC[corner]);
+  }
+#ifdef PR_OCCLUSION_CULLING
+  // hidden behind the depth already drawn (vtkParticleOcclusionCuller)
+  if (prSphereIsOccluded(cornersDC, centerOffsetVCVSOutput[0], radiusVC, clipZWOfTranslation,
+        VCDCMatrix))
+  {
+    return;
+  }
+#endif
   //PR::Sphere::Cull
   int i = 0; // the input vertex, for VTK's pass-through replacements
   for (int corner = 0; corner < 3; ++corner)
   {
-    prSphereBillboard(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
-      gl_Position, offsetVCGSOutput, rayVCGSOutput);
+    gl_Position = cornersDC[corner];
+    offsetVCGSOutput = offsetsVC[corner];
+    rayVCGSOutput = raysVC[corner];
     centerRadiusVCGSOutput = centerRadiusVCVSOutput[0];
     centerOffsetVCGSOutput = centerOffsetVCVSOutput[0];
     particleIdGSOutput = particleIdVSOutput[0];

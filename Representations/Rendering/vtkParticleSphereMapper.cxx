@@ -1,4 +1,5 @@
 #include "vtkParticleSphereMapper.h"
+#include "vtkParticleOcclusionCuller.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -52,6 +53,8 @@ public:
   // else a copy in the input's precision with the skipped particles moved onto a valid one. The
   // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
   vtkSmartPointer<vtkDataArray> Positions;
+  vtkNew<vtkParticleOcclusionCuller> Culler;
+  vtkTimeStamp CullerBuildTime;
   double CenterBounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MaxRadius = 0.0;
   vtkIdType NumberOfPoints = 0;
@@ -505,6 +508,12 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   vtkShaderProgram::Substitute(gs, "in vec4 vertexColorVSOutput[];", "flat in vec4 vertexColorVSOutput[];");
   vtkShaderProgram::Substitute(gs, "out vec4 vertexColorGSOutput;", "flat out vec4 vertexColorGSOutput;");
+  // the per-sphere occlusion test, only where the culler draws this program
+  if (this->GetOcclusionCullingCompiled(ren))
+  {
+    vtkShaderProgram::Substitute(
+      gs, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_OCCLUSION_CULLING\n", false);
+  }
   shaders[vtkShader::Geometry]->SetSource(gs);
   // Includes added by the replacements and render passes.
   for (auto type : { vtkShader::Vertex, vtkShader::Geometry, vtkShader::Fragment })
@@ -878,11 +887,40 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
     this->Internals->DrawTimer.Reset();
     this->Internals->DrawTimer.Start();
   }
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numPts));
+  vtkInternals& internals = *this->Internals;
+  if (this->OcclusionCulling && numPts >= this->OcclusionCullingThreshold && !ren->GetSelector())
+  {
+    vtkParticleOcclusionCuller* culler = internals.Culler;
+    if (internals.CullerBuildTime < this->VBOBuildTime)
+    {
+      culler->Build(ren, internals.Positions, internals.Radii->GetPointer(0), numPts);
+      internals.CullerBuildTime.Modified();
+    }
+    culler->Draw(ren, cellBO.Program, actor->GetIsIdentity() ? nullptr : actor->GetMatrix(),
+      this->GetRadiusScaleVC(actor));
+  }
+  else
+  {
+    internals.Culler->DrawAll(ren, cellBO.Program, numPts);
+  }
   if (this->CollectTimings)
   {
-    this->Internals->DrawTimer.Stop();
+    internals.DrawTimer.Stop();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::GetOcclusionCullingCompiled(vtkRenderer* ren)
+{
+  return this->OcclusionCulling && !ren->GetSelector() &&
+    static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount) >=
+    this->OcclusionCullingThreshold;
+}
+
+//------------------------------------------------------------------------------
+vtkParticleOcclusionCuller* vtkParticleSphereMapper::GetOcclusionCuller()
+{
+  return this->Internals->Culler;
 }
 
 //------------------------------------------------------------------------------
@@ -900,6 +938,7 @@ double vtkParticleSphereMapper::GetLastDrawGPUSeconds()
 void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->DrawTimer.ReleaseGraphicsResources();
+  this->Internals->Culler->ReleaseGraphicsResources(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -913,5 +952,7 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
   os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+  os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
+  os << indent << "OcclusionCullingThreshold: " << this->OcclusionCullingThreshold << "\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
 }

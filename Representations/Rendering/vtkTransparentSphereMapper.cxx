@@ -386,6 +386,13 @@ void vtkTransparentSphereMapper::CacheParticleAttributes(vtkRenderer* ren, vtkAc
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransparentSphereMapper::GetOcclusionCullingCompiled(vtkRenderer* ren)
+{
+  return this->Internals->Building != Variant::Translucent &&
+    this->Superclass::GetOcclusionCullingCompiled(ren);
+}
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildBufferObjects(ren, act);

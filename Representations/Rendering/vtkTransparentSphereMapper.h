@@ -260,6 +260,8 @@ protected:
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
   void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
+  // the translucent variant writes no depth: no occlusion test there
+  bool GetOcclusionCullingCompiled(vtkRenderer* ren) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
   /**
