@@ -21,28 +21,41 @@ def main():
     ratios = defaultdict(list)
     peer = None
     with open(args.csv) as f:
-        for row in csv.DictReader(f):
-            n = int(row["particles"])
-            series[row["mapper"]].append((n, float(row["median_frame_s"])))
-            ratios[row["mapper"]].append((n, float(row["ratio_vs_peer"])))
-            peer = row["peer"]
+        rows = list(csv.DictReader(f))
+    labels = {row["label"] for row in rows}
+    for row in rows:
+        n = int(row["particles"])
+        # one series per scene and mapper when the table holds several scenes
+        key = row["mapper"] if len(labels) == 1 else "%s: %s" % (row["label"], row["mapper"])
+        series[key].append((n, float(row["median_frame_s"])))
+        ratios[key].append((n, float(row["ratio_vs_peer"])))
+        peer = row["peer"]
 
-    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(13, 5.2))
+    # colour by mapper, line and marker by scene
+    mappers = sorted({row["mapper"] for row in rows})
+    scenes = sorted(labels)
+    styles = {}
+    for key in series:
+        label, _, mapper = key.rpartition(": ")
+        styles[key] = dict(color="C%d" % mappers.index(mapper),
+                           ls=["-", "--", ":", "-."][scenes.index(label) % 4] if label else "-",
+                           marker="osD^v"[scenes.index(label) % 5] if label else "o")
     for mapper, points in sorted(series.items()):
         points.sort()
-        ax0.loglog([p[0] for p in points], [p[1] for p in points], "o-", label=mapper)
+        ax0.loglog([p[0] for p in points], [p[1] for p in points], label=mapper, **styles[mapper])
     ax0.set_xlabel("particles")
     ax0.set_ylabel("median frame time [s]")
     ax0.grid(True, which="both", alpha=0.3)
-    ax0.legend()
+    ax0.legend(fontsize=7)
     for mapper, points in sorted(ratios.items()):
         points.sort()
-        ax1.semilogx([p[0] for p in points], [p[1] for p in points], "o-", label=mapper)
+        ax1.semilogx([p[0] for p in points], [p[1] for p in points], label=mapper, **styles[mapper])
     ax1.axhline(1.0, color="grey", lw=0.8)
     ax1.set_xlabel("particles")
     ax1.set_ylabel("frame time / %s frame time" % peer)
     ax1.grid(True, which="both", alpha=0.3)
-    ax1.legend()
+    ax1.legend(fontsize=7)
     if args.title:
         fig.suptitle(args.title)
     fig.tight_layout()

@@ -8,7 +8,7 @@
 //   median_draw_gpu_s ParticleRendering mappers: median GPU time of the sphere draw stage
 //   ratio_vs_peer     median_frame_s / median_frame_s of the peer (the first --mapper given)
 //
-// usage: prBenchmark --data particles.vtp [--mapper particle|vtksphere|pointgaussian ...]
+// usage: prBenchmark --data particles.vtp [--mapper particle|particle-nocull|vtksphere|pointgaussian ...]
 //                    [--frames 10] [--size 1024x768] [--csv out.csv] [--label text]
 //                    [--radius-array radius] [--color-array speed] [--screenshot DIR]
 // The CSV gets one row per mapper (header written when the file is new).
@@ -64,11 +64,12 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o,
 
   vtkSmartPointer<vtkPolyDataMapper> mapper;
   vtkParticleSphereMapper* particleMapper = nullptr;
-  if (kind == "particle")
+  if (kind == "particle" || kind == "particle-nocull")
   {
     vtkNew<vtkParticleSphereMapper> m;
     m->SetRadiusArrayName(o.RadiusArray.c_str());
     m->CollectTimingsOn();
+    m->SetOcclusionCulling(kind == "particle"); // particle-nocull: the plain draw, for comparison
     particleMapper = m;
     mapper = m;
   }
@@ -144,7 +145,7 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "usage: prBenchmark --data particles.vtp [--mapper particle|vtksphere|"
+    std::cerr << "usage: prBenchmark --data particles.vtp [--mapper particle|particle-nocull|vtksphere|"
                  "pointgaussian ...] [--frames N] [--size WxH] [--csv out.csv] [--label text]\n";
     return 2;
   }
