@@ -26,6 +26,8 @@ uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 // clip-space z and w of the MC->VC translation (see prDepthOfSplitPointVC)
 uniform vec2 clipZWOfTranslation;
+// picking: the drawn particle's index times this is the input point's (see MaximumNumberOfParticles)
+uniform int particleIdStride;
 
 flat in vec4 centerRadiusVCVSOutput;
 flat in vec3 centerOffsetVCVSOutput;

@@ -53,11 +53,34 @@ struct CellView
   bool Outside = false;                  // outside the viewport or beyond the far plane
 };
 
-template <typename T>
-bool FinitePosition(const T* p)
+// position i in double: float and double arrays without virtual calls, others through GetTuple
+void GetPosition(vtkDataArray* positions, vtkIdType i, double p[3])
 {
-  return std::isfinite(static_cast<double>(p[0])) && std::isfinite(static_cast<double>(p[1])) &&
-    std::isfinite(static_cast<double>(p[2]));
+  if (auto* f = vtkFloatArray::FastDownCast(positions))
+  {
+    const float* q = f->GetPointer(3 * i);
+    p[0] = q[0];
+    p[1] = q[1];
+    p[2] = q[2];
+  }
+  else if (auto* d = vtkDoubleArray::FastDownCast(positions))
+  {
+    const double* q = d->GetPointer(3 * i);
+    p[0] = q[0];
+    p[1] = q[1];
+    p[2] = q[2];
+  }
+  else
+  {
+    positions->GetTuple(i, p);
+  }
+}
+
+// the sphere core draws a particle with a positive finite radius at a finite position
+bool IsDrawn(float radius, const double p[3])
+{
+  return radius > 0.0f && std::isfinite(radius) && std::isfinite(p[0]) && std::isfinite(p[1]) &&
+    std::isfinite(p[2]);
 }
 }
 
@@ -285,30 +308,9 @@ bool vtkParticleOcclusionCuller::Build(
     return true;
   }
 
-  // positions in double, valid flags (any precision; float and double without virtual calls)
-  auto position = [positions](vtkIdType i, double p[3]) {
-    if (auto* f = vtkFloatArray::FastDownCast(positions))
-    {
-      const float* q = f->GetPointer(3 * i);
-      p[0] = q[0];
-      p[1] = q[1];
-      p[2] = q[2];
-    }
-    else if (auto* d = vtkDoubleArray::FastDownCast(positions))
-    {
-      const double* q = d->GetPointer(3 * i);
-      p[0] = q[0];
-      p[1] = q[1];
-      p[2] = q[2];
-    }
-    else
-    {
-      positions->GetTuple(i, p);
-    }
-  };
-  auto valid = [&](vtkIdType i, const double p[3]) {
-    return radii[i] > 0.0f && std::isfinite(radii[i]) && FinitePosition(p);
-  };
+  // positions in double (any precision; float and double without virtual calls)
+  auto position = [positions](vtkIdType i, double p[3]) { GetPosition(positions, i, p); };
+  auto valid = [&](vtkIdType i, const double p[3]) { return IsDrawn(radii[i], p); };
 
   double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
     VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
@@ -375,12 +377,35 @@ bool vtkParticleOcclusionCuller::Build(
       side *= 1.1;
     }
   }
-  const int numCells = dims[0] * dims[1] * dims[2];
   double scale[3];
   for (int k = 0; k < 3; ++k)
   {
     scale[k] = extent[k] > 0.0 ? dims[k] / extent[k] : 0.0;
   }
+  try
+  {
+    return this->BuildCells(ren, positions, radii, count, validCount, bounds, dims, scale);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Not enough memory for the occlusion culling of " << count
+                  << " particles (about " << (8 * count) / (1 << 20)
+                  << " MB of indices): they are drawn unculled.");
+    internals.Cells.clear();
+    this->NumberOfCells = 0;
+    return false;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOcclusionCuller::BuildCells(vtkRenderer* ren, vtkDataArray* positions,
+  const float* radii, vtkIdType count, vtkIdType validCount, const double bounds[6],
+  const int dims[3], const double scale[3])
+{
+  vtkInternals& internals = *this->Internals;
+  const int numCells = dims[0] * dims[1] * dims[2];
+  auto position = [positions](vtkIdType i, double p[3]) { GetPosition(positions, i, p); };
+  auto valid = [&](vtkIdType i, const double p[3]) { return IsDrawn(radii[i], p); };
   std::vector<int> cellOf(static_cast<size_t>(count), -1);
   vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)

@@ -154,6 +154,10 @@ protected:
   vtkIdType LastNumberOfEmittedSpheres = -1;
 
 private:
+  // Build() after the grid is chosen: the counting sort, the boxes, the upload (may throw
+  // std::bad_alloc, which Build() turns into an error)
+  bool BuildCells(vtkRenderer* ren, vtkDataArray* positions, const float* radii, vtkIdType count,
+    vtkIdType validCount, const double bounds[6], const int dims[3], const double scale[3]);
   void BeginCount();
   void EndCount();
   vtkParticleOcclusionCuller(const vtkParticleOcclusionCuller&) = delete;

@@ -54,6 +54,12 @@ public:
   // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
   vtkSmartPointer<vtkDataArray> Positions;
   vtkNew<vtkParticleOcclusionCuller> Culler;
+  // what the vertex buffers hold: the arrays above, or every Stride-th of them
+  vtkIdType Stride = 1;
+  vtkSmartPointer<vtkDataArray> UploadedPositions;
+  vtkSmartPointer<vtkFloatArray> UploadedRadii;
+  std::vector<vtkSmartPointer<vtkDataArray>> StrideArrays; // alive until the next upload
+  std::string LastStrideWarning;
   vtkTimeStamp CullerBuildTime;
   double CenterBounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MaxRadius = 0.0;
@@ -489,6 +495,14 @@ void vtkParticleSphereMapper::GetShaderTemplate(
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleSphereMapper::BuildShaders(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  ++this->NumberOfShaderBuilds;
+  this->Superclass::BuildShaders(shaders, ren, act);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleSphereMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
@@ -497,7 +511,8 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
   // Ids for the hardware selector: the particle index, also for cell ids (the fragment stage
   // would otherwise use gl_PrimitiveID plus the offset of a polygon mapper's cell batches).
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
-  vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "particleIdVSOutput", true);
+  // (times the stride when only every k-th particle is drawn: the index of the input point)
+  vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "(particleIdVSOutput * particleIdStride)", true);
   // A particle's colour is one value for its whole imposter: pass VTK's scalar colour flat, not
   // interpolated (interpolating a constant rounds, e.g. an alpha of 1 to 1 - 6e-8).
   vtkShaderProgram::Substitute(fs, "in vec4 vertexColorVSOutput;", "flat in vec4 vertexColorVSOutput;");
@@ -655,6 +670,10 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
   program->SetUniformMatrix("DCVCMatrix", dcvc);
   program->SetUniformi("cameraParallel", cam->GetParallelProjection());
   program->SetUniformf("radiusScaleVC", static_cast<float>(this->GetRadiusScaleVC(actor)));
+  if (program->IsUniformUsed("particleIdStride"))
+  {
+    program->SetUniformi("particleIdStride", static_cast<int>(this->Internals->Stride));
+  }
 
   // Clip-space z and w of the MC->VC translation, in double (see prDepthOfSplitPointVC). The
   // translation is that of the MCVC matrix the superclass just set (actor, camera, VBO shift).
@@ -722,7 +741,34 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     colors = nullptr; // cell scalars do not colour particles
   }
 
-  this->VBOs->CacheDataArray("vertexMC", internals.Positions, ren, VTK_FLOAT);
+  // More particles than the vertex buffers can hold (MaximumNumberOfParticles): every k-th.
+  internals.Stride = 1;
+  if (numPts > this->MaximumNumberOfParticles)
+  {
+    internals.Stride = (numPts + this->MaximumNumberOfParticles - 1) / this->MaximumNumberOfParticles;
+  }
+  internals.StrideArrays.clear();
+  vtkIdType uploaded = numPts;
+  std::string strideWarning;
+  if (internals.Stride > 1)
+  {
+    uploaded = (numPts + internals.Stride - 1) / internals.Stride;
+    std::ostringstream text;
+    text << numPts << " particles exceed MaximumNumberOfParticles (" << this->MaximumNumberOfParticles
+         << "; vertex buffers beyond 2 GiB fail or crash on common OpenGL drivers, llvmpipe "
+            "among them): drawing one particle in "
+         << internals.Stride << " (" << uploaded << " of " << numPts << ").";
+    strideWarning = text.str();
+  }
+  this->WarnOnChange(strideWarning, internals.LastStrideWarning);
+  internals.UploadedPositions = this->StrideForUpload(internals.Positions);
+  internals.UploadedRadii = vtkFloatArray::SafeDownCast(this->StrideForUpload(internals.Radii));
+  if (colors)
+  {
+    colors = vtkUnsignedCharArray::SafeDownCast(this->StrideForUpload(colors));
+  }
+
+  this->VBOs->CacheDataArray("vertexMC", internals.UploadedPositions, ren, VTK_FLOAT);
   vtkOpenGLVertexBufferObject* posVBO = this->VBOs->GetVBO("vertexMC");
   if (posVBO)
   {
@@ -731,7 +777,7 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     posVBO->SetProp3D(act);
     posVBO->SetCamera(ren->GetActiveCamera());
   }
-  this->VBOs->CacheDataArray("radiusMC", internals.Radii, ren, VTK_FLOAT);
+  this->VBOs->CacheDataArray("radiusMC", internals.UploadedRadii, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray("scalarColor", colors, ren, VTK_UNSIGNED_CHAR);
   this->CacheParticleAttributes(ren, act);
   this->VBOs->BuildAllVBOs(ren);
@@ -760,7 +806,7 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   {
     this->Primitives[i].IBO->IndexCount = 0;
   }
-  this->Primitives[PrimitiveTris].IBO->IndexCount = static_cast<size_t>(numPts);
+  this->Primitives[PrimitiveTris].IBO->IndexCount = static_cast<size_t>(uploaded);
   this->VBOBuildTime.Modified();
   internals.BuiltInput = this->CurrentInput;
   ++this->NumberOfUploads;
@@ -861,7 +907,7 @@ void vtkParticleSphereMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkAct
   // from index buffers, which this mapper does not have.
   vtkHardwareSelector* selector = ren->GetSelector();
   const vtkIdType count = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
-  const vtkIdType maxId = std::max<vtkIdType>(0, count - 1);
+  const vtkIdType maxId = std::max<vtkIdType>(0, (count - 1) * this->Internals->Stride);
   selector->UpdateMaximumPointId(maxId);
   selector->UpdateMaximumCellId(maxId);
 }
@@ -893,7 +939,8 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
     vtkParticleOcclusionCuller* culler = internals.Culler;
     if (internals.CullerBuildTime < this->VBOBuildTime)
     {
-      culler->Build(ren, internals.Positions, internals.Radii->GetPointer(0), numPts);
+      culler->Build(
+        ren, internals.UploadedPositions, internals.UploadedRadii->GetPointer(0), numPts);
       internals.CullerBuildTime.Modified();
     }
     culler->Draw(ren, cellBO.Program, actor->GetIsIdentity() ? nullptr : actor->GetMatrix(),
@@ -907,6 +954,41 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
   {
     internals.DrawTimer.Stop();
   }
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkParticleSphereMapper::StrideForUpload(vtkDataArray* array)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType stride = internals.Stride;
+  if (!array || stride <= 1)
+  {
+    return array;
+  }
+  const vtkIdType n = array->GetNumberOfTuples();
+  const vtkIdType m = (n + stride - 1) / stride;
+  const int components = array->GetNumberOfComponents();
+  vtkSmartPointer<vtkDataArray> subset = vtk::TakeSmartPointer(array->NewInstance());
+  subset->SetNumberOfComponents(components);
+  subset->SetNumberOfTuples(m);
+  subset->SetName(array->GetName());
+  const int size = array->GetDataTypeSize() * components;
+  const char* from = static_cast<const char*>(array->GetVoidPointer(0));
+  char* to = static_cast<char*>(subset->GetVoidPointer(0));
+  vtkSMPTools::For(0, m, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      std::copy(from + i * stride * size, from + (i * stride + 1) * size, to + i * size);
+    }
+  });
+  internals.StrideArrays.push_back(subset);
+  return subset;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkParticleSphereMapper::GetParticleStride()
+{
+  return this->Internals->Stride;
 }
 
 //------------------------------------------------------------------------------
@@ -952,6 +1034,7 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
   os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+  os << indent << "MaximumNumberOfParticles: " << this->MaximumNumberOfParticles << "\n";
   os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
   os << indent << "OcclusionCullingThreshold: " << this->OcclusionCullingThreshold << "\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";

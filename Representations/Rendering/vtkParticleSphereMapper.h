@@ -104,6 +104,13 @@ public:
   vtkGetMacro(NumberOfUploads, vtkIdType);
 
   /**
+   * Number of times the shader sources were assembled (vtkOpenGLPolyDataMapper::BuildShaders:
+   * a new variant, a new render pass or light set-up, a changed mapper). For tests: a frame that
+   * changes none of these builds nothing.
+   */
+  vtkGetMacro(NumberOfShaderBuilds, vtkIdType);
+
+  /**
    * Number of particles skipped at the last upload because of an invalid radius or position.
    */
   vtkGetMacro(NumberOfSkippedParticles, vtkIdType);
@@ -142,6 +149,19 @@ public:
    */
   vtkSetClampMacro(ProgressThreshold, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(ProgressThreshold, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * The most particles the vertex buffers take (default 150 000 000: 1.8 GB of positions; vertex
+   * buffers beyond 2 GiB fail or crash on common OpenGL drivers, Mesa's llvmpipe among them).
+   * Above it every k-th particle is drawn, k = ceil(N / MaximumNumberOfParticles), with a warning;
+   * picking still reports input point ids. GetParticleStride(): k of the last upload (1 when all
+   * are drawn).
+   */
+  vtkSetClampMacro(MaximumNumberOfParticles, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfParticles, vtkIdType);
+  vtkIdType GetParticleStride();
   ///@}
 
   ///@{
@@ -240,6 +260,9 @@ protected:
   void ReplaceShaderEdges(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
 
+  void BuildShaders(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+
   // per-frame uniforms (camera, radius scale, depth split)
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
@@ -282,6 +305,13 @@ protected:
   virtual bool GetOcclusionCullingCompiled(vtkRenderer* ren);
 
   /**
+   * The array to upload for a per-particle array of the input's length: the array itself, or
+   * every GetParticleStride()-th tuple of it (kept alive until the next upload). Subclasses
+   * adding attributes in CacheParticleAttributes() pass their arrays through it.
+   */
+  vtkDataArray* StrideForUpload(vtkDataArray* array);
+
+  /**
    * Hook for subclasses: add per-particle vertex attributes with this->VBOs->CacheDataArray()
    * (called while the buffers are built, before the upload).
    */
@@ -306,10 +336,12 @@ protected:
   vtkMTimeType DataMTimeBeforeScale = 0;
   vtkIdType NumberOfSkippedParticles = 0;
   bool CollectTimings = false;
+  vtkIdType MaximumNumberOfParticles = 150000000;
   bool OcclusionCulling = true;
   vtkIdType OcclusionCullingThreshold = 8192;
   vtkIdType ProgressThreshold = vtkIdType(1) << 20;
   vtkIdType NumberOfUploads = 0;
+  vtkIdType NumberOfShaderBuilds = 0;
   double LastUploadSeconds = 0.0;
 
 private:

@@ -382,7 +382,8 @@ bool vtkTransparentSphereMapper::HasTranslucentPolygonalGeometry()
 void vtkTransparentSphereMapper::CacheParticleAttributes(vtkRenderer* ren, vtkActor*)
 {
   this->PrepareOpacities();
-  this->VBOs->CacheDataArray("opticalDepthMC", this->Internals->OpticalDepths, ren, VTK_FLOAT);
+  this->VBOs->CacheDataArray(
+    "opticalDepthMC", this->StrideForUpload(this->Internals->OpticalDepths), ren, VTK_FLOAT);
 }
 
 //------------------------------------------------------------------------------
