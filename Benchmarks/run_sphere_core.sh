@@ -4,7 +4,7 @@
 # vtkOpenGLSphereMapper, drawn in the same process on the same data and camera path, 1024x768.
 # Data (random gas with vertex cells) is generated into a temporary directory, never committed.
 #
-# usage: Benchmarks/run_sphere_core.sh [build-dir]   (needs the project built; runs under Xvfb)
+# usage: [LARGE=1] Benchmarks/run_sphere_core.sh [build-dir]   (needs the project built; runs under Xvfb)
 # writes Benchmarks/results/sphere_core.csv (replaced) and sphere_core.png (RESULTS_DIR overrides)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,6 +31,14 @@ for kind in gas lattice; do
   done
 done
 run lj_film "$top/Testing/Data/lj_film.vtp"
+# LARGE=1: also 10^7 gas particles (3 frames; ~80 s, 2 GB of memory, a 430 MB temporary file)
+if [ "${LARGE:-0}" = 1 ]; then
+  /usr/bin/python3 "$top/Benchmarks/make_particles.py" --kind gas --count 10000000 --seed 1 \
+    --out "$data/gas_10000000.vtp" >/dev/null
+  "$top/Scripts/with_xvfb.sh" "$build/bin/prBenchmark" --data "$data/gas_10000000.vtp" \
+    --mapper pointgaussian --mapper particle-nocull --mapper particle \
+    --frames 3 --size 1024x768 --label gas --csv "$csv" | grep -v '^ *GL_\|^ *$\|Extensions\|OpenGL\|Visual'
+fi
 /usr/bin/python3 "$top/Benchmarks/plot_results.py" "$csv" "$results/sphere_core.png" \
   --title "Sphere core vs Point Gaussian and vtkOpenGLSphereMapper (1024x768, llvmpipe)"
 echo "wrote $csv and $results/sphere_core.png"

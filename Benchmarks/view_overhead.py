@@ -46,9 +46,10 @@ def make_view(kind, representation):
     display.Representation = representation
     if representation == "Point Gaussian":
         display.ShaderPreset = "Sphere"
-        display.GaussianRadius = 0.5
+        display.GaussianRadius = 1.0  # times the radius array
         display.ScaleByArray = 1
-        display.ScaleArray = ["POINTS", "radius"]
+        display.SetScaleArray = ["POINTS", "radius"]
+        display.UseScaleFunction = 0
     else:
         display.UseRadiusArray = 1
         display.RadiusArray = ["POINTS", "radius"]
