@@ -91,7 +91,7 @@ Result Run(const std::string& kind, vtkPolyData* data, const Options& o,
 
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  prBench::SetupMaterial(actor->GetProperty());
+  prBench::SetupMaterial(actor->GetProperty(), o.Specular);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   prBench::SetupRenderer(renderer);

@@ -62,6 +62,7 @@ struct CommonOptions
   std::string RadiusArray = "radius";
   std::string ColorArray = "speed";
   std::string ScreenshotDir;
+  double Specular = 0.3; // --specular: 0 is ParaView's default material
 };
 
 // Parses argument a if it is one of CommonOptions (next() returns its value): 1 if it was,
@@ -71,6 +72,8 @@ inline int ParseCommonOption(
 {
   if (a == "--data")
     o.Data = next();
+  else if (a == "--specular")
+    o.Specular = std::atof(next().c_str());
   else if (a == "--mapper")
     o.Mappers.push_back(next());
   else if (a == "--frames")
@@ -134,10 +137,11 @@ struct Coloring
   }
 };
 
-/** Headlight material of every benchmark (VTK defaults plus a specular highlight). */
-inline void SetupMaterial(vtkProperty* property)
+/** Headlight material of every benchmark (VTK defaults plus a specular highlight, 0.3 unless
+ * --specular says otherwise). */
+inline void SetupMaterial(vtkProperty* property, double specular = 0.3)
 {
-  property->SetSpecular(0.3);
+  property->SetSpecular(specular);
   property->SetSpecularPower(20);
 }
 
