@@ -485,8 +485,8 @@ bool vtkParticleOcclusionCuller::BuildCells(vtkRenderer* ren, vtkDataArray* posi
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleOcclusionCuller::Draw(
-  vtkRenderer* ren, vtkShaderProgram* program, vtkMatrix4x4* mcwc, double radiusScaleWC)
+bool vtkParticleOcclusionCuller::Draw(vtkRenderer* ren, vtkShaderProgram* program,
+  vtkMatrix4x4* wcdcTransposed, vtkMatrix4x4* mcwc, double radiusScaleWC)
 {
   vtkInternals& internals = *this->Internals;
   this->LastNumberOfDrawnParticles = 0;
@@ -548,17 +548,12 @@ bool vtkParticleOcclusionCuller::Draw(
 
   const double start = vtkTimerLog::GetUniversalTime();
   // model -> clip (row-major, points as columns); wcdc from the camera is stored transposed
-  vtkMatrix4x4* wcvc;
-  vtkMatrix3x3* norms;
-  vtkMatrix4x4* vcdc;
-  vtkMatrix4x4* wcdcT;
-  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdcT);
   double wcdc[4][4];
   for (int i = 0; i < 4; ++i)
   {
     for (int j = 0; j < 4; ++j)
     {
-      wcdc[i][j] = wcdcT->GetElement(j, i);
+      wcdc[i][j] = wcdcTransposed->GetElement(j, i);
     }
   }
   double m[4][4];
@@ -603,7 +598,8 @@ bool vtkParticleOcclusionCuller::Draw(
       double x0 = VTK_DOUBLE_MAX, y0 = VTK_DOUBLE_MAX, x1 = VTK_DOUBLE_MIN, y1 = VTK_DOUBLE_MIN;
       double zmin = VTK_DOUBLE_MAX;
       double zmax = VTK_DOUBLE_MIN;
-      for (int corner = 0; corner < 8 && !view.Unbounded; ++corner)
+      int behind = 0; // corners at or behind the eye plane
+      for (int corner = 0; corner < 8; ++corner)
       {
         const double p[3] = { (corner & 1) ? hi[0] + grow : lo[0] - grow,
           (corner & 2) ? hi[1] + grow : lo[1] - grow, (corner & 4) ? hi[2] + grow : lo[2] - grow };
@@ -612,11 +608,15 @@ bool vtkParticleOcclusionCuller::Draw(
         {
           clip[k] = wcdc[k][0] * p[0] + wcdc[k][1] * p[1] + wcdc[k][2] * p[2] + wcdc[k][3];
         }
-        if (!(clip[3] > 1e-12 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2])) &&
-              std::isfinite(clip[3])))
+        if (!std::isfinite(clip[3]))
         {
-          view.Unbounded = true; // at or behind the eye plane: no bounded projection
+          behind = -8; // no usable projection: draw the cell
           break;
+        }
+        if (!(clip[3] > 1e-12 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
+        {
+          ++behind; // at or behind the eye plane: no bounded projection
+          continue;
         }
         const double nx = clip[0] / clip[3];
         const double ny = clip[1] / clip[3];
@@ -628,8 +628,14 @@ bool vtkParticleOcclusionCuller::Draw(
         zmin = std::min(zmin, nz);
         zmax = std::max(zmax, nz);
       }
-      if (view.Unbounded)
+      if (behind == 8)
       {
+        view.Outside = true; // the whole box behind the eye (perspective): never seen
+        continue;
+      }
+      if (behind != 0)
+      {
+        view.Unbounded = true; // straddles the eye plane: drawn first, never culled
         view.Nearest = -1.0;
         continue;
       }

@@ -99,12 +99,16 @@ public:
    * Draw the particles with the caller's program and vertex array bound. The program's geometry
    * stage includes Shaders/OcclusionCull.glsl and calls prSphereIsOccluded(): Draw() sets its
    * uniforms (the block map of the last depth read-back) so that single hidden spheres of visible
-   * cells are dropped as well, and switches the test off again at the end. mcwc: the actor's
+   * cells are dropped as well, and switches the test off again at the end. wcdcTransposed: the
+   * world-to-clip matrix the program's camera uniforms were made from, as vtkOpenGLCamera's
+   * GetKeyMatrices() returns it (transposed); the caller keeps it from the moment it set them
+   * (the camera's cached matrices can have been recomputed for something else since). mcwc: the actor's
    * model-to-world matrix (row-major, points as columns); radiusScaleWC: the model-to-world factor
    * of the radii (the shader's radius scale). Returns true when the cells were culled, false when
    * everything was drawn with one plain draw (see the class description).
    */
-  bool Draw(vtkRenderer* ren, vtkShaderProgram* program, vtkMatrix4x4* mcwc, double radiusScaleWC);
+  bool Draw(vtkRenderer* ren, vtkShaderProgram* program, vtkMatrix4x4* wcdcTransposed,
+    vtkMatrix4x4* mcwc, double radiusScaleWC);
 
   /**
    * Draw the first `count` particles in index order with one draw call, without culling (the

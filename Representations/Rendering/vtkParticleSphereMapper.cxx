@@ -54,6 +54,7 @@ public:
   // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
   vtkSmartPointer<vtkDataArray> Positions;
   vtkNew<vtkParticleOcclusionCuller> Culler;
+  vtkNew<vtkMatrix4x4> DrawWCDC; // see SetCameraShaderParameters
   // what the vertex buffers hold: the arrays above, or every Stride-th of them
   vtkIdType Stride = 1;
   vtkSmartPointer<vtkDataArray> UploadedPositions;
@@ -657,6 +658,7 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
   // MCVCMatrix with the VBO shift/scale folded in, cameraParallel, ...
   this->Superclass::SetCameraShaderParameters(cellBO, ren, actor);
 
+  vtkInternals& internals = *this->Internals;
   vtkShaderProgram* program = cellBO.Program;
   vtkOpenGLCamera* cam = static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera());
   vtkMatrix4x4* wcdc;
@@ -664,6 +666,9 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
   vtkMatrix3x3* norms;
   vtkMatrix4x4* vcdc;
   cam->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc);
+  // the world -> clip matrix these uniforms were made from (stored transposed), for the occlusion
+  // culler: its tests must use what the draw uses
+  internals.DrawWCDC->DeepCopy(wcdc);
   program->SetUniformMatrix("VCDCMatrix", vcdc);
   vtkNew<vtkMatrix4x4> dcvc;
   vtkMatrix4x4::Invert(vcdc, dcvc);
@@ -943,8 +948,8 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
         ren, internals.UploadedPositions, internals.UploadedRadii->GetPointer(0), numPts);
       internals.CullerBuildTime.Modified();
     }
-    culler->Draw(ren, cellBO.Program, actor->GetIsIdentity() ? nullptr : actor->GetMatrix(),
-      this->GetRadiusScaleVC(actor));
+    culler->Draw(ren, cellBO.Program, internals.DrawWCDC,
+      actor->GetIsIdentity() ? nullptr : actor->GetMatrix(), this->GetRadiusScaleVC(actor));
   }
   else
   {
