@@ -13,8 +13,12 @@
  *   Shaders/Lighting.glsl. For parallel projection the view vector is the true (0,0,1); VTK's
  *   polygon shader uses the perspective formula in both cases.
  *
- * Geometry: one GL_POINTS draw of all particles with plain vertex attributes (centre with VTK's
- * VBO shift/scale, radius, colour); the vertex stage runs once per sphere and the geometry stage
+ * Geometry: a GL_POINTS draw of the particles with plain vertex attributes (centre with VTK's
+ * VBO shift/scale, radius, colour: 20 bytes per particle, plus 4 for the culler's index); from
+ * OcclusionCullingThreshold particles on, vtkParticleOcclusionCuller draws them by spatial cells
+ * nearest first and skips hidden cells and spheres (exact depth writes turn early depth tests
+ * off, so without it every hidden sphere is shaded). The vertex stage runs once per sphere and
+ * the geometry stage
  * emits one camera-facing triangle per sphere. Measured on llvmpipe this costs the same per
  * particle as vtkOpenGLSphereMapper's geometry shader, and 1.7x less than 3 pulled vertices or
  * 4-vertex instances per particle (both of which repeat the billboard set-up per vertex). In
@@ -43,7 +47,8 @@
  * vtkOpenGLRenderPass::PreReplaceShaderValues and PostReplaceShaderValues both see them. The
  * contract (hooks, names in scope, per-sphere varyings, warnings) is vtkParticleShaderHooks.
  *
- * Picking: the hardware selector's point and cell ids are the particle (point) index.
+ * Picking: the hardware selector's point and cell ids are the particle (point) index. Above
+ * MaximumNumberOfParticles every k-th particle is drawn, with a warning.
  * Clipping planes clip whole particles by their centre.
  *
  * @sa vtkOpenGLSphereMapper vtkParticleReferenceRenderer vtkParticleShaderHooks
