@@ -25,12 +25,11 @@ import particlerendering  # noqa: E402,F401 (wraps the mapper objects reached be
 
 args = pr.parse_arguments()
 pr.load_plugin(args)
-ok = True
+failures = []
 
 
 def fail(message):
-    global ok
-    ok = False
+    failures.append(message)
     print("FAIL: " + message)
 
 
@@ -130,4 +129,4 @@ print("largest difference between the two Particles views: %s" % difference)
 if difference != 0:
     fail("the two Particles views differ by up to %s" % difference)
 
-pr.finish(ok)
+pr.finish(not failures)

@@ -16,16 +16,14 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from prVTKTesting import Messages, check, finish, grab_image, picked_ids
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
-    vtkHardwareSelector,
     vtkRenderer,
     vtkRenderWindow,
-    vtkWindowToImageFilter,
 )
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -74,17 +72,8 @@ def render(data, limit, mapper_class=pr.vtkParticleSphereMapper, opacity=1.0, re
     renderer.ResetCameraClippingRange()
     for _ in range(renders):
         window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
-    selector = vtkHardwareSelector()
-    selector.SetRenderer(renderer)
-    selector.SetArea(100, 100, 200, 200)
-    selection = selector.Select()
-    ids = set()
-    for i in range(selection.GetNumberOfNodes()):
-        ids.update(vtk_to_numpy(selection.GetNode(i).GetSelectionList()).tolist())
+    image = grab_image(window)
+    ids = picked_ids(renderer, (100, 100, 200, 200))
     stride = mapper.GetParticleStride()
     window.Finalize()
     return image, stride, messages.warnings, ids

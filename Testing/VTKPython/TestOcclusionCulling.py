@@ -22,16 +22,14 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import check, finish
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from prVTKTesting import check, finish, grab_image, picked_ids
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkLookupTable, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
-    vtkHardwareSelector,
     vtkRenderer,
     vtkRenderWindow,
-    vtkWindowToImageFilter,
 )
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory overrides)
 
@@ -81,23 +79,12 @@ def render(data, cull, view, mapper_class=pr.vtkParticleSphereMapper, samples=0,
     renderer.ResetCamera()
     view(renderer, actor)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+    image = grab_image(window)
     culler = mapper.GetOcclusionCuller()
     stats = (culler.GetLastNumberOfEmittedSpheres(), culler.GetLastNumberOfDepthReads())
     picked = None
     if pick:
-        selector = vtkHardwareSelector()
-        selector.SetRenderer(renderer)
-        selector.SetArea(190, 140, 210, 160)
-        selection = selector.Select()
-        ids = set()
-        for i in range(selection.GetNumberOfNodes()):
-            node = selection.GetNode(i).GetSelectionList()
-            ids.update(vtk_to_numpy(node).tolist())
-        picked = ids
+        picked = picked_ids(renderer, (190, 140, 210, 160))
     window.Finalize()
     return image, stats, picked
 

@@ -57,3 +57,27 @@ def open_reader(reader, path):
     messages = Messages(reader)
     reader.SetFileName(path)
     return reader, messages, time_steps(reader)
+
+
+def grab_image(window):
+    """The window's RGB(A) pixels as an (N, components) int numpy array."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+
+
+def picked_ids(renderer, area):
+    """The ids the hardware selector reports in the pixel rectangle area (x0, y0, x1, y1)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkHardwareSelector
+    selector = vtkHardwareSelector()
+    selector.SetRenderer(renderer)
+    selector.SetArea(*area)
+    selection = selector.Select()
+    ids = set()
+    for i in range(selection.GetNumberOfNodes()):
+        ids.update(vtk_to_numpy(selection.GetNode(i).GetSelectionList()).tolist())
+    return ids
