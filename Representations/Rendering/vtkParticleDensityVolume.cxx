@@ -1,4 +1,5 @@
 #include "vtkParticleDensityVolume.h"
+#include "vtkParticleMemory.h"
 
 #include "vtkActor.h"
 #include "vtkCommand.h"
@@ -23,6 +24,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -190,13 +192,34 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
   const double inverseEdge = 1.0 / this->VoxelSize;
   const bool trilinear = this->SplatMode == TRILINEAR_SPLAT;
 
-  // each thread into its own partial volume (no races), then a sum over the voxels
+  // each thread into its own partial volume (no races), then a sum over the voxels: threads + 1
+  // volumes of floats. Checked first: a volume that does not fit is an error, not an abort.
+  const double bytes = static_cast<double>(voxels) * sizeof(float) *
+    (vtkSMPTools::GetEstimatedNumberOfThreads() + 1);
+  std::string why;
+  if (!vtkParticleMemory::CanAllocate(bytes, why))
+  {
+    vtkErrorMacro(<< "The " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " density volume built on the CPU " << why
+                  << ": no ambient occlusion. Lower Resolution or MaximumVoxelCount.");
+    this->Volume.clear();
+    return false;
+  }
+  std::atomic<bool> outOfMemory(false);
   vtkSMPThreadLocal<std::vector<float>> partial;
   auto splat = [&](vtkIdType begin, vtkIdType end) {
     std::vector<float>& local = partial.Local();
     if (local.empty())
     {
-      local.assign(voxels, 0.0f);
+      try
+      {
+        local.assign(voxels, 0.0f);
+      }
+      catch (const std::bad_alloc&)
+      {
+        outOfMemory = true; // (an exception must not leave an SMP worker)
+        return;
+      }
     }
     double p[3];
     for (vtkIdType i = begin; i < end; ++i)
@@ -258,7 +281,25 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
     vtkSMPTools::For(first, std::min(n, first + block), splat);
     this->ReportProgress(std::min(n, first + block), n);
   }
-  this->Volume.assign(voxels, 0.0f);
+  if (!outOfMemory)
+  {
+    try
+    {
+      this->Volume.assign(voxels, 0.0f);
+    }
+    catch (const std::bad_alloc&)
+    {
+      outOfMemory = true;
+    }
+  }
+  if (outOfMemory)
+  {
+    vtkErrorMacro(<< "Out of memory for the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " density volume (" << vtkParticleMemory::FormatBytes(bytes)
+                  << "): no ambient occlusion. Lower Resolution or MaximumVoxelCount.");
+    this->Volume.clear();
+    return false;
+  }
   float* out = this->Volume.data();
   std::vector<const float*> parts;
   for (auto& local : partial)
@@ -422,7 +463,17 @@ bool vtkParticleDensityVolume::ReadVolumeBuffer()
   {
     return false;
   }
-  this->Volume.resize(voxels);
+  try
+  {
+    this->Volume.resize(voxels);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Out of memory for reading back the density volume ("
+                  << vtkParticleMemory::FormatBytes(voxels * sizeof(float)) << ").");
+    this->Volume.clear();
+    return false;
+  }
   return vtkParticleComputeProgram::DownloadStorage(
     this->Internals->VolumeBuffer, 0, voxels * sizeof(float), this->Volume.data());
 }
@@ -598,6 +649,18 @@ bool vtkParticleDensityVolume::EndParticles(
     return false;
   }
   const int* dims = this->Dimensions;
+  // the texture (and, on a software rasteriser, the GPU build's buffers) in host memory
+  {
+    const double bytes = static_cast<double>(dims[0]) * dims[1] * dims[2] * sizeof(float);
+    std::string why;
+    if (!vtkParticleMemory::CanAllocate(bytes, why))
+    {
+      vtkErrorMacro(<< "The " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                    << " density volume texture " << why
+                    << ": no ambient occlusion. Lower Resolution or MaximumVoxelCount.");
+      return false;
+    }
+  }
   texture->SetContext(context);
 
   // GPU: splat every mapper's own vertex buffers into one volume

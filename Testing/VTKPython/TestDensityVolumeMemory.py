@@ -1,0 +1,81 @@
+"""A density volume larger than the free memory is an error message, not an abort.
+
+vtkDensityVolumeAOPass with Resolution 4096, MaximumResolution 4096 and MaximumVoxelCount lifted
+asked for 34 GB on the CPU build (the grid is clamped to the GPU's largest 3D texture per axis,
+2048 on llvmpipe) and aborted on an uncaught std::bad_alloc. Checked, for the CPU and the GPU
+build: the render returns, the pass reports one error naming the grid and the sizes ("needs X GB,
+Y GB free"), the particles are drawn (without ambient occlusion: the same picture as with no AO
+pass), and a second render neither retries nor repeats the message. Then a sane resolution on the
+same pass builds the volume again.
+
+usage: python3 TestDensityVolumeMemory.py
+"""
+import sys
+
+import numpy as np
+
+import particlerendering as pr
+from prVTKTesting import Messages, check, finish, grab_image
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import VTK_ID_MAX, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
+from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
+
+rng = np.random.default_rng(2)
+points = vtkPoints()
+points.SetData(numpy_to_vtk(rng.random((5000, 3)) * 20.0, deep=True))
+particles = vtkPolyData()
+particles.SetPoints(points)
+
+
+def scene(with_ao, mode=0):
+    mapper = pr.vtkParticleSphereMapper()
+    mapper.SetInputData(particles)
+    mapper.SetRadius(0.6)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    ao = None
+    if with_ao:
+        ao = pr.vtkDensityVolumeAOPass()
+        ao.SetDelegatePass(vtkRenderStepsPass())
+        ao.SetGenerationMode(mode)
+        volume = ao.GetDensityVolume()
+        volume.SetResolution(4096)
+        volume.SetMaximumResolution(4096)
+        volume.SetMaximumVoxelCount(VTK_ID_MAX)
+        renderer.SetPass(ao)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(200, 200)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    return window, ao
+
+
+window, _ = scene(False)
+window.Render()
+plain = grab_image(window)
+for mode, name in ((0, "CPU"), (1, "GPU")):
+    window, ao = scene(True, mode)
+    messages = Messages(ao.GetDensityVolume())
+    pass_messages = Messages(ao)
+    window.Render()
+    window.Render()  # the same input again: no retry, no second message
+    errors = messages.errors + pass_messages.errors
+    print("%s build: %s" % (name, [e.split("): ")[-1].strip() for e in errors]))
+    check(len(errors) == 1, "%s build: %d errors, expected one" % (name, len(errors)))
+    check(any("density volume" in e and " GB" in e and "free" in e and "no ambient occlusion" in e
+              for e in errors), "%s build: the error does not name the sizes: %s" % (name, errors))
+    image = grab_image(window)
+    check(np.array_equal(image, plain), "%s build: the particles are not drawn as without AO" % name)
+    # a sane resolution on the same pass: built
+    ao.GetDensityVolume().SetResolution(64)
+    ao.GetDensityVolume().SetMaximumResolution(256)
+    window.Render()
+    check(ao.GetNumberOfVolumeBuilds() == 1, "%s build: a sane resolution builds no volume" % name)
+
+sys.exit(finish())
