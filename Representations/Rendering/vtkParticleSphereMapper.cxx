@@ -125,6 +125,8 @@ struct ParticleSummary
   double MaxRadius = 0.0;
   vtkIdType BadRadius = 0;
   vtkIdType BadPosition = 0;
+  vtkIdType HugeRadius = 0;   // finite, but beyond single precision (of BadRadius)
+  vtkIdType HugePosition = 0; // likewise (of BadPosition)
   vtkIdType FirstValid = -1;
 };
 }
@@ -187,17 +189,20 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
       {
         points->GetTuple(i, p);
         const double r = radiusArray ? radiusArray->GetComponent(i, 0) : constantRadius;
-        const bool goodPosition = std::isfinite(p[0]) && std::isfinite(p[1]) &&
-          std::isfinite(p[2]) && std::abs(p[0]) < 1e37 && std::abs(p[1]) < 1e37 &&
-          std::abs(p[2]) < 1e37;
+        const bool finitePosition =
+          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        const bool goodPosition = finitePosition && std::abs(p[0]) < 1e37 &&
+          std::abs(p[1]) < 1e37 && std::abs(p[2]) < 1e37;
         const bool goodRadius = std::isfinite(r) && r > 0.0 && r < 1e37;
         if (!goodPosition)
         {
           ++s.BadPosition;
+          s.HugePosition += finitePosition ? 1 : 0;
         }
         else if (!goodRadius)
         {
           ++s.BadRadius;
+          s.HugeRadius += (std::isfinite(r) && r > 0.0) ? 1 : 0;
         }
         if (goodPosition && goodRadius)
         {
@@ -234,6 +239,8 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
       total.MaxRadius = std::max(total.MaxRadius, s.MaxRadius);
       total.BadRadius += s.BadRadius;
       total.BadPosition += s.BadPosition;
+      total.HugeRadius += s.HugeRadius;
+      total.HugePosition += s.HugePosition;
       if (s.FirstValid >= 0 && (total.FirstValid < 0 || s.FirstValid < total.FirstValid))
       {
         total.FirstValid = s.FirstValid;
@@ -275,15 +282,28 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
       });
       internals.Positions = copy;
     }
-    if (total.BadPosition > 0)
+    // (1e37: beyond it the GPU's single precision overflows in the squares of the intersection)
+    if (total.BadPosition > total.HugePosition)
     {
-      warnings << total.BadPosition << " of " << numPts
+      warnings << total.BadPosition - total.HugePosition << " of " << numPts
                << " particles have a NaN or infinite position and are not drawn. ";
     }
-    if (total.BadRadius > 0)
+    if (total.HugePosition > 0)
     {
-      warnings << total.BadRadius << " of " << numPts
+      warnings << total.HugePosition << " of " << numPts
+               << " particles have a coordinate of 1e37 or more, too large for single "
+                  "precision, and are not drawn. ";
+    }
+    if (total.BadRadius > total.HugeRadius)
+    {
+      warnings << total.BadRadius - total.HugeRadius << " of " << numPts
                << " particles have a zero, negative, NaN or infinite radius and are not drawn. ";
+    }
+    if (total.HugeRadius > 0)
+    {
+      warnings << total.HugeRadius << " of " << numPts
+               << " particles have a radius of 1e37 or more, too large for single precision, "
+                  "and are not drawn. ";
     }
     this->NumberOfSkippedParticles = skipped;
     internals.MaxRadius = total.MaxRadius;
