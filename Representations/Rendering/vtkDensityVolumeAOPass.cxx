@@ -1,4 +1,5 @@
 #include "vtkDensityVolumeAOPass.h"
+#include "vtkMath.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -274,14 +275,29 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", uniforms);
   hooks.AddSphereVarying("vec3", "prAOPlus");
   hooks.AddSphereVarying("vec3", "prAOMinus");
+  // The sphere's own density is not its occlusion: subtract what the sphere itself splatted into
+  // the voxels the fetch interpolates (otherwise voxels finer than the sphere hold its whole
+  // volume at its centre and the six fetches find it there: the picture goes dark).
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec",
+    "uniform vec3 prVolumeDimensions;\n"
+    "uniform float prOwnDensity;\n"
+    "uniform int prTrilinearSplat;\n"
+    "//PR::Include DensityVolumeOwn");
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
     "vec3 prCentreVolume = (prViewToVolume * vec4(centerVC, 1.0)).xyz;\n"
+    "  float prOwn = prOwnDensity * radiusVC * radiusVC * radiusVC;\n"
     "  for (int k = 0; k < 3; ++k)\n"
     "  {\n"
     "    vec3 prStep = vec3(0.0);\n"
     "    prStep[k] = prFetchStep[k];\n"
-    "    prAOPlusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume + prStep).r;\n"
-    "    prAOMinusVSOutput[k] = 1.0 - texture(prDensityVolume, prCentreVolume - prStep).r;\n"
+    "    float prOwnPlus = prOwn * prOwnDensityWeight(prCentreVolume, prCentreVolume + prStep,\n"
+    "      prVolumeDimensions, prTrilinearSplat != 0);\n"
+    "    float prOwnMinus = prOwn * prOwnDensityWeight(prCentreVolume, prCentreVolume - prStep,\n"
+    "      prVolumeDimensions, prTrilinearSplat != 0);\n"
+    "    prAOPlusVSOutput[k] = 1.0 - max(0.0,\n"
+    "      texture(prDensityVolume, prCentreVolume + prStep).r - prOwnPlus);\n"
+    "    prAOMinusVSOutput[k] = 1.0 - max(0.0,\n"
+    "      texture(prDensityVolume, prCentreVolume - prStep).r - prOwnMinus);\n"
     "  }");
   hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", uniforms);
   hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",
@@ -345,6 +361,19 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
   program->SetUniformf("prFetchDistance",
     static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
   program->SetUniformf("prStrength", static_cast<float>(this->Strength));
+  if (program->IsUniformUsed("prOwnDensity"))
+  {
+    // a sphere of radius r adds g (4/3 pi r^3) / voxel^3 to the voxels, split by the splat weights
+    const float dimensions[3] = { static_cast<float>(dims[0]), static_cast<float>(dims[1]),
+      static_cast<float>(dims[2]) };
+    program->SetUniform3f("prVolumeDimensions", dimensions);
+    const double voxel = volume->GetVoxelSize();
+    program->SetUniformf("prOwnDensity",
+      static_cast<float>(volume->GetDensityFactor() * 4.0 / 3.0 * vtkMath::Pi() /
+        (voxel * voxel * voxel)));
+    program->SetUniformi("prTrilinearSplat",
+      volume->GetSplatMode() == vtkParticleDensityVolume::TRILINEAR_SPLAT ? 1 : 0);
+  }
   return true;
 }
 

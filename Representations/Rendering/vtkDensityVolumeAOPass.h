@@ -17,7 +17,11 @@
  * RetrievalMode PER_SPHERE is the paper's other variant: six fetches per sphere in the vertex
  * stage at the centre +- eps along the world axes, blended per fragment by the squared
  * components of the world normal (f = nx^2 A(+-x) + ny^2 A(+-y) + nz^2 A(+-z), the sign of each
- * component choosing the side).
+ * component choosing the side). The paper's fetch includes the sphere's own density, which sits
+ * in the voxels around its centre: an isolated sphere darkens itself, and with voxels finer than
+ * the spheres every sphere finds its own volume. Our choice: each fetch subtracts the sphere's
+ * own splat share (Shaders/DensityVolumeOwn.glsl; exact below the volume's clamp to 1, grid
+ * boundaries excepted), so A measures the other particles only, as Eq. 3 intends.
  *
  * The mappers know nothing about AO beyond their //PR::AmbientOcclusion::Impl hook: the pass
  * fills it through vtkOpenGLRenderPass::PostReplaceShaderValues and binds the volume and the
