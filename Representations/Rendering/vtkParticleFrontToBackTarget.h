@@ -15,7 +15,8 @@
  * MaskSaturatedPixels() sets the mask depth to 0 where the accumulated opacity exceeds a
  * threshold, so that later draws are rejected by the early depth test (paper Sec. 5.2).
  * End() blends the accumulation over the opaque image (C_out = C + (1 - A) C_opaque, float
- * precision until this single 8-bit write) and restores the OpenGL state and bindings exactly.
+ * precision until this single 8-bit write, over an opaque image that is itself 8-bit: at most
+ * 1/255 in all) and restores the OpenGL state and bindings exactly.
  *
  * The accumulation is float so that hundreds of layers add up without 8-bit banding.
  */

@@ -121,7 +121,8 @@ public:
   ///@{
   /**
    * alpha_RV of Eq. 2 in [0, 1]: 0 is pure surface reflection, 1 pure volume emission. Default
-   * 0.5.
+   * 0.5. The emitted colour c_i is the material's diffuse colour (the property's Diffuse times
+   * the particle colour), so with Diffuse 0 the volume emits black.
    */
   vtkSetClampMacro(VolumeMix, double, 0.0, 1.0);
   vtkGetMacro(VolumeMix, double);
