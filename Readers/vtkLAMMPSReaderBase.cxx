@@ -2,8 +2,10 @@
 
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
+#include "vtkPolyData.h"
 
 #include <cmath>
+#include <new> // std::bad_alloc
 
 //------------------------------------------------------------------------------
 vtkLAMMPSReaderBase::vtkLAMMPSReaderBase()
@@ -68,4 +70,24 @@ void vtkLAMMPSReaderBase::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << item.first << ":" << item.second;
   }
   os << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLAMMPSReaderBase::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inInfo, outInfo);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Out of memory while reading: the particles need more memory than is "
+                     "free. The output is empty.");
+    if (vtkPolyData* output = vtkPolyData::GetData(outInfo, 0))
+    {
+      output->Initialize();
+    }
+    return 0;
+  }
 }

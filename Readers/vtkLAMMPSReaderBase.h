@@ -26,6 +26,13 @@ public:
   vtkTypeMacro(vtkLAMMPSReaderBase, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The pipeline requests, with running out of memory (std::bad_alloc, e.g. a file with more
+   * particles than fit) turned into an error and an empty output instead of an abort.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo) override;
+
   ///@{
   /**
    * Order the atoms by id (default off: file order).

@@ -9,6 +9,7 @@
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <new> // std::bad_alloc
 
 vtkStandardNewMacro(vtkMMPLDReader);
 
@@ -585,4 +587,24 @@ void vtkMMPLDReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Version: " << this->Version << "\n";
   os << indent << "NumberOfFrames: " << this->NumberOfFrames << "\n";
   os << indent << "ReadableFrames: " << this->Frames.size() << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkMMPLDReader::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inInfo, outInfo);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Out of memory while reading: the particles need more memory than is "
+                     "free. The output is empty.");
+    if (vtkPolyData* output = vtkPolyData::GetData(outInfo, 0))
+    {
+      output->Initialize();
+    }
+    return 0;
+  }
 }

@@ -1,4 +1,5 @@
 #include "vtkParticleDepthSort.h"
+#include "vtkParticleMemory.h"
 
 #include "vtkCommand.h"
 #include "vtkNew.h"
@@ -13,6 +14,7 @@
 #include "vtk_glew.h"
 
 #include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -216,6 +218,19 @@ bool vtkParticleDepthSort::Reserve(vtkOpenGLRenderWindow* context, vtkIdType cou
   const std::uint64_t capacity = n < Tile ? Tile : n;
   const std::uint64_t bytes[4] = { 4 * capacity, 4 * capacity, 4 * (capacity + TailSize(capacity)),
     4 * capacity };
+  // a software rasteriser's buffers are host memory: check that they fit before asking
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe")))
+  {
+    std::string why;
+    if (!vtkParticleMemory::CanAllocate(
+          static_cast<double>(bytes[0] + bytes[1] + bytes[2] + bytes[3]), why))
+    {
+      vtkErrorMacro(<< "The depth sort of " << count << " keys " << why << ".");
+      this->Capacity = 0;
+      return false;
+    }
+  }
   this->Internals->Buffers[1]->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
   bool allocated = true;
   for (int i = 0; i < 4; ++i)
