@@ -1,11 +1,11 @@
 #include "vtkLAMMPSReaderBase.h"
+#include "vtkParticleReaderInternals.h"
 
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkPolyData.h"
 
 #include <cmath>
-#include <new> // std::bad_alloc
 
 //------------------------------------------------------------------------------
 vtkLAMMPSReaderBase::vtkLAMMPSReaderBase()
@@ -76,18 +76,6 @@ void vtkLAMMPSReaderBase::PrintSelf(ostream& os, vtkIndent indent)
 vtkTypeBool vtkLAMMPSReaderBase::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
 {
-  try
-  {
-    return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Out of memory while reading: the particles need more memory than is "
-                     "free. The output is empty.");
-    if (vtkPolyData* output = vtkPolyData::GetData(outInfo, 0))
-    {
-      output->Initialize();
-    }
-    return 0;
-  }
+  return prReader::GuardMemory(
+    this, outInfo, [&] { return this->Superclass::ProcessRequest(request, inInfo, outInfo); });
 }

@@ -19,7 +19,6 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <new> // std::bad_alloc
 
 vtkStandardNewMacro(vtkMMPLDReader);
 
@@ -593,18 +592,6 @@ void vtkMMPLDReader::PrintSelf(ostream& os, vtkIndent indent)
 vtkTypeBool vtkMMPLDReader::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
 {
-  try
-  {
-    return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Out of memory while reading: the particles need more memory than is "
-                     "free. The output is empty.");
-    if (vtkPolyData* output = vtkPolyData::GetData(outInfo, 0))
-    {
-      output->Initialize();
-    }
-    return 0;
-  }
+  return prReader::GuardMemory(
+    this, outInfo, [&] { return this->Superclass::ProcessRequest(request, inInfo, outInfo); });
 }

@@ -5,6 +5,7 @@
 #ifndef vtkParticleReaderInternals_h
 #define vtkParticleReaderInternals_h
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -24,6 +25,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -35,6 +37,28 @@
 
 namespace prReader
 {
+//------------------------------------------------------------------------------
+// A reader's pipeline request with running out of memory (std::bad_alloc) turned into an error
+// and an empty output instead of an abort (the readers' ProcessRequest).
+template <typename Request>
+vtkTypeBool GuardMemory(vtkAlgorithm* self, vtkInformationVector* outInfo, Request&& request)
+{
+  try
+  {
+    return request();
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(self, << "Out of memory while reading: the particles need more "
+                                     "memory than is free. The output is empty.");
+    if (vtkPolyData* output = vtkPolyData::GetData(outInfo, 0))
+    {
+      output->Initialize();
+    }
+    return 0;
+  }
+}
+
 //------------------------------------------------------------------------------
 // A file read sequentially with 64-bit positions: plain or gzip-compressed (zlib reads plain
 // files "transparently" and seeks them directly; in a gzip file a seek decompresses up to the

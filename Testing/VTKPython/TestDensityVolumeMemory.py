@@ -15,18 +15,12 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish, grab_image
-from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkCommonCore import VTK_ID_MAX, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
+from prVTKTesting import Messages, check, finish, grab_image, offscreen_window, particles_from
+from vtkmodules.vtkCommonCore import VTK_ID_MAX
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
-rng = np.random.default_rng(2)
-points = vtkPoints()
-points.SetData(numpy_to_vtk(rng.random((5000, 3)) * 20.0, deep=True))
-particles = vtkPolyData()
-particles.SetPoints(points)
+particles = particles_from(np.random.default_rng(2).random((5000, 3)) * 20.0)
 
 
 def scene(with_ao, mode=0):
@@ -47,11 +41,7 @@ def scene(with_ao, mode=0):
         volume.SetMaximumResolution(4096)
         volume.SetMaximumVoxelCount(VTK_ID_MAX)
         renderer.SetPass(ao)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
-    window.SetSize(200, 200)
-    window.AddRenderer(renderer)
+    window = offscreen_window(renderer)
     renderer.ResetCamera()
     return window, ao
 

@@ -12,11 +12,8 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish
-from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
+from prVTKTesting import Messages, check, finish, offscreen_window, particles_from
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 xyz = np.random.default_rng(4).random((100, 3)) * 10.0
@@ -25,13 +22,7 @@ radius[[1, 2]] = 1e38
 xyz[[10, 11, 12], 0] = 1e300
 xyz[20, 1] = np.nan
 radius[30] = 0.0
-points = vtkPoints()
-points.SetData(numpy_to_vtk(xyz, deep=True))
-data = vtkPolyData()
-data.SetPoints(points)
-r = numpy_to_vtk(radius, deep=True)
-r.SetName("radius")
-data.GetPointData().AddArray(r)
+data = particles_from(xyz, radius=radius)
 
 mapper = pr.vtkParticleSphereMapper()
 mapper.SetInputData(data)
@@ -41,10 +32,7 @@ actor = vtkActor()
 actor.SetMapper(mapper)
 renderer = vtkRenderer()
 renderer.AddActor(actor)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(100, 100)
-window.AddRenderer(renderer)
+window = offscreen_window(renderer, (100, 100))
 renderer.ResetCamera()
 window.Render()
 window.Render()

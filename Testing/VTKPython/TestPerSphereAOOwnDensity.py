@@ -18,23 +18,16 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import check, finish, grab_image
-from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
+from prVTKTesting import check, finish, grab_image, offscreen_window, particles_from
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
 PER_FRAGMENT, PER_SPHERE = 0, 1
 
 
 def brightness(xyz, ao=True, mode=PER_SPHERE, resolution=0, splat=1):
-    points = vtkPoints()
-    points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz, dtype=np.float64), deep=True))
-    data = vtkPolyData()
-    data.SetPoints(points)
     mapper = pr.vtkParticleSphereMapper()
-    mapper.SetInputData(data)
+    mapper.SetInputData(particles_from(np.asarray(xyz, dtype=np.float64)))
     mapper.SetRadius(0.5)
     actor = vtkActor()
     actor.SetMapper(mapper)
@@ -47,11 +40,7 @@ def brightness(xyz, ao=True, mode=PER_SPHERE, resolution=0, splat=1):
         aopass.GetDensityVolume().SetResolution(resolution)
         aopass.GetDensityVolume().SetSplatMode(splat)
         renderer.SetPass(aopass)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
-    window.SetSize(200, 200)
-    window.AddRenderer(renderer)
+    window = offscreen_window(renderer)
     renderer.ResetCamera()
     window.Render()
     return float(grab_image(window)[:, :3].sum())

@@ -81,3 +81,32 @@ def picked_ids(renderer, area):
     for i in range(selection.GetNumberOfNodes()):
         ids.update(vtk_to_numpy(selection.GetNode(i).GetSelectionList()).tolist())
     return ids
+
+
+def particles_from(xyz, **arrays):
+    """A vtkPolyData with the points xyz (an (N, 3) array, its precision kept) and one point
+    array per keyword (name=values)."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=True))
+    data = vtkPolyData()
+    data.SetPoints(points)
+    for name, values in arrays.items():
+        array = numpy_to_vtk(np.ascontiguousarray(values), deep=True)
+        array.SetName(name)
+        data.GetPointData().AddArray(array)
+    return data
+
+
+def offscreen_window(renderer, size=(200, 200), samples=0):
+    """An off-screen render window of `size` showing `renderer`, multisampling `samples`."""
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(samples)
+    window.SetSize(*size)
+    window.AddRenderer(renderer)
+    return window
