@@ -82,6 +82,47 @@ bool IsDrawn(float radius, const double p[3])
   return radius > 0.0f && std::isfinite(radius) && std::isfinite(p[0]) && std::isfinite(p[1]) &&
     std::isfinite(p[2]);
 }
+
+// Can the bound framebuffer's depth tell hidden cells exactly? Depth test and writes on, GL_LESS or
+// GL_LEQUAL, depth range [0, 1], a depth buffer, no multisampling (glReadPixels cannot read it).
+// vp: the current viewport.
+bool DepthAllowsCulling(vtkOpenGLState* ostate, int vp[4])
+{
+  GLint depthFunc = GL_LESS;
+  ostate->vtkglGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  unsigned char depthMask = 0;
+  ostate->vtkglGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  GLfloat depthRange[2] = { 0.0f, 1.0f };
+  glGetFloatv(GL_DEPTH_RANGE, depthRange);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  GLint depthBits = 0;
+  {
+    unsigned int drawFramebuffer = 0;
+    unsigned int drawBuffer = 0;
+    ostate->GetCurrentDrawFramebufferState(drawFramebuffer, drawBuffer);
+    if (drawFramebuffer == 0)
+    {
+      glGetFramebufferAttachmentParameteriv(
+        GL_DRAW_FRAMEBUFFER, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+    }
+    else
+    {
+      GLint type = GL_NONE;
+      glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+        GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+      if (type != GL_NONE)
+      {
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+          GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+      }
+    }
+  }
+  ostate->vtkglGetIntegerv(GL_VIEWPORT, vp);
+  return ostate->GetEnumState(GL_DEPTH_TEST) && depthMask &&
+    (depthFunc == GL_LESS || depthFunc == GL_LEQUAL) && depthRange[0] == 0.0f &&
+    depthRange[1] == 1.0f && samples == 0 && depthBits > 0 && vp[2] > 0 && vp[3] > 0;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -111,6 +152,9 @@ public:
   bool MapBound = false;
   GLuint Query = 0; // GL_PRIMITIVES_GENERATED (CountEmittedSpheres)
   bool Hidden(const CellView& view, double margin) const;
+  // Views: each cell's projection (Nearest, block Rect, Unbounded, Outside) for this frame
+  void ProjectCells(const double m[4][4], const double wcdc[4][4], double radiusScaleWC,
+    const int vp[4], int block);
   void DrawCells(const int* cells, int n, vtkIdType& drawnParticles, int& drawnCells);
 };
 
@@ -223,6 +267,105 @@ void vtkParticleOcclusionCuller::vtkInternals::UnbindMap(vtkShaderProgram* progr
     this->BlockTexture->Deactivate();
     this->MapBound = false;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOcclusionCuller::vtkInternals::ProjectCells(const double m[4][4],
+  const double wcdc[4][4], double radiusScaleWC, const int vp[4], int block)
+{
+  // each cell's box in world coordinates (m: model -> world), grown by its largest radius,
+  // projected (wcdc: world -> clip)
+  const int bw = (vp[2] + block - 1) / block;
+  const int bh = (vp[3] + block - 1) / block;
+  const int numCells = static_cast<int>(this->Cells.size());
+  this->Views.resize(static_cast<size_t>(numCells));
+  vtkSMPTools::For(0, numCells, [&](int begin, int end) {
+    for (int c = begin; c < end; ++c)
+    {
+      const CellBox& cell = this->Cells[c];
+      CellView& view = this->Views[c];
+      view = CellView();
+      if (cell.Count == 0)
+      {
+        view.Outside = true;
+        continue;
+      }
+      double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+      double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const double p[3] = { (corner & 1) ? cell.Max[0] : cell.Min[0],
+          (corner & 2) ? cell.Max[1] : cell.Min[1], (corner & 4) ? cell.Max[2] : cell.Min[2] };
+        for (int k = 0; k < 3; ++k)
+        {
+          const double w = m[k][0] * p[0] + m[k][1] * p[1] + m[k][2] * p[2] + m[k][3];
+          lo[k] = std::min(lo[k], w);
+          hi[k] = std::max(hi[k], w);
+        }
+      }
+      const double grow = 1.001 * cell.MaxRadius * radiusScaleWC;
+      double x0 = VTK_DOUBLE_MAX, y0 = VTK_DOUBLE_MAX, x1 = VTK_DOUBLE_MIN, y1 = VTK_DOUBLE_MIN;
+      double zmin = VTK_DOUBLE_MAX;
+      double zmax = VTK_DOUBLE_MIN;
+      int behind = 0; // corners at or behind the eye plane
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const double p[3] = { (corner & 1) ? hi[0] + grow : lo[0] - grow,
+          (corner & 2) ? hi[1] + grow : lo[1] - grow, (corner & 4) ? hi[2] + grow : lo[2] - grow };
+        double clip[4];
+        for (int k = 0; k < 4; ++k)
+        {
+          clip[k] = wcdc[k][0] * p[0] + wcdc[k][1] * p[1] + wcdc[k][2] * p[2] + wcdc[k][3];
+        }
+        if (!std::isfinite(clip[3]))
+        {
+          behind = -8; // no usable projection: draw the cell
+          break;
+        }
+        if (!(clip[3] > 1e-12 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
+        {
+          ++behind; // at or behind the eye plane: no bounded projection
+          continue;
+        }
+        const double nx = clip[0] / clip[3];
+        const double ny = clip[1] / clip[3];
+        const double nz = clip[2] / clip[3];
+        x0 = std::min(x0, nx);
+        x1 = std::max(x1, nx);
+        y0 = std::min(y0, ny);
+        y1 = std::max(y1, ny);
+        zmin = std::min(zmin, nz);
+        zmax = std::max(zmax, nz);
+      }
+      if (behind == 8)
+      {
+        view.Outside = true; // the whole box behind the eye (perspective): never seen
+        continue;
+      }
+      if (behind != 0)
+      {
+        view.Unbounded = true; // straddles the eye plane: drawn first, never culled
+        view.Nearest = -1.0;
+        continue;
+      }
+      if (x1 < -1.0 || x0 > 1.0 || y1 < -1.0 || y0 > 1.0 || zmin > 1.0 || zmax < -1.0)
+      {
+        view.Outside = true;
+        continue;
+      }
+      view.Nearest = 0.5 * (std::max(zmin, -1.0) + 1.0);
+      // pixels of the viewport, grown by one, as blocks
+      const double px0 = (x0 + 1.0) * 0.5 * vp[2] - 1.0;
+      const double px1 = (x1 + 1.0) * 0.5 * vp[2] + 1.0;
+      const double py0 = (y0 + 1.0) * 0.5 * vp[3] - 1.0;
+      const double py1 = (y1 + 1.0) * 0.5 * vp[3] + 1.0;
+      view.Rect[0] = static_cast<int>(std::max(0.0, std::floor(px0 / block)));
+      view.Rect[1] = static_cast<int>(std::max(0.0, std::floor(py0 / block)));
+      view.Rect[2] = static_cast<int>(std::min(bw - 1.0, std::floor(px1 / block)));
+      view.Rect[3] = static_cast<int>(std::min(bh - 1.0, std::floor(py1 / block)));
+    }
+  });
+
 }
 
 //------------------------------------------------------------------------------
@@ -505,43 +648,9 @@ bool vtkParticleOcclusionCuller::Draw(vtkRenderer* ren, vtkShaderProgram* progra
     return plainDraw();
   }
 
-  // can the depth buffer tell hidden cells exactly?
   vtkOpenGLState* ostate = ctx->GetState();
-  GLint depthFunc = GL_LESS;
-  ostate->vtkglGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
-  unsigned char depthMask = 0;
-  ostate->vtkglGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
-  GLfloat depthRange[2] = { 0.0f, 1.0f };
-  glGetFloatv(GL_DEPTH_RANGE, depthRange);
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
-  GLint depthBits = 0;
-  {
-    unsigned int drawFramebuffer = 0;
-    unsigned int drawBuffer = 0;
-    ostate->GetCurrentDrawFramebufferState(drawFramebuffer, drawBuffer);
-    if (drawFramebuffer == 0)
-    {
-      glGetFramebufferAttachmentParameteriv(
-        GL_DRAW_FRAMEBUFFER, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
-    }
-    else
-    {
-      GLint type = GL_NONE;
-      glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-        GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-      if (type != GL_NONE)
-      {
-        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-          GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
-      }
-    }
-  }
   int vp[4] = { 0, 0, 0, 0 };
-  ostate->vtkglGetIntegerv(GL_VIEWPORT, vp);
-  if (!ostate->GetEnumState(GL_DEPTH_TEST) || !depthMask ||
-    (depthFunc != GL_LESS && depthFunc != GL_LEQUAL) || depthRange[0] != 0.0f ||
-    depthRange[1] != 1.0f || samples > 0 || depthBits <= 0 || vp[2] <= 0 || vp[3] <= 0)
+  if (!DepthAllowsCulling(ostate, vp))
   {
     return plainDraw();
   }
@@ -565,97 +674,8 @@ bool vtkParticleOcclusionCuller::Draw(vtkRenderer* ren, vtkShaderProgram* progra
     }
   }
 
-  // each cell's box in world coordinates, grown by its largest radius, projected
   const int block = this->BlockSize;
-  const int bw = (vp[2] + block - 1) / block;
-  const int bh = (vp[3] + block - 1) / block;
-  internals.Views.resize(static_cast<size_t>(numCells));
-  vtkSMPTools::For(0, numCells, [&](int begin, int end) {
-    for (int c = begin; c < end; ++c)
-    {
-      const CellBox& cell = internals.Cells[c];
-      CellView& view = internals.Views[c];
-      view = CellView();
-      if (cell.Count == 0)
-      {
-        view.Outside = true;
-        continue;
-      }
-      double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-      double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const double p[3] = { (corner & 1) ? cell.Max[0] : cell.Min[0],
-          (corner & 2) ? cell.Max[1] : cell.Min[1], (corner & 4) ? cell.Max[2] : cell.Min[2] };
-        for (int k = 0; k < 3; ++k)
-        {
-          const double w = m[k][0] * p[0] + m[k][1] * p[1] + m[k][2] * p[2] + m[k][3];
-          lo[k] = std::min(lo[k], w);
-          hi[k] = std::max(hi[k], w);
-        }
-      }
-      const double grow = 1.001 * cell.MaxRadius * radiusScaleWC;
-      double x0 = VTK_DOUBLE_MAX, y0 = VTK_DOUBLE_MAX, x1 = VTK_DOUBLE_MIN, y1 = VTK_DOUBLE_MIN;
-      double zmin = VTK_DOUBLE_MAX;
-      double zmax = VTK_DOUBLE_MIN;
-      int behind = 0; // corners at or behind the eye plane
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const double p[3] = { (corner & 1) ? hi[0] + grow : lo[0] - grow,
-          (corner & 2) ? hi[1] + grow : lo[1] - grow, (corner & 4) ? hi[2] + grow : lo[2] - grow };
-        double clip[4];
-        for (int k = 0; k < 4; ++k)
-        {
-          clip[k] = wcdc[k][0] * p[0] + wcdc[k][1] * p[1] + wcdc[k][2] * p[2] + wcdc[k][3];
-        }
-        if (!std::isfinite(clip[3]))
-        {
-          behind = -8; // no usable projection: draw the cell
-          break;
-        }
-        if (!(clip[3] > 1e-12 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
-        {
-          ++behind; // at or behind the eye plane: no bounded projection
-          continue;
-        }
-        const double nx = clip[0] / clip[3];
-        const double ny = clip[1] / clip[3];
-        const double nz = clip[2] / clip[3];
-        x0 = std::min(x0, nx);
-        x1 = std::max(x1, nx);
-        y0 = std::min(y0, ny);
-        y1 = std::max(y1, ny);
-        zmin = std::min(zmin, nz);
-        zmax = std::max(zmax, nz);
-      }
-      if (behind == 8)
-      {
-        view.Outside = true; // the whole box behind the eye (perspective): never seen
-        continue;
-      }
-      if (behind != 0)
-      {
-        view.Unbounded = true; // straddles the eye plane: drawn first, never culled
-        view.Nearest = -1.0;
-        continue;
-      }
-      if (x1 < -1.0 || x0 > 1.0 || y1 < -1.0 || y0 > 1.0 || zmin > 1.0 || zmax < -1.0)
-      {
-        view.Outside = true;
-        continue;
-      }
-      view.Nearest = 0.5 * (std::max(zmin, -1.0) + 1.0);
-      // pixels of the viewport, grown by one, as blocks
-      const double px0 = (x0 + 1.0) * 0.5 * vp[2] - 1.0;
-      const double px1 = (x1 + 1.0) * 0.5 * vp[2] + 1.0;
-      const double py0 = (y0 + 1.0) * 0.5 * vp[3] - 1.0;
-      const double py1 = (y1 + 1.0) * 0.5 * vp[3] + 1.0;
-      view.Rect[0] = static_cast<int>(std::max(0.0, std::floor(px0 / block)));
-      view.Rect[1] = static_cast<int>(std::max(0.0, std::floor(py0 / block)));
-      view.Rect[2] = static_cast<int>(std::min(bw - 1.0, std::floor(px1 / block)));
-      view.Rect[3] = static_cast<int>(std::min(bh - 1.0, std::floor(py1 / block)));
-    }
-  });
+  internals.ProjectCells(m, wcdc, radiusScaleWC, vp, block);
 
   // nearest first
   internals.Order.clear();
