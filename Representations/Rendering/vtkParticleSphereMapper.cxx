@@ -64,6 +64,9 @@ public:
   vtkTimeStamp CullerBuildTime;
   double CenterBounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MaxRadius = 0.0;
+  double MinRadius = 0.0; // smallest drawn radius (MC)
+  bool FocalPointShift = false; // positions uploaded relative to the camera's focal point
+  std::string LastShiftWarning;
   vtkIdType NumberOfPoints = 0;
   vtkMTimeType PrepareTime = 0;
   // what the prepared particles were computed from (see PrepareParticles)
@@ -123,6 +126,7 @@ struct ParticleSummary
   double Bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
     VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
   double MaxRadius = 0.0;
+  double MinRadius = VTK_DOUBLE_MAX;
   vtkIdType BadRadius = 0;
   vtkIdType BadPosition = 0;
   vtkIdType HugeRadius = 0;   // finite, but beyond single precision (of BadRadius)
@@ -213,6 +217,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
             s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
           }
           s.MaxRadius = std::max(s.MaxRadius, r);
+          s.MinRadius = std::min(s.MinRadius, r);
           if (s.FirstValid < 0 || i < s.FirstValid)
           {
             s.FirstValid = i;
@@ -237,6 +242,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
         total.Bounds[2 * k + 1] = std::max(total.Bounds[2 * k + 1], s.Bounds[2 * k + 1]);
       }
       total.MaxRadius = std::max(total.MaxRadius, s.MaxRadius);
+      total.MinRadius = std::min(total.MinRadius, s.MinRadius);
       total.BadRadius += s.BadRadius;
       total.BadPosition += s.BadPosition;
       total.HugeRadius += s.HugeRadius;
@@ -307,6 +313,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     }
     this->NumberOfSkippedParticles = skipped;
     internals.MaxRadius = total.MaxRadius;
+    internals.MinRadius = total.FirstValid >= 0 ? total.MinRadius : 0.0;
     if (total.FirstValid >= 0)
     {
       std::copy(total.Bounds, total.Bounds + 6, internals.CenterBounds);
@@ -793,6 +800,13 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     colors = vtkUnsignedCharArray::SafeDownCast(this->StrideForUpload(colors));
   }
 
+  // One origin for all positions in float keeps about 2^-23 of the data's extent. When that is
+  // not a thousandth of the smallest radius (a lost atom far away stretches the extent), the
+  // default method switches to VTK's focal-point shift: positions relative to the camera's focal
+  // point, re-uploaded when it moves (vtkOpenGLPolyDataMapper::UpdateCameraShiftScale), exact
+  // where the camera looks.
+  this->UpdateFocalPointShift(ren);
+
   this->VBOs->CacheDataArray("vertexMC", internals.UploadedPositions, ren, VTK_FLOAT);
   vtkOpenGLVertexBufferObject* posVBO = this->VBOs->GetVBO("vertexMC");
   if (posVBO)
@@ -979,6 +993,43 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
   {
     internals.DrawTimer.Stop();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::UpdateFocalPointShift(vtkRenderer*)
+{
+  vtkInternals& internals = *this->Internals;
+  const double* b = internals.CenterBounds;
+  double extent = 0.0;
+  if (b[0] <= b[1])
+  {
+    extent = std::max(b[1] - b[0], std::max(b[3] - b[2], b[5] - b[4]));
+  }
+  const double step = extent * std::ldexp(1.0, -23); // float spacing across the extent
+  // (not with thinned data: VTK's camera-shift update reads the input's own points)
+  const bool needed =
+    internals.MinRadius > 0.0 && step > 1e-3 * internals.MinRadius && internals.Stride == 1;
+  std::string warning;
+  if (needed && (this->ShiftScaleMethod == vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE ||
+                  internals.FocalPointShift))
+  {
+    // (set directly: the mapper's modification would re-upload every frame)
+    this->ShiftScaleMethod = vtkOpenGLVertexBufferObject::FOCAL_POINT_SHIFT_SCALE;
+    internals.FocalPointShift = true;
+    std::ostringstream text;
+    text << "The particles span " << extent << ", " << extent / internals.MinRadius
+         << " times the smallest radius: beyond single precision with one origin. Positions are "
+            "uploaded relative to the camera's focal point (re-uploaded when it moves), exact "
+            "near it; far from the focal point they keep about "
+         << step << " units.";
+    warning = text.str();
+  }
+  else if (!needed && internals.FocalPointShift)
+  {
+    this->ShiftScaleMethod = vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE;
+    internals.FocalPointShift = false;
+  }
+  this->WarnOnChange(warning, internals.LastShiftWarning);
 }
 
 //------------------------------------------------------------------------------

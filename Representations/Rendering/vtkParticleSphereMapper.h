@@ -310,6 +310,14 @@ protected:
   virtual bool GetOcclusionCullingCompiled(vtkRenderer* ren);
 
   /**
+   * Switch the default shift/scale method (AUTO_SHIFT_SCALE) to VTK's FOCAL_POINT_SHIFT_SCALE
+   * while the data's extent puts the float spacing of one origin above a thousandth of the
+   * smallest radius (a lost atom far from the rest), with a warning; back when the data no
+   * longer needs it. Called before each upload.
+   */
+  void UpdateFocalPointShift(vtkRenderer* ren);
+
+  /**
    * The array to upload for a per-particle array of the input's length: the array itself, or
    * every GetParticleStride()-th tuple of it (kept alive until the next upload). Subclasses
    * adding attributes in CacheParticleAttributes() pass their arrays through it.
