@@ -10,7 +10,8 @@ plain Render View and with Point Gaussian (Sphere) in a third view. Checked:
   build no shader in either Particles mapper;
 - a change of the shared lookup table (a colour) uploads each Particles mapper exactly once, and
   both show it (so the counters do count);
-- the images of the two Particles views are equal (same data, camera and colours).
+- the images of the two Particles views are equal (same data, camera and colours);
+- the occlusion culler runs in both (ParaView's windows have no multisampling).
 
 usage: pvpython TestTwoViewsSharedLookupTable.py --plugin ParticleRendering.so --data DIR ...
 """
@@ -75,6 +76,14 @@ if None in mappers:
 def counters():
     return [(m.GetNumberOfUploads(), m.GetNumberOfShaderBuilds()) for m in mappers]
 
+
+# ParaView's views have no multisampling: the occlusion culler works there (19 360 particles,
+# above its threshold of 8192)
+for view, mapper in zip((particle_view, render_view), mappers):
+    reads = mapper.GetOcclusionCuller().GetLastNumberOfDepthReads()
+    print("%s: %d depth read-backs of the occlusion culler" % (view.GetXMLName(), reads))
+    if reads <= 0:
+        fail("the occlusion culler does not run in the %s" % view.GetXMLName())
 
 start = counters()
 print("after the first renders (uploads, shader builds): %s" % start)
