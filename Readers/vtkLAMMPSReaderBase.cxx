@@ -3,7 +3,6 @@
 
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
-#include "vtkPolyData.h"
 
 #include <cmath>
 

@@ -1,29 +1,25 @@
 #include "vtkParticleOcclusionCuller.h"
 
 #include "vtkDataArray.h"
-#include "vtkFloatArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkMatrix3x3.h"
+#include "vtkFloatArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
-#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
 
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
-#include <numeric>
+#include <new>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleOcclusionCuller);

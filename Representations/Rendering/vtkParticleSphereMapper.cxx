@@ -805,7 +805,7 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   // default method switches to VTK's focal-point shift: positions relative to the camera's focal
   // point, re-uploaded when it moves (vtkOpenGLPolyDataMapper::UpdateCameraShiftScale), exact
   // where the camera looks.
-  this->UpdateFocalPointShift(ren);
+  this->UpdateFocalPointShift();
 
   this->VBOs->CacheDataArray("vertexMC", internals.UploadedPositions, ren, VTK_FLOAT);
   vtkOpenGLVertexBufferObject* posVBO = this->VBOs->GetVBO("vertexMC");
@@ -996,7 +996,7 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleSphereMapper::UpdateFocalPointShift(vtkRenderer*)
+void vtkParticleSphereMapper::UpdateFocalPointShift()
 {
   vtkInternals& internals = *this->Internals;
   const double* b = internals.CenterBounds;

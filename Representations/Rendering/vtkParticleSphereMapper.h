@@ -315,7 +315,7 @@ protected:
    * smallest radius (a lost atom far from the rest), with a warning; back when the data no
    * longer needs it. Called before each upload.
    */
-  void UpdateFocalPointShift(vtkRenderer* ren);
+  void UpdateFocalPointShift();
 
   /**
    * The array to upload for a per-particle array of the input's length: the array itself, or
