@@ -13,15 +13,32 @@
 //=========================================================================
 //PR::Include EmissionAbsorption
 
+// The visible part of a sphere's chord in a translucent fragment, in units of the radius from
+// the ray's closest approach to the centre: kappa the optical depth of the particle's most opaque
+// ray (< 0: opaque), b2 the squared impact parameter, the chord [-h, h], the visible segment
+// [tn, tf] (clipN / clipF: moved by clipping), radiance the colour it emits (Eq. 2).
+struct prSegment
+{
+  float kappa;
+  float b2;
+  float h;
+  float tn;
+  float tf;
+  bool clipN;
+  bool clipF;
+  vec3 radiance;
+};
+
 // kappaA: the particle's optical depth (< 0: opaque, Theta_a = 1); opacity: VTK's fragment
 // opacity; litColor: the lit surface colour; diffuseColor: the material colour; the ray
 // (rayS relative to the centre, unit rayD) with both hits t0 < t1; radiusVC; centerOffsetVC:
 // the centre without the MC->VC translation. Returns false when the fragment adds nothing (or
-// belongs to the opaque stage); result is premultiplied (theta * radiance, theta).
-bool prShadeTranslucentSphere(float kappaA, float opacity, vec3 litColor, vec3 diffuseColor,
-  vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC, out vec4 result)
+// belongs to the opaque stage).
+bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffuseColor,
+  vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC,
+  out prSegment seg)
 {
-  result = vec4(0.0);
+  seg = prSegment(0.0, 0.0, 0.0, 0.0, 0.0, false, false, vec3(0.0));
   // Theta_i = Theta_a * opacity, as an optical depth: the actor's opacity and transmittance
   // from the CPU in double when the opacity is the actor's alone (no scalar alpha), else
   // from VTK's opacity
@@ -49,8 +66,6 @@ bool prShadeTranslucentSphere(float kappaA, float opacity, vec3 litColor, vec3 d
     vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0), vec2(-1.0, opaqueNDC));
   float un = 0.0;
   float uf = 1.0;
-  bool clipN = false;
-  bool clipF = false;
   for (int k = 0; k < 4; ++k)
   {
     float g0 = dot(bounds[k], zw0);
@@ -62,31 +77,47 @@ bool prShadeTranslucentSphere(float kappaA, float opacity, vec3 litColor, vec3 d
     if (g0 < 0.0)
     {
       un = max(un, g0 / (g0 - g1));
-      clipN = true;
+      seg.clipN = true;
     }
     else if (g1 < 0.0)
     {
       uf = min(uf, g0 / (g0 - g1));
-      clipF = true;
+      seg.clipF = true;
     }
   }
   if (!(uf > un))
   {
     return false;
   }
-  // the segment in units of the radius from the closest approach to the centre
-  float h = 0.5 * (t1 - t0) / radiusVC;
+  seg.kappa = kappa;
+  seg.h = 0.5 * (t1 - t0) / radiusVC;
   vec3 q = rayS - dot(rayS, rayD) * rayD;
-  float b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));
-  float tn = -h + 2.0 * h * un;
-  float tf = -h + 2.0 * h * uf;
-  float integral = prSegmentIntegral(b2, h, tn, tf, clipN, clipF, prHollowFraction2);
-  // kappa < 0: an opaque particle drawn here (the actor's opacity is not 1)
-  float theta = kappa < 0.0 ? (integral > 0.0 ? 1.0 : 0.0)
-    : prSegmentOpacity(kappa, integral, prMaximumIntegral);
+  seg.b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));
+  seg.tn = -seg.h + 2.0 * seg.h * un;
+  seg.tf = -seg.h + 2.0 * seg.h * uf;
   // Eq. 2: surface reflection at the entry point mixed with the volume colour; without an
   // entry surface (the segment starts inside) only the volume emits
-  vec3 radiance = clipN ? diffuseColor : mix(litColor, diffuseColor, prVolumeMix);
-  result = vec4(theta * radiance, theta);
+  seg.radiance = seg.clipN ? diffuseColor : mix(litColor, diffuseColor, prVolumeMix);
+  return true;
+}
+
+// The premultiplied colour (theta * radiance, theta) of the fragment's segment alone, for
+// front-to-back compositing of sorted spheres. Returns false when it adds nothing.
+bool prShadeTranslucentSphere(float kappaA, float opacity, vec3 litColor, vec3 diffuseColor,
+  vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC, out vec4 result)
+{
+  result = vec4(0.0);
+  prSegment seg;
+  if (!prTranslucentSegment(kappaA, opacity, litColor, diffuseColor, rayS, rayD, t0, t1,
+        radiusVC, centerOffsetVC, seg))
+  {
+    return false;
+  }
+  float integral =
+    prSegmentIntegral(seg.b2, seg.h, seg.tn, seg.tf, seg.clipN, seg.clipF, prHollowFraction2);
+  // kappa < 0: an opaque particle drawn here (the actor's opacity is not 1)
+  float theta = seg.kappa < 0.0 ? (integral > 0.0 ? 1.0 : 0.0)
+    : prSegmentOpacity(seg.kappa, integral, prMaximumIntegral);
+  result = vec4(theta * seg.radiance, theta);
   return true;
 }

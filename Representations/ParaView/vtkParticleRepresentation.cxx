@@ -45,6 +45,8 @@ vtkParticleRepresentation::vtkParticleRepresentation()
     this->HollowFraction = transparent->GetHollowFraction();
     this->VolumeMix = transparent->GetVolumeMix();
     this->EarlyTermination = transparent->GetEarlyTermination();
+    this->OverlapCompositing = transparent->GetOverlapCompositing();
+    this->FragmentListMemory = transparent->GetFragmentListMemory();
     this->OpacityReference = transparent->GetOpacityReference();
   }
   this->Actor->SetMapper(this->Mapper);
@@ -113,6 +115,8 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     transparent->SetHollowFraction(this->HollowFraction);
     transparent->SetVolumeMix(this->VolumeMix);
     transparent->SetEarlyTermination(this->EarlyTermination);
+    transparent->SetOverlapCompositing(this->OverlapCompositing);
+    transparent->SetFragmentListMemory(this->FragmentListMemory);
     transparent->SetOpacityReference(this->OpacityReference);
   }
 }
@@ -553,6 +557,20 @@ void vtkParticleRepresentation::SetVolumeMix(double mix)
 void vtkParticleRepresentation::SetEarlyTermination(int on)
 {
   this->EarlyTermination = on != 0;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOverlapCompositing(int mode)
+{
+  this->OverlapCompositing = mode;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetFragmentListMemory(double mebibytes)
+{
+  this->FragmentListMemory = mebibytes;
   this->ApplyMapperSettings();
 }
 

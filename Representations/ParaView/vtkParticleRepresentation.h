@@ -94,13 +94,15 @@ public:
   ///@{
   /**
    * Transparency (vtkTransparentSphereMapper): density model, hollow fraction, surface/volume
-   * mix (alpha_RV), early termination, and the maximum opacity per particle from a point array
+   * mix (alpha_RV), early termination, overlap compositing and its memory, and the maximum opacity per particle from a point array
    * mapped through OpacityArrayRange (UseOpacityArray) -- multiplied by Opacity.
    */
   void SetDensityModel(int model);
   void SetHollowFraction(double fraction);
   void SetVolumeMix(double mix);
   void SetEarlyTermination(int on);
+  void SetOverlapCompositing(int mode); // vtkTransparentSphereMapper::OverlapCompositingModes
+  void SetFragmentListMemory(double mebibytes);
   void SetOpacityReference(int reference); // vtkTransparentSphereMapper::OpacityReferences
   void SetUseOpacityArray(bool use);
   vtkGetMacro(UseOpacityArray, bool);
@@ -234,6 +236,8 @@ protected:
   double HollowFraction = 0.0;
   double VolumeMix = 0.0;
   bool EarlyTermination = false;
+  int OverlapCompositing = 0;
+  double FragmentListMemory = 256.0;
   int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;

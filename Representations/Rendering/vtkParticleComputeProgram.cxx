@@ -285,6 +285,18 @@ bool vtkParticleComputeProgram::SetUniformf(const char* name, float value)
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::SetUniform2i(const char* name, int x, int y)
+{
+  const GLint location = this->GetUniformLocation(name);
+  if (location < 0)
+  {
+    return false;
+  }
+  glUniform2i(location, x, y);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleComputeProgram::SetUniform2f(const char* name, float x, float y)
 {
   const GLint location = this->GetUniformLocation(name);

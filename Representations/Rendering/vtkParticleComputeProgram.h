@@ -126,6 +126,7 @@ public:
   bool SetUniformi(const char* name, int value);
   bool SetUniformui(const char* name, unsigned int value);
   bool SetUniformf(const char* name, float value);
+  bool SetUniform2i(const char* name, int x, int y);
   bool SetUniform2f(const char* name, float x, float y);
   bool SetUniform3f(const char* name, float x, float y, float z);
   bool SetUniform4f(const char* name, float x, float y, float z, float w);

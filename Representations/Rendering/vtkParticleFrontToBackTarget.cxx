@@ -309,6 +309,12 @@ vtkTextureObject* vtkParticleFrontToBackTarget::GetOpaqueDepthTexture()
 }
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkParticleFrontToBackTarget::GetAccumulationTexture()
+{
+  return this->Internals->Accumulation;
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleFrontToBackTarget::MaskSaturatedPixels(double threshold)
 {
   vtkInternals& internals = *this->Internals;

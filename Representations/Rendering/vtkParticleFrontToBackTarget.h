@@ -54,6 +54,12 @@ public:
   vtkTextureObject* GetOpaqueDepthTexture();
 
   /**
+   * The RGBA32F accumulation itself (premultiplied, cleared to 0 by Begin()), valid between
+   * Begin() and End(), for a pass that writes it as an image (vtkParticleFragmentLists).
+   */
+  vtkTextureObject* GetAccumulationTexture();
+
+  /**
    * Mask the pixels whose accumulated opacity exceeds threshold (see the class description).
    * Rebinds the accumulation buffer and the drawing state afterwards.
    */

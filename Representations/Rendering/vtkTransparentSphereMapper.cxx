@@ -8,6 +8,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -17,12 +18,14 @@
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleDepthSort.h"
+#include "vtkParticleFragmentLists.h"
 #include "vtkParticleFrontToBackTarget.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
@@ -32,6 +35,9 @@
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkIdList.h"
+#include "vtkPoints.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -39,6 +45,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -51,8 +58,9 @@ namespace
 // which shader a helper holds
 enum class Variant
 {
-  Opaque,     // the core: opaque particles (depth writes) and picking
-  Translucent // the emission-absorption composite of the translucent stage
+  Opaque,          // the core: opaque particles (depth writes) and picking
+  Translucent,     // the emission-absorption composite of the translucent stage
+  TranslucentList  // the same segments appended to per-pixel lists (exact overlaps)
 };
 
 // GS culling modes (uniform prCullMode)
@@ -159,6 +167,14 @@ public:
   // the translucent variant's program, vertex array and shader times, beside the opaque one
   // (the superclass's triangle helper); its index count is the number of particles
   vtkOpenGLHelper Translucent;
+  // the exact-overlap variant's program (fragments appended to per-pixel lists)
+  vtkOpenGLHelper TranslucentList;
+  vtkNew<vtkParticleFragmentLists> Lists;
+  // overlap of the drawn spheres (AUTOMATIC), and what it was computed from
+  bool Overlapping = false;
+  std::vector<vtkMTimeType> OverlapKey;
+  double OverlapScale = 0.0;
+  bool ExactOverlapInUse = false;
 
   // per-particle opacity
   vtkNew<vtkDoubleArray> Opacities;    // Theta_a
@@ -209,6 +225,7 @@ vtkTransparentSphereMapper::vtkTransparentSphereMapper()
 {
   // spheres are lit surfaces: VTK lights the triangle primitives (GetNeedToRebuildShaders)
   this->Internals->Translucent.PrimitiveType = PrimitiveTris;
+  this->Internals->TranslucentList.PrimitiveType = PrimitiveTris;
   this->Internals->Opacities->SetName("ParticleOpacity");
   this->Internals->OpticalDepths->SetName("ParticleOpticalDepth");
 }
@@ -389,7 +406,7 @@ void vtkTransparentSphereMapper::CacheParticleAttributes(vtkRenderer* ren, vtkAc
 //------------------------------------------------------------------------------
 bool vtkTransparentSphereMapper::GetOcclusionCullingCompiled(vtkRenderer* ren)
 {
-  return this->Internals->Building != Variant::Translucent &&
+  return this->Internals->Building == Variant::Opaque &&
     this->Superclass::GetOcclusionCullingCompiled(ren);
 }
 
@@ -399,6 +416,8 @@ void vtkTransparentSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* 
   this->Superclass::BuildBufferObjects(ren, act);
   // the translucent variant's helper draws the same particles
   this->Internals->Translucent.IBO->IndexCount = this->Primitives[PrimitiveTris].IBO->IndexCount;
+  this->Internals->TranslucentList.IBO->IndexCount =
+    this->Primitives[PrimitiveTris].IBO->IndexCount;
 }
 
 //------------------------------------------------------------------------------
@@ -406,7 +425,8 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
-  const bool translucent = this->Internals->Building == Variant::Translucent;
+  const bool translucent = this->Internals->Building != Variant::Opaque;
+  const bool lists = this->Internals->Building == Variant::TranslucentList;
 
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
@@ -454,14 +474,38 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
            "uniform sampler2D prOpaqueDepth;\n"
            "#define PR_DENSITY_MODEL "
         << this->DensityModel << "\n//PR::Include TransparentSphereShading";
+    if (lists)
+    {
+      dec << "\n" << vtkParticleFragmentLists::GetAppendDeclarations();
+    }
     hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", dec.str());
-    hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
-      "if (!prShadeTranslucentSphere(opticalDepthVSOutput, opacity, gl_FragData[0].rgb,\n"
-      "          diffuseColor, prRayS, prRayD, prT0, prT1, radiusVC, centerOffsetVCVSOutput,\n"
-      "          gl_FragData[0]))\n"
-      "    {\n"
-      "      discard;\n"
-      "    }");
+    if (lists)
+    {
+      // the segment goes to the pixel's list; colour writes are off while the lists are built
+      vtkParticleShaders::ReplaceHook(fs, "//VTK::System::Dec",
+        "//VTK::System::Dec\n" + vtkParticleFragmentLists::GetAppendExtension());
+      hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
+        "prSegment prSeg;\n"
+        "    if (!prTranslucentSegment(opticalDepthVSOutput, opacity, gl_FragData[0].rgb,\n"
+        "          diffuseColor, prRayS, prRayD, prT0, prT1, radiusVC, centerOffsetVCVSOutput,\n"
+        "          prSeg) || any(isnan(prSeg.radiance)) || any(isinf(prSeg.radiance)))\n"
+        "    {\n"
+        "      discard;\n"
+        "    }\n"
+        "    prAppendSegment(prSeg, prRayS, prRayD, radiusVC, centerOffsetVCVSOutput,\n"
+        "      prMaximumIntegral);\n"
+        "    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);");
+    }
+    else
+    {
+      hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
+        "if (!prShadeTranslucentSphere(opticalDepthVSOutput, opacity, gl_FragData[0].rgb,\n"
+        "          diffuseColor, prRayS, prRayD, prT0, prT1, radiusVC, centerOffsetVCVSOutput,\n"
+        "          gl_FragData[0]))\n"
+        "    {\n"
+        "      discard;\n"
+        "    }");
+    }
     fs = vtkParticleShaders::ResolveIncludes(fs);
   }
   shaders[vtkShader::Vertex]->SetSource(vs);
@@ -530,7 +574,7 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
   vtkShaderProgram* program = cellBO.Program;
   vtkInternals& internals = *this->Internals;
   program->SetUniformi("prCullMode", internals.CullMode);
-  if (&cellBO == &internals.Translucent)
+  if (&cellBO == &internals.Translucent || &cellBO == &internals.TranslucentList)
   {
     program->SetUniformf("prVolumeMix", static_cast<float>(this->VolumeMix));
     // Opacity and 1 - Opacity from double (Opacity = 1 - 1e-7 or 1e-6 does not survive 1 - x in
@@ -549,6 +593,10 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
         this->GetEffectiveColumnLayers()));
     program->SetUniformi(
       "prOpaqueDepth", internals.Target->GetOpaqueDepthTexture()->GetTextureUnit());
+    if (&cellBO == &internals.TranslucentList)
+    {
+      internals.Lists->PrepareProgram(program);
+    }
   }
 }
 
@@ -632,6 +680,13 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     internals.TotalTimer.Start();
   }
   internals.SortTimed = false;
+  internals.ExactOverlapInUse = this->OverlapCompositing == EXACT_OVERLAP ||
+    (this->OverlapCompositing == AUTOMATIC && this->HasOverlappingSpheres());
+  if (internals.ExactOverlapInUse)
+  {
+    this->RenderTranslucentLists(ren, act, savedByPass);
+    return;
+  }
   // Without a sort (too many particles for the GPU's buffers, compute shaders failing) the
   // particles are still composited, in index order: a sane picture, with one warning.
   const bool sorted = this->UpdateSortedOrder(ren, act, numPts);
@@ -708,6 +763,161 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     internals.TotalTimer.Stop();
     // the results are read when asked for (GetLast...GPUSeconds): reading them here would
     // return 0 while the GPU is still working
+    internals.TimingsPending = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransparentSphereMapper::HasOverlappingSpheres()
+{
+  vtkInternals& internals = *this->Internals;
+  vtkPolyData* input = this->GetInput();
+  vtkFloatArray* radii = this->GetParticleRadii();
+  vtkFloatArray* kappas = internals.OpticalDepths;
+  const std::vector<vtkMTimeType> key = { this->GetParticleGeometryTime(), kappas->GetMTime() };
+  if (key == internals.OverlapKey && this->RadiusScaleFactor == internals.OverlapScale)
+  {
+    return internals.Overlapping;
+  }
+  internals.OverlapKey = key;
+  internals.OverlapScale = this->RadiusScaleFactor;
+  internals.Overlapping = false;
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  const vtkIdType numPts = points ? points->GetNumberOfPoints() : 0;
+  if (numPts < 2 || !radii || radii->GetNumberOfTuples() != numPts ||
+    kappas->GetNumberOfTuples() != numPts)
+  {
+    return false;
+  }
+  // the drawn spheres (radius > 0, Theta_a > 0) as a point set for the locator
+  vtkNew<vtkPoints> drawn;
+  drawn->SetDataTypeToDouble();
+  std::vector<double> drawnRadii;
+  drawnRadii.reserve(static_cast<size_t>(numPts));
+  for (vtkIdType i = 0; i < numPts; ++i)
+  {
+    const double r = radii->GetValue(i);
+    double p[3];
+    points->GetPoint(i, p);
+    if (r > 0.0 && std::isfinite(r) && kappas->GetValue(i) != 0.0 && std::isfinite(p[0]) &&
+      std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      drawn->InsertNextPoint(p);
+      drawnRadii.push_back(r);
+    }
+  }
+  const vtkIdType count = drawn->GetNumberOfPoints();
+  if (count < 2)
+  {
+    return false;
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(drawn);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  // i and j overlap when |p_i - p_j| < s (r_i + r_j) <= 2 s max(r_i, r_j): the larger sphere's
+  // query finds the pair. Touching spheres (to rounding) do not overlap.
+  const double s = this->RadiusScaleFactor;
+  std::atomic<bool> found(false);
+  vtkSMPTools::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkNew<vtkIdList> near;
+      for (vtkIdType i = begin; i < end && !found.load(std::memory_order_relaxed); ++i)
+      {
+        double p[3];
+        drawn->GetPoint(i, p);
+        const double ri = drawnRadii[i];
+        locator->FindPointsWithinRadius(2.0 * s * ri, p, near);
+        for (vtkIdType k = 0; k < near->GetNumberOfIds(); ++k)
+        {
+          const vtkIdType j = near->GetId(k);
+          if (j == i)
+          {
+            continue;
+          }
+          double q[3];
+          drawn->GetPoint(j, q);
+          const double reach = s * (ri + drawnRadii[j]) * (1.0 - 1e-6);
+          if (vtkMath::Distance2BetweenPoints(p, q) < reach * reach)
+          {
+            found = true;
+            break;
+          }
+        }
+      }
+    });
+  internals.Overlapping = found.load();
+  return internals.Overlapping;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransparentSphereMapper::GetExactOverlapInUse()
+{
+  return this->Internals->ExactOverlapInUse;
+}
+
+//------------------------------------------------------------------------------
+vtkParticleFragmentLists* vtkTransparentSphereMapper::GetFragmentLists()
+{
+  return this->Internals->Lists;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::RenderTranslucentLists(
+  vtkRenderer* ren, vtkActor* act, bool savedByPass)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType numPts = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
+  if (!internals.Target->Begin(ren, savedByPass))
+  {
+    return;
+  }
+  vtkTextureObject* opaqueDepth = internals.Target->GetOpaqueDepthTexture();
+  opaqueDepth->Activate();
+  vtkParticleFragmentLists* lists = internals.Lists;
+  lists->SetMemoryBudget(this->FragmentListMemory);
+  lists->SetDensityModel(this->DensityModel);
+  lists->SetHollowFraction2(this->HollowFraction * this->HollowFraction);
+
+  vtkOpenGLHelper& cellBO = internals.TranslucentList;
+  internals.Building = Variant::TranslucentList;
+  internals.ScalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
+  const bool opaqueDrawnSeparately =
+    act->GetProperty()->GetOpacity() >= 1.0 && !internals.ScalarAlpha;
+  internals.CullMode = opaqueDrawnSeparately ? CullTranslucentOnly : CullAllVisible;
+  this->UpdateShaders(cellBO, ren, act);
+  if (cellBO.Program)
+  {
+    if (this->CollectTimings)
+    {
+      internals.DrawTimer.Reset();
+      internals.DrawTimer.Start();
+    }
+    vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+    vtkOpenGLState* ostate = ctx->GetState();
+    lists->Render(ctx, internals.Target->GetAccumulationTexture(),
+      [&]()
+      {
+        ctx->GetShaderCache()->ReadyShaderProgram(cellBO.Program);
+        cellBO.VAO->Bind();
+        lists->PrepareProgram(cellBO.Program);
+        vtkOpenGLState::ScopedglColorMask colorMask(ostate);
+        ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numPts));
+      });
+    if (this->CollectTimings)
+    {
+      internals.DrawTimer.Stop();
+    }
+  }
+  internals.Building = Variant::Opaque;
+  opaqueDepth->Deactivate();
+  internals.Target->End();
+  if (this->CollectTimings)
+  {
+    internals.TotalTimer.Stop();
     internals.TimingsPending = true;
   }
 }
@@ -885,6 +1095,8 @@ void vtkTransparentSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
   internals.Sort->ReleaseGraphicsResources(window);
   internals.Target->ReleaseGraphicsResources(window);
   internals.Translucent.ReleaseGraphicsResources(window);
+  internals.TranslucentList.ReleaseGraphicsResources(window);
+  internals.Lists->ReleaseGraphicsResources(window);
   internals.TotalTimer.ReleaseGraphicsResources();
   internals.SortTimer.ReleaseGraphicsResources();
   internals.DrawTimer.ReleaseGraphicsResources();
@@ -910,6 +1122,8 @@ void vtkTransparentSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EarlyTermination: " << this->EarlyTermination << "\n";
   os << indent << "NumberOfChunks: " << this->NumberOfChunks << "\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
+  os << indent << "OverlapCompositing: " << this->OverlapCompositing << "\n";
+  os << indent << "FragmentListMemory: " << this->FragmentListMemory << " MiB\n";
   os << indent << "NumberOfSorts: " << this->NumberOfSorts << "\n";
   os << indent << "NumberOfOpacityUploads: " << this->NumberOfOpacityUploads << "\n";
 }

@@ -59,6 +59,8 @@ source = simple.PointSource(NumberOfPoints=LARGE, Radius=60.0)
 display = pr.show_particles(source, view, color_by_type=False, use_radius_array=False)
 display.Radius = 0.5
 display.Opacity = 0.5
+# the random points overlap: keep the sorted path, whose sort's progress this test is about
+display.OverlapCompositing = "Sorted Spheres"
 
 # what the representation passes on from its mapper (unthrottled: every report)
 representation = display.GetClientSideObject().GetActiveRepresentation()

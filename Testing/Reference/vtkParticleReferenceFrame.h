@@ -30,6 +30,8 @@ struct Frame
   int DensityModel = 0;
   double HollowFraction = 0.0;
   double VolumeMix = 0.0;
+  // overlapping segments: the summed densities (true) or each sphere whole in order (false)
+  bool ExactOverlaps = true;
   std::vector<double> SphereTheta;
   std::vector<double> SphereKappa;
   std::vector<double> SphereMaximum;

@@ -355,6 +355,7 @@ bool vtkParticleReferenceRenderer::Render()
   int densityModel = vtkTransparentSphereMapper::CONSTANT_DENSITY;
   double hollowFraction = 0.0;
   double volumeMix = 0.0;
+  bool exactOverlaps = true;
   double maximumPathIntegral = 0.0; // for radius 1
   vtkDataArray* opacityArray = nullptr;
   std::vector<double> layerColors;
@@ -364,6 +365,8 @@ bool vtkParticleReferenceRenderer::Render()
     densityModel = transparentMapper->GetDensityModel();
     hollowFraction = transparentMapper->GetHollowFraction();
     volumeMix = transparentMapper->GetVolumeMix();
+    exactOverlaps =
+      transparentMapper->GetOverlapCompositing() != vtkTransparentSphereMapper::SORTED_SPHERES;
     // COLUMN_OPACITY: Theta_i is the opacity of a column of L particles, i.e. I_max x L
     maximumPathIntegral = NumericalMaximumPathIntegralImpl(densityModel, hollowFraction) *
       transparentMapper->GetEffectiveColumnLayers();
@@ -565,6 +568,7 @@ bool vtkParticleReferenceRenderer::Render()
   frame.DensityModel = densityModel;
   frame.HollowFraction = hollowFraction;
   frame.VolumeMix = volumeMix;
+  frame.ExactOverlaps = exactOverlaps;
   frame.SphereTheta = std::move(sphereTheta);
   frame.SphereKappa = std::move(sphereKappa);
   frame.SphereMaximum = std::move(sphereMaximum);

@@ -40,6 +40,8 @@ mapper.SetRadius(0.5)
 actor = vtkActor()
 actor.SetMapper(mapper)
 actor.GetProperty().SetOpacity(0.5)
+# the random points overlap: keep the sorted path, whose sort's progress this test is about
+mapper.SetOverlapCompositing(pr.vtkTransparentSphereMapper.SORTED_SPHERES)
 renderer = vtkRenderer()
 renderer.AddActor(actor)
 ao = pr.vtkDensityVolumeAOPass()

@@ -82,8 +82,9 @@ def main():
         return 1
 
     # The transparent mapper from plain VTK Python: the same droplets with the maximum opacity
-    # from the speed, composited by the mapper (one sort), visibly different from the opaque image
-    # but not the background.
+    # from the speed, composited by the mapper (one sort, or -- the droplets' spheres overlap --
+    # the exact-overlap lists, which need none), visibly different from the opaque image but not
+    # the background.
     from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 
     opaque = vtkUnsignedCharArray()
@@ -108,7 +109,12 @@ def main():
     print("transparent mapper: %d sort(s), %d of %d sampled pixels differ from the opaque image"
           % (translucent_mapper.GetNumberOfSorts(), changed,
              translucent.GetNumberOfValues() // (4 * 7)))
-    if translucent_mapper.GetNumberOfSorts() != 1 or changed < 1000:
+    exact = translucent_mapper.GetExactOverlapInUse()
+    print("overlapping spheres: %s, exact-overlap lists: %s"
+          % (translucent_mapper.HasOverlappingSpheres(), exact))
+    expected_sorts = 0 if translucent_mapper.HasOverlappingSpheres() else 1
+    if (translucent_mapper.GetNumberOfSorts() != expected_sorts or changed < 1000
+            or exact != (expected_sorts == 0)):
         print("FAIL: the transparent mapper did not composite translucent particles")
         return 1
     return 0

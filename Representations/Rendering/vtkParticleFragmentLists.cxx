@@ -1,0 +1,345 @@
+#include "vtkParticleFragmentLists.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleMemory.h"
+#include "vtkParticleShaders.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkWeakPointer.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkParticleFragmentLists);
+
+namespace
+{
+// bytes per node (PR_LIST_NODE_UINTS words of Shaders/FragmentListBuffers.glsl)
+const double NodeBytes = 40.0;
+// the storage binding points of the lists (the compute passes use 0-3 and rebind them anyway)
+const unsigned int HeadBinding = 5;
+const unsigned int NodeBinding = 6;
+const unsigned int CounterBinding = 7;
+// shader storage and float bit casts for VTK's GLSL 1.50 (both core in OpenGL 4.3)
+const char* const ExtensionLine = "#extension GL_ARB_shader_storage_buffer_object : require\n"
+                                  "#extension GL_ARB_shader_bit_encoding : require\n";
+// initial pool: this many nodes per pixel (grown from the counts of overflowing frames)
+const double InitialNodesPerPixel = 2.0;
+}
+
+//------------------------------------------------------------------------------
+class vtkParticleFragmentLists::vtkInternals
+{
+public:
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
+  vtkNew<vtkOpenGLBufferObject> Heads;
+  vtkNew<vtkOpenGLBufferObject> Nodes;
+  vtkNew<vtkOpenGLBufferObject> Counters;
+  std::size_t HeadBytes = 0;
+  long long Capacity = 0; // nodes
+  int Width = 0;
+  vtkNew<vtkParticleComputeProgram> Resolve;
+  int ResolveModel = -1;
+  bool DroppedWarned = false;
+  bool IncompleteWarned = false;
+
+  void Release()
+  {
+    this->Resolve->ReleaseGraphicsResources(this->Context);
+    this->ResolveModel = -1;
+    if (this->Heads->GetHandle() != 0 &&
+      vtkParticleComputeProgram::MakeCurrentForRelease(this->Context))
+    {
+      this->Heads->ReleaseGraphicsResources();
+      this->Nodes->ReleaseGraphicsResources();
+      this->Counters->ReleaseGraphicsResources();
+    }
+    this->HeadBytes = 0;
+    this->Capacity = 0;
+    this->Context = nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkParticleFragmentLists::vtkParticleFragmentLists()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticleFragmentLists::~vtkParticleFragmentLists()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkParticleFragmentLists::GetAppendExtension()
+{
+  return ExtensionLine;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkParticleFragmentLists::GetAppendDeclarations()
+{
+  return "//PR::Include FragmentListAppend\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::PrepareProgram(vtkShaderProgram* program)
+{
+  if (!program || program->GetHandle() == 0)
+  {
+    return;
+  }
+  this->PrepareProgram(static_cast<unsigned int>(program->GetHandle()));
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::PrepareProgram(unsigned int handle)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::pair<const char*, unsigned int> blocks[3] = { { "prListHeadBlock", HeadBinding },
+    { "prListNodeBlock", NodeBinding }, { "prListCounterBlock", CounterBinding } };
+  for (const auto& block : blocks)
+  {
+    const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, block.first);
+    if (index != GL_INVALID_INDEX)
+    {
+      glShaderStorageBlockBinding(handle, index, block.second);
+    }
+  }
+  vtkParticleComputeProgram::BindStorage(HeadBinding, internals.Heads);
+  vtkParticleComputeProgram::BindStorage(NodeBinding, internals.Nodes);
+  vtkParticleComputeProgram::BindStorage(CounterBinding, internals.Counters);
+  // the program is bound (glUniform acts on it)
+  const GLint width = glGetUniformLocation(handle, "prListWidth");
+  const GLint capacity = glGetUniformLocation(handle, "prListCapacity");
+  if (width >= 0)
+  {
+    glUniform1i(width, internals.Width);
+  }
+  if (capacity >= 0)
+  {
+    glUniform1i(capacity, static_cast<GLint>(internals.Capacity));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
+  vtkTextureObject* accumulation, const std::function<void()>& draw)
+{
+  vtkInternals& internals = *this->Internals;
+  const int width = accumulation ? static_cast<int>(accumulation->GetWidth()) : 0;
+  const int height = accumulation ? static_cast<int>(accumulation->GetHeight()) : 0;
+  this->LastNumberOfFragments = 0;
+  this->LastNumberOfBands = 0;
+  this->LastNumberOfIncompletePixels = 0;
+  this->LastNumberOfDroppedFragments = 0;
+  if (!context || width <= 0 || height <= 0)
+  {
+    return false;
+  }
+  if (internals.Context && internals.Context != context)
+  {
+    internals.Release();
+    context->MakeCurrent();
+  }
+  internals.Context = context;
+
+  // the head array, and the pool within the budget
+  const double budget = this->MemoryBudget * 1048576.0;
+  const std::size_t headBytes = static_cast<std::size_t>(width) * height * sizeof(GLuint);
+  const long long maximumCapacity = static_cast<long long>(std::min(
+    (budget - static_cast<double>(headBytes)) / NodeBytes, static_cast<double>(INT32_MAX)));
+  if (maximumCapacity < width)
+  {
+    vtkErrorMacro(<< "The fragment lists of a " << width << " x " << height << " view need more "
+                  << "than their memory budget of " << this->MemoryBudget
+                  << " MiB (the head array alone takes "
+                  << vtkParticleMemory::FormatBytes(static_cast<double>(headBytes))
+                  << "): raise FragmentListMemory. Overlapping translucent particles are not drawn.");
+    return false;
+  }
+  if (headBytes != internals.HeadBytes)
+  {
+    if (!vtkParticleComputeProgram::AllocateStorage(internals.Heads, headBytes) ||
+      !vtkParticleComputeProgram::AllocateStorage(internals.Counters, 2 * sizeof(GLuint)))
+    {
+      vtkErrorMacro(<< "Could not allocate "
+                    << vtkParticleMemory::FormatBytes(static_cast<double>(headBytes))
+                    << " of GPU memory for the fragment lists' heads.");
+      internals.HeadBytes = 0;
+      return false;
+    }
+    internals.HeadBytes = headBytes;
+  }
+  internals.Width = width;
+  auto allocateNodes = [&](long long capacity)
+  {
+    capacity = std::max<long long>(1, std::min(capacity, maximumCapacity));
+    while (capacity >= width)
+    {
+      if (vtkParticleComputeProgram::AllocateStorage(
+            internals.Nodes, static_cast<std::size_t>(capacity * NodeBytes)))
+      {
+        internals.Capacity = capacity;
+        return true;
+      }
+      capacity /= 2; // out of GPU memory: try with less
+    }
+    internals.Capacity = 0;
+    return false;
+  };
+  if (internals.Capacity == 0 || internals.Capacity > maximumCapacity)
+  {
+    const double pixels = static_cast<double>(width) * height;
+    if (!allocateNodes(static_cast<long long>(std::min(
+          static_cast<double>(maximumCapacity), InitialNodesPerPixel * pixels))))
+    {
+      vtkErrorMacro(<< "Could not allocate GPU memory for the fragment lists.");
+      return false;
+    }
+  }
+  this->AllocatedBytes = static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
+
+  // the resolve program, for the density model
+  vtkParticleComputeProgram* resolve = internals.Resolve;
+  if (internals.ResolveModel != this->DensityModel)
+  {
+    std::string source = vtkParticleShaders::Get("FragmentListResolve");
+    vtkShaderProgram::Substitute(source, "#version 430\n",
+      "#version 430\n#define PR_DENSITY_MODEL " + std::to_string(this->DensityModel) + "\n");
+    resolve->SetSource(source);
+    internals.ResolveModel = this->DensityModel;
+  }
+  if (!resolve->Build(context))
+  {
+    vtkErrorMacro(<< "The fragment lists' resolve program could not be built.");
+    return false;
+  }
+
+  vtkOpenGLState* ostate = context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissorSaved(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBoxSaved(ostate);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  const GLuint zeros[2] = { 0, 0 };
+  vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(zeros), zeros);
+
+  bool grown = false;
+  std::vector<std::pair<int, int>> bands{ { 0, height } };
+  while (!bands.empty())
+  {
+    const std::pair<int, int> band = bands.back();
+    bands.pop_back();
+    vtkParticleComputeProgram::ClearStorage(internals.Heads, headBytes, 0xffffffffu);
+    vtkParticleComputeProgram::ClearStorage(internals.Counters, sizeof(GLuint), 0u);
+    ostate->vtkglScissor(0, band.first, width, band.second - band.first);
+    draw();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint counters[2] = { 0, 0 };
+    vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
+    const long long count = counters[0];
+    if (count > internals.Capacity)
+    {
+      // more room within the budget (once per frame), else bands of half the height
+      if (!grown && internals.Capacity < maximumCapacity)
+      {
+        grown = true;
+        if (allocateNodes(count + count / 4 + 1024))
+        {
+          this->AllocatedBytes = static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
+          bands.push_back(band);
+          continue;
+        }
+        vtkErrorMacro(<< "Could not allocate GPU memory for the fragment lists.");
+        return false;
+      }
+      if (band.second - band.first > 1)
+      {
+        const int middle = (band.first + band.second) / 2;
+        bands.emplace_back(middle, band.second);
+        bands.emplace_back(band.first, middle);
+        continue;
+      }
+      // one row beyond the pool: composite what fits
+      this->LastNumberOfDroppedFragments += count - internals.Capacity;
+    }
+    this->LastNumberOfFragments += std::min(count, internals.Capacity);
+    ++this->LastNumberOfBands;
+
+    // resolve the band into the accumulation image
+    resolve->Use();
+    this->PrepareProgram(resolve->GetHandle());
+    resolve->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
+    resolve->SetUniform2i("prBandOrigin", 0, band.first);
+    resolve->SetUniform2i("prBandSize", width, band.second - band.first);
+    glBindImageTexture(0, static_cast<GLuint>(accumulation->GetHandle()), 0, GL_FALSE, 0,
+      GL_WRITE_ONLY, GL_RGBA32F);
+    resolve->Dispatch(static_cast<unsigned int>((width + 7) / 8),
+      static_cast<unsigned int>((band.second - band.first + 7) / 8));
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    vtkParticleComputeProgram::UseNone();
+  }
+  // the accumulation is read by texture fetches and blending afterwards
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint counters[2] = { 0, 0 };
+  vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
+  this->LastNumberOfIncompletePixels = counters[1];
+  for (unsigned int binding : { HeadBinding, NodeBinding, CounterBinding })
+  {
+    vtkParticleComputeProgram::BindStorage(binding, nullptr);
+  }
+
+  if (this->LastNumberOfDroppedFragments > 0 && !internals.DroppedWarned)
+  {
+    vtkWarningMacro(<< this->LastNumberOfDroppedFragments
+                    << " translucent fragments did not fit into the fragment lists' memory ("
+                    << this->MemoryBudget
+                    << " MiB) even one pixel row at a time and were left out: raise "
+                       "FragmentListMemory.");
+  }
+  internals.DroppedWarned = this->LastNumberOfDroppedFragments > 0;
+  if (this->LastNumberOfIncompletePixels > 0 && !internals.IncompleteWarned)
+  {
+    vtkWarningMacro(<< this->LastNumberOfIncompletePixels
+                    << " pixels have more than 15 translucent spheres overlapping at one point "
+                       "of their ray: there the spheres that found no room were left out of the "
+                       "exact compositing.");
+  }
+  internals.IncompleteWarned = this->LastNumberOfIncompletePixels > 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->Internals->Release();
+  this->AllocatedBytes = 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MemoryBudget: " << this->MemoryBudget << " MiB\n";
+  os << indent << "DensityModel: " << this->DensityModel << "\n";
+  os << indent << "HollowFraction2: " << this->HollowFraction2 << "\n";
+  os << indent << "Capacity: " << this->Internals->Capacity << " fragments\n";
+  os << indent << "AllocatedBytes: " << this->AllocatedBytes << "\n";
+  os << indent << "LastNumberOfFragments: " << this->LastNumberOfFragments << "\n";
+  os << indent << "LastNumberOfBands: " << this->LastNumberOfBands << "\n";
+  os << indent << "LastNumberOfIncompletePixels: " << this->LastNumberOfIncompletePixels << "\n";
+  os << indent << "LastNumberOfDroppedFragments: " << this->LastNumberOfDroppedFragments << "\n";
+}
