@@ -396,6 +396,25 @@ bool vtkParticleComputeProgram::MakeCurrentForRelease(vtkOpenGLRenderWindow* con
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleComputeProgram::ReleaseStorage(
+  vtkSmartPointer<vtkOpenGLBufferObject>& buffer, bool current)
+{
+  if (!buffer || buffer->GetHandle() == 0)
+  {
+    return;
+  }
+  if (current)
+  {
+    buffer->ReleaseGraphicsResources();
+    return;
+  }
+  const vtkOpenGLBufferObject::ObjectType type = buffer->GetType();
+  buffer->Register(nullptr); // deliberately never deleted: see the header
+  buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  buffer->SetType(type);
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleComputeProgram::AllocateStorage(vtkOpenGLBufferObject* buffer, std::size_t bytes)
 {
   if (!buffer || (buffer->GetHandle() == 0 && !buffer->GenerateBuffer(buffer->GetType())))

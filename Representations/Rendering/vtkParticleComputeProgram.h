@@ -31,6 +31,7 @@
 
 #include "vtkObject.h"
 #include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkSmartPointer.h"            // for vtkSmartPointer
 
 #include <cstddef> // for std::size_t
 #include <string> // for std::string
@@ -68,6 +69,15 @@ public:
    * with it, delete nothing.
    */
   static bool MakeCurrentForRelease(vtkOpenGLRenderWindow* context);
+
+  /**
+   * Release a storage buffer when its context is gone or going: with `current` (the caller made
+   * the buffer's context current) its GL name is deleted; otherwise the name went with its
+   * context and must not be deleted -- vtkOpenGLBufferObject's destructor would delete the same
+   * name in whatever context is current, i.e. another context's buffer -- so the object is let go
+   * (kept alive, a few bytes) and `buffer` gets a fresh one of the same type.
+   */
+  static void ReleaseStorage(vtkSmartPointer<vtkOpenGLBufferObject>& buffer, bool current);
 
   ///@{
   /**

@@ -9,6 +9,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleShaders.h"
+#include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
@@ -63,6 +64,8 @@ class vtkParticleDepthSort::vtkInternals
 {
 public:
   vtkWeakPointer<vtkOpenGLRenderWindow> Context;
+  // the same window, to recognise it in its own destructor (weak pointers are cleared first)
+  vtkOpenGLRenderWindow* ContextAddress = nullptr;
   vtkNew<vtkParticleComputeProgram> Bits;
   vtkNew<vtkParticleComputeProgram> FlipCopy;
   vtkNew<vtkParticleComputeProgram> Iota;
@@ -73,7 +76,9 @@ public:
   vtkOpenGLRenderTimer Timer;
   bool Timed = false;
   // keys, indices (an element array), scratch keys (+ tail), scratch indices
-  vtkNew<vtkOpenGLBufferObject> Buffers[4];
+  vtkSmartPointer<vtkOpenGLBufferObject> Buffers[4] = { vtkSmartPointer<vtkOpenGLBufferObject>::New(),
+    vtkSmartPointer<vtkOpenGLBufferObject>::New(), vtkSmartPointer<vtkOpenGLBufferObject>::New(),
+    vtkSmartPointer<vtkOpenGLBufferObject>::New() };
   bool BuiltCoalescedWrites = true;
 
   std::vector<std::pair<vtkParticleComputeProgram*, const char*>> Programs()
@@ -160,6 +165,7 @@ bool vtkParticleDepthSort::Reserve(vtkOpenGLRenderWindow* context, vtkIdType cou
     return false;
   }
   this->Internals->Context = context;
+  this->Internals->ContextAddress = context;
   if (!this->BuildPrograms())
   {
     return false;
@@ -483,17 +489,25 @@ void vtkParticleDepthSort::ReleaseGraphicsResources(vtkWindow* window)
   this->Internals->Timed = false;
   if (this->Internals->Buffers[0]->GetHandle() != 0)
   {
-    if (vtkParticleComputeProgram::MakeCurrentForRelease(this->Internals->Context))
+    // our window, also in its own destructor (the weak pointer is cleared by then)
+    vtkOpenGLRenderWindow* context = this->Internals->Context;
+    if (!context && window && window == this->Internals->ContextAddress)
+    {
+      context = this->Internals->ContextAddress;
+    }
+    const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(context);
+    if (current)
     {
       this->Internals->Timer.ReleaseGraphicsResources();
-      for (auto& buffer : this->Internals->Buffers)
-      {
-        buffer->ReleaseGraphicsResources();
-      }
+    }
+    for (auto& buffer : this->Internals->Buffers)
+    {
+      vtkParticleComputeProgram::ReleaseStorage(buffer, current);
     }
   }
   this->Capacity = 0;
   this->Internals->Context = nullptr;
+  this->Internals->ContextAddress = nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include "vtkParticleShaders.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
@@ -42,9 +43,12 @@ class vtkParticleFragmentLists::vtkInternals
 {
 public:
   vtkWeakPointer<vtkOpenGLRenderWindow> Context;
-  vtkNew<vtkOpenGLBufferObject> Heads;
-  vtkNew<vtkOpenGLBufferObject> Nodes;
-  vtkNew<vtkOpenGLBufferObject> Counters;
+  // the same window, to recognise it in its own destructor (weak pointers are cleared first)
+  vtkOpenGLRenderWindow* ContextAddress = nullptr;
+  vtkSmartPointer<vtkOpenGLBufferObject> Heads = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Nodes = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Counters =
+    vtkSmartPointer<vtkOpenGLBufferObject>::New();
   std::size_t HeadBytes = 0;
   long long Capacity = 0; // nodes
   int Width = 0;
@@ -53,20 +57,28 @@ public:
   bool DroppedWarned = false;
   bool IncompleteWarned = false;
 
-  void Release()
+  // Delete the buffers in their context: `window` is the window being released (it may be ours
+  // in its destructor, when the weak pointer is already cleared); without the context nothing is
+  // deleted (vtkParticleComputeProgram::ReleaseStorage).
+  void Release(vtkWindow* window)
   {
-    this->Resolve->ReleaseGraphicsResources(this->Context);
-    this->ResolveModel = -1;
-    if (this->Heads->GetHandle() != 0 &&
-      vtkParticleComputeProgram::MakeCurrentForRelease(this->Context))
+    vtkOpenGLRenderWindow* context = this->Context;
+    if (!context && window && window == this->ContextAddress)
     {
-      this->Heads->ReleaseGraphicsResources();
-      this->Nodes->ReleaseGraphicsResources();
-      this->Counters->ReleaseGraphicsResources();
+      context = this->ContextAddress;
+    }
+    const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(context);
+    this->Resolve->ReleaseGraphicsResources(context);
+    this->ResolveModel = -1;
+    for (vtkSmartPointer<vtkOpenGLBufferObject>* buffer :
+      { &this->Heads, &this->Nodes, &this->Counters })
+    {
+      vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
     }
     this->HeadBytes = 0;
     this->Capacity = 0;
     this->Context = nullptr;
+    this->ContextAddress = nullptr;
   }
 };
 
@@ -151,10 +163,11 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   }
   if (internals.Context && internals.Context != context)
   {
-    internals.Release();
+    internals.Release(internals.Context);
     context->MakeCurrent();
   }
   internals.Context = context;
+  internals.ContextAddress = context;
 
   // the head array, and the pool within the budget
   const double budget = this->MemoryBudget * 1048576.0;
@@ -323,9 +336,9 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleFragmentLists::ReleaseGraphicsResources(vtkWindow*)
+void vtkParticleFragmentLists::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Internals->Release();
+  this->Internals->Release(window);
   this->AllocatedBytes = 0.0;
 }
 
