@@ -29,10 +29,16 @@ layout(std430) buffer prListNodeBlock
   uint prListNodes[];
 };
 // [0] nodes appended (may exceed the capacity: the overflow is counted, not stored),
-// [1] pixels whose lists could not be composited completely (resolve)
+// [1] pixels whose lists could not be composited completely (resolve), [2] pixels deferred to
+// the resolve's second pass
 layout(std430) buffer prListCounterBlock
 {
   uint prListCounters[];
+};
+// the pixels (y * width + x) of the resolve's second pass
+layout(std430) buffer prListDeferredBlock
+{
+  uint prListDeferred[];
 };
 // pixels per row of the head array and the node capacity
 uniform int prListWidth;

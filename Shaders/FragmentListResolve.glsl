@@ -20,6 +20,10 @@
 // the opacity stays exact and only the colour mix is approximated). Where
 // nothing overlaps this is the sorted compositing of the glyph path.
 //
+// Two passes: the first composites every pixel whose list fits into the
+// PR_LIST_LOCAL segments held and appends the others to prListDeferred; the
+// second (PR_LIST_DEFERRED, the rounds below) runs over those pixels only.
+//
 // Bounded work space: PR_LIST_LOCAL segments are held at a time. The list is
 // processed in rounds by increasing start: each round loads the next segments
 // that fit, composites up to the start of the first one not loaded, and keeps
@@ -27,7 +31,13 @@
 // segments overlap at one point of the ray; otherwise the segments that found
 // no room are skipped and the pixel is counted (prListCounters[1]).
 //=========================================================================
+#ifdef PR_LIST_DEFERRED
+// the second pass: one invocation per pixel of the deferred list
+layout(local_size_x = 64) in;
+uniform int prDeferredCount;
+#else
 layout(local_size_x = 8, local_size_y = 8) in;
+#endif
 //PR::Include FragmentListBuffers
 //PR::Include EmissionAbsorption
 uniform float prHollowFraction2;
@@ -52,7 +62,6 @@ vec3 lRadiance[PR_LIST_LOCAL];
 float lStart[PR_LIST_LOCAL];
 float lEnd[PR_LIST_LOCAL];
 float lDepth[PR_LIST_LOCAL];
-float lWeight[PR_LIST_LOCAL];
 
 float prNodeFloat(uint node, uint word)
 {
@@ -137,14 +146,167 @@ float prDensityBetween(int j, float tau0, float tau1)
   return prPieceIntegral(lB2[j], tau0, tau1, tau1 - tau0);
 }
 
+// Composite the n segments held from `position` up to `limit` (no segment not held starts
+// before it), over the elementary intervals between their boundaries; position ends at the limit
+// or where nothing follows.
+void prSweep(
+  inout float position, float limit, int n, inout vec3 color, inout float transmittance)
+{
+  for (int step = 0; step < 4 * PR_LIST_LOCAL + 4 && position < limit && transmittance > 1e-6;
+       ++step)
+  {
+    float x0 = position;
+    float x1 = limit;
+    for (int j = 0; j < n; ++j)
+    {
+      if (lStart[j] > x0)
+      {
+        x1 = min(x1, lStart[j]);
+      }
+      if (lEnd[j] > x0)
+      {
+        x1 = min(x1, lEnd[j]);
+      }
+      float hs = prCoreHalf(j);
+      if (hs > 0.0)
+      {
+        float c0 = lKey[j] - hs * lRadius[j];
+        float c1 = lKey[j] + hs * lRadius[j];
+        if (c0 > x0)
+        {
+          x1 = min(x1, c0);
+        }
+        if (c1 > x0)
+        {
+          x1 = min(x1, c1);
+        }
+      }
+    }
+    if (!(x1 < PR_HUGE))
+    {
+      position = limit;
+      break; // nothing further along this ray
+    }
+    // the interval [x0, x1]: exact optical depths of the segments spanning it
+    float total = 0.0;
+    int contributing = 0;
+    int only = 0;
+    for (int j = 0; j < n; ++j)
+    {
+      lDepth[j] = 0.0;
+      if (lStart[j] <= x0 && lEnd[j] >= x1 && x0 > -PR_HUGE)
+      {
+        float integral = prDensityBetween(j, prTauAt(j, x0), prTauAt(j, x1));
+        lDepth[j] = lLambda[j] * integral;
+        if (lDepth[j] > 0.0)
+        {
+          total += lDepth[j];
+          ++contributing;
+          only = j;
+        }
+      }
+    }
+    if (total > 0.0)
+    {
+      float opacity = prOneMinusExpNeg(total);
+      vec3 radiance = lRadiance[only];
+      if (contributing > 1)
+      {
+#if PR_DENSITY_MODEL == 1
+        // w_j ~ int lambda_j rho_j(tau_j(x)) / r_j exp(-S(x)) dx, S the optical depth from x0
+        int pieces = int(clamp(ceil(total), 1.0, 8.0));
+        const float gaussNode[2] = float[2](0.33998104, 0.86113631);
+        const float gaussWeight[2] = float[2](0.65214515, 0.34785485);
+        vec3 weighted = vec3(0.0);
+        float weightSum = 0.0;
+        float width = (x1 - x0) / float(pieces);
+        for (int p = 0; p < pieces; ++p)
+        {
+          float centre = x0 + (float(p) + 0.5) * width;
+          for (int g = 0; g < 4; ++g)
+          {
+            float x = centre + 0.5 * width * (g < 2 ? -gaussNode[g] : gaussNode[g - 2]);
+            float wg = 0.5 * width * gaussWeight[g < 2 ? g : g - 2];
+            float extinction = 0.0;
+            for (int j = 0; j < n; ++j)
+            {
+              if (lDepth[j] > 0.0)
+              {
+                float tau0 = prTauAt(j, x0);
+                float tau = (x - lKey[j]) / lRadius[j];
+                extinction += lLambda[j] * prPieceIntegral(lB2[j], tau0, tau, tau - tau0);
+              }
+            }
+            float attenuation = exp(-extinction);
+            for (int j = 0; j < n; ++j)
+            {
+              if (lDepth[j] > 0.0)
+              {
+                float tau = (x - lKey[j]) / lRadius[j];
+                float w = wg * lLambda[j] * (lB2[j] + tau * tau) / lRadius[j] * attenuation;
+                weighted += w * lRadiance[j];
+                weightSum += w;
+              }
+            }
+          }
+        }
+        if (weightSum > 0.0)
+        {
+          radiance = weighted / weightSum;
+        }
+        else
+        {
+          radiance = vec3(0.0);
+          for (int j = 0; j < n; ++j)
+          {
+            radiance += (lDepth[j] / total) * lRadiance[j];
+          }
+        }
+#else
+        radiance = vec3(0.0);
+        for (int j = 0; j < n; ++j)
+        {
+          radiance += (lDepth[j] / total) * lRadiance[j];
+        }
+#endif
+      }
+      color += transmittance * opacity * radiance;
+      transmittance *= exp(-total);
+    }
+    position = x1;
+  }
+}
+
+// Write the pixel's premultiplied colour and opacity (nothing when empty or not finite: the
+// accumulation is cleared to 0).
+void prStore(ivec2 pixel, vec3 color, float transmittance)
+{
+  float alpha = 1.0 - transmittance;
+  if (!(alpha > 0.0) || any(isnan(color)) || any(isinf(color)) || isnan(alpha))
+  {
+    return;
+  }
+  imageStore(prAccumulation, pixel, vec4(color, alpha));
+}
+
 void main()
 {
+#ifdef PR_LIST_DEFERRED
+  int index = int(gl_GlobalInvocationID.x);
+  if (index >= prDeferredCount)
+  {
+    return;
+  }
+  uint deferred = prListDeferred[index];
+  ivec2 pixel = ivec2(int(deferred % uint(prListWidth)), int(deferred / uint(prListWidth)));
+#else
   ivec2 offset = ivec2(gl_GlobalInvocationID.xy);
   if (offset.x >= prBandSize.x || offset.y >= prBandSize.y)
   {
     return;
   }
   ivec2 pixel = prBandOrigin + offset;
+#endif
   uint head = prListHeads[pixel.y * prListWidth + pixel.x];
   if (head == PR_LIST_END)
   {
@@ -152,7 +314,32 @@ void main()
   }
   vec3 color = vec3(0.0);
   float transmittance = 1.0;
-  int n = 0;             // segments held
+
+  // short lists (the usual case): all segments held at once, one walk, one sweep
+  int n = 0;
+  uint node = head;
+  for (; node != PR_LIST_END && n < PR_LIST_LOCAL; ++n)
+  {
+    prLoad(n, node, prNodeStart(node));
+    node = prListNodes[node * uint(PR_LIST_NODE_UINTS) + 9u];
+  }
+  if (node == PR_LIST_END)
+  {
+    float position = -PR_HUGE;
+    prSweep(position, PR_HUGE, n, color, transmittance);
+    prStore(pixel, color, transmittance);
+    return;
+  }
+
+#ifndef PR_LIST_DEFERRED
+  // a longer list: left to the second pass, which works in rounds (a program with that code
+  // costs several times more for every pixel on some implementations, llvmpipe among them)
+  uint slot = atomicAdd(prListCounters[2], 1u);
+  prListDeferred[slot] = uint(pixel.y * prListWidth + pixel.x);
+}
+#else
+  // longer lists: in rounds by increasing start
+  n = 0;                 // segments held
   float lastStart = -PR_HUGE; // the last segment loaded or skipped, by (start, node)
   uint lastNode = 0u;
   bool first = true;
@@ -166,7 +353,7 @@ void main()
     float bStart[PR_LIST_LOCAL + 1];
     uint bNode[PR_LIST_LOCAL + 1];
     int count = 0;
-    uint node = head;
+    node = head;
     for (int walk = 0; walk < guard && node != PR_LIST_END; ++walk)
     {
       float s = prNodeStart(node);
@@ -224,127 +411,7 @@ void main()
     }
     n += loads;
 
-    // sweep from the position to the limit over the elementary intervals
-    for (int step = 0; step < 4 * PR_LIST_LOCAL + 4 && position < limit && transmittance > 1e-6;
-         ++step)
-    {
-      float x0 = position;
-      float x1 = limit;
-      for (int j = 0; j < n; ++j)
-      {
-        if (lStart[j] > x0)
-        {
-          x1 = min(x1, lStart[j]);
-        }
-        if (lEnd[j] > x0)
-        {
-          x1 = min(x1, lEnd[j]);
-        }
-        float hs = prCoreHalf(j);
-        if (hs > 0.0)
-        {
-          float c0 = lKey[j] - hs * lRadius[j];
-          float c1 = lKey[j] + hs * lRadius[j];
-          if (c0 > x0)
-          {
-            x1 = min(x1, c0);
-          }
-          if (c1 > x0)
-          {
-            x1 = min(x1, c1);
-          }
-        }
-      }
-      if (!(x1 < PR_HUGE))
-      {
-        position = limit;
-        break; // nothing further along this ray
-      }
-      // the interval [x0, x1]: exact optical depths of the segments spanning it
-      float total = 0.0;
-      int contributing = 0;
-      int only = 0;
-      for (int j = 0; j < n; ++j)
-      {
-        lDepth[j] = 0.0;
-        if (lStart[j] <= x0 && lEnd[j] >= x1 && x0 > -PR_HUGE)
-        {
-          float integral = prDensityBetween(j, prTauAt(j, x0), prTauAt(j, x1));
-          lDepth[j] = lLambda[j] * integral;
-          if (lDepth[j] > 0.0)
-          {
-            total += lDepth[j];
-            ++contributing;
-            only = j;
-          }
-        }
-      }
-      if (total > 0.0)
-      {
-        float opacity = prOneMinusExpNeg(total);
-        vec3 radiance = lRadiance[only];
-        if (contributing > 1)
-        {
-#if PR_DENSITY_MODEL == 1
-          // w_j ~ int lambda_j rho_j(tau_j(x)) / r_j exp(-S(x)) dx, S the optical depth from x0
-          int pieces = int(clamp(ceil(total), 1.0, 8.0));
-          const float gaussNode[2] = float[2](0.33998104, 0.86113631);
-          const float gaussWeight[2] = float[2](0.65214515, 0.34785485);
-          float weightSum = 0.0;
-          for (int j = 0; j < n; ++j)
-          {
-            lWeight[j] = 0.0;
-          }
-          float width = (x1 - x0) / float(pieces);
-          for (int p = 0; p < pieces; ++p)
-          {
-            float centre = x0 + (float(p) + 0.5) * width;
-            for (int g = 0; g < 4; ++g)
-            {
-              float x = centre + 0.5 * width * (g < 2 ? -gaussNode[g] : gaussNode[g - 2]);
-              float wg = 0.5 * width * gaussWeight[g < 2 ? g : g - 2];
-              float extinction = 0.0;
-              for (int j = 0; j < n; ++j)
-              {
-                if (lDepth[j] > 0.0)
-                {
-                  float tau0 = prTauAt(j, x0);
-                  float tau = (x - lKey[j]) / lRadius[j];
-                  extinction += lLambda[j] * prPieceIntegral(lB2[j], tau0, tau, tau - tau0);
-                }
-              }
-              float attenuation = exp(-extinction);
-              for (int j = 0; j < n; ++j)
-              {
-                if (lDepth[j] > 0.0)
-                {
-                  float tau = (x - lKey[j]) / lRadius[j];
-                  float w = wg * lLambda[j] * (lB2[j] + tau * tau) / lRadius[j] * attenuation;
-                  lWeight[j] += w;
-                  weightSum += w;
-                }
-              }
-            }
-          }
-          radiance = vec3(0.0);
-          for (int j = 0; j < n; ++j)
-          {
-            float w = weightSum > 0.0 ? lWeight[j] / weightSum : lDepth[j] / total;
-            radiance += w * lRadiance[j];
-          }
-#else
-          radiance = vec3(0.0);
-          for (int j = 0; j < n; ++j)
-          {
-            radiance += (lDepth[j] / total) * lRadiance[j];
-          }
-#endif
-        }
-        color += transmittance * opacity * radiance;
-        transmittance *= exp(-total);
-      }
-      position = x1;
-    }
+    prSweep(position, limit, n, color, transmittance);
     position = max(position, limit);
     // keep the segments still open at the limit
     int kept = 0;
@@ -369,10 +436,6 @@ void main()
   {
     atomicAdd(prListCounters[1], 1u);
   }
-  float alpha = 1.0 - transmittance;
-  if (!(alpha > 0.0) || any(isnan(color)) || any(isinf(color)) || isnan(alpha))
-  {
-    return;
-  }
-  imageStore(prAccumulation, pixel, vec4(color, alpha));
+  prStore(pixel, color, transmittance);
 }
+#endif

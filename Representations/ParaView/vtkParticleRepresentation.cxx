@@ -47,6 +47,7 @@ vtkParticleRepresentation::vtkParticleRepresentation()
     this->EarlyTermination = transparent->GetEarlyTermination();
     this->OverlapCompositing = transparent->GetOverlapCompositing();
     this->FragmentListMemory = transparent->GetFragmentListMemory();
+    this->OverlapTolerance = transparent->GetOverlapTolerance();
     this->OpacityReference = transparent->GetOpacityReference();
   }
   this->Actor->SetMapper(this->Mapper);
@@ -117,6 +118,7 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     transparent->SetEarlyTermination(this->EarlyTermination);
     transparent->SetOverlapCompositing(this->OverlapCompositing);
     transparent->SetFragmentListMemory(this->FragmentListMemory);
+    transparent->SetOverlapTolerance(this->OverlapTolerance);
     transparent->SetOpacityReference(this->OpacityReference);
   }
 }
@@ -571,6 +573,13 @@ void vtkParticleRepresentation::SetOverlapCompositing(int mode)
 void vtkParticleRepresentation::SetFragmentListMemory(double mebibytes)
 {
   this->FragmentListMemory = mebibytes;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOverlapTolerance(double tolerance)
+{
+  this->OverlapTolerance = tolerance;
   this->ApplyMapperSettings();
 }
 

@@ -103,6 +103,7 @@ public:
   void SetEarlyTermination(int on);
   void SetOverlapCompositing(int mode); // vtkTransparentSphereMapper::OverlapCompositingModes
   void SetFragmentListMemory(double mebibytes);
+  void SetOverlapTolerance(double tolerance);
   void SetOpacityReference(int reference); // vtkTransparentSphereMapper::OpacityReferences
   void SetUseOpacityArray(bool use);
   vtkGetMacro(UseOpacityArray, bool);
@@ -238,6 +239,7 @@ protected:
   bool EarlyTermination = false;
   int OverlapCompositing = 0;
   double FragmentListMemory = 256.0;
+  double OverlapTolerance = 0.25;
   int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;

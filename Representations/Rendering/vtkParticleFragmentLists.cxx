@@ -27,15 +27,21 @@ namespace
 {
 // bytes per node (PR_LIST_NODE_UINTS words of Shaders/FragmentListBuffers.glsl)
 const double NodeBytes = 40.0;
-// the storage binding points of the lists (the compute passes use 0-3 and rebind them anyway)
-const unsigned int HeadBinding = 5;
-const unsigned int NodeBinding = 6;
-const unsigned int CounterBinding = 7;
+// the storage binding points of the lists (the sort uses 0-3 and rebinds them anyway; OpenGL
+// guarantees 8)
+const unsigned int HeadBinding = 4;
+const unsigned int NodeBinding = 5;
+const unsigned int CounterBinding = 6;
+const unsigned int DeferredBinding = 7;
 // shader storage and float bit casts for VTK's GLSL 1.50 (both core in OpenGL 4.3)
 const char* const ExtensionLine = "#extension GL_ARB_shader_storage_buffer_object : require\n"
                                   "#extension GL_ARB_shader_bit_encoding : require\n";
 // initial pool: this many nodes per pixel (grown from the counts of overflowing frames)
 const double InitialNodesPerPixel = 2.0;
+// segments the resolve holds per pixel at a time (PR_LIST_LOCAL) in both passes: the first
+// composites lists of up to that many, the second (rounds) the longer ones
+const int SegmentsHeldFirst = 16;
+const int SegmentsHeld = 16;
 }
 
 //------------------------------------------------------------------------------
@@ -49,13 +55,17 @@ public:
   vtkSmartPointer<vtkOpenGLBufferObject> Nodes = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   vtkSmartPointer<vtkOpenGLBufferObject> Counters =
     vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Deferred =
+    vtkSmartPointer<vtkOpenGLBufferObject>::New();
   std::size_t HeadBytes = 0;
   long long Capacity = 0; // nodes
   int Width = 0;
   vtkNew<vtkParticleComputeProgram> Resolve;
+  vtkNew<vtkParticleComputeProgram> ResolveDeferred;
   int ResolveModel = -1;
   bool DroppedWarned = false;
   bool IncompleteWarned = false;
+  std::pair<std::size_t, double> BudgetErrorSaid{ 0, 0.0 };
 
   // Delete the buffers in their context: `window` is the window being released (it may be ours
   // in its destructor, when the weak pointer is already cleared); without the context nothing is
@@ -69,9 +79,10 @@ public:
     }
     const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(context);
     this->Resolve->ReleaseGraphicsResources(context);
+    this->ResolveDeferred->ReleaseGraphicsResources(context);
     this->ResolveModel = -1;
     for (vtkSmartPointer<vtkOpenGLBufferObject>* buffer :
-      { &this->Heads, &this->Nodes, &this->Counters })
+      { &this->Heads, &this->Nodes, &this->Counters, &this->Deferred })
     {
       vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
     }
@@ -120,8 +131,9 @@ void vtkParticleFragmentLists::PrepareProgram(vtkShaderProgram* program)
 void vtkParticleFragmentLists::PrepareProgram(unsigned int handle)
 {
   vtkInternals& internals = *this->Internals;
-  const std::pair<const char*, unsigned int> blocks[3] = { { "prListHeadBlock", HeadBinding },
-    { "prListNodeBlock", NodeBinding }, { "prListCounterBlock", CounterBinding } };
+  const std::pair<const char*, unsigned int> blocks[4] = { { "prListHeadBlock", HeadBinding },
+    { "prListNodeBlock", NodeBinding }, { "prListCounterBlock", CounterBinding },
+    { "prListDeferredBlock", DeferredBinding } };
   for (const auto& block : blocks)
   {
     const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, block.first);
@@ -133,6 +145,7 @@ void vtkParticleFragmentLists::PrepareProgram(unsigned int handle)
   vtkParticleComputeProgram::BindStorage(HeadBinding, internals.Heads);
   vtkParticleComputeProgram::BindStorage(NodeBinding, internals.Nodes);
   vtkParticleComputeProgram::BindStorage(CounterBinding, internals.Counters);
+  vtkParticleComputeProgram::BindStorage(DeferredBinding, internals.Deferred);
   // the program is bound (glUniform acts on it)
   const GLint width = glGetUniformLocation(handle, "prListWidth");
   const GLint capacity = glGetUniformLocation(handle, "prListCapacity");
@@ -157,6 +170,7 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   this->LastNumberOfBands = 0;
   this->LastNumberOfIncompletePixels = 0;
   this->LastNumberOfDroppedFragments = 0;
+  this->LastNumberOfDeferredPixels = 0;
   if (!context || width <= 0 || height <= 0)
   {
     return false;
@@ -172,21 +186,29 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   // the head array, and the pool within the budget
   const double budget = this->MemoryBudget * 1048576.0;
   const std::size_t headBytes = static_cast<std::size_t>(width) * height * sizeof(GLuint);
+  // heads and the deferred pixels: 4 bytes per pixel each
   const long long maximumCapacity = static_cast<long long>(std::min(
-    (budget - static_cast<double>(headBytes)) / NodeBytes, static_cast<double>(INT32_MAX)));
+    (budget - 2.0 * static_cast<double>(headBytes)) / NodeBytes, static_cast<double>(INT32_MAX)));
   if (maximumCapacity < width)
   {
-    vtkErrorMacro(<< "The fragment lists of a " << width << " x " << height << " view need more "
-                  << "than their memory budget of " << this->MemoryBudget
-                  << " MiB (the head array alone takes "
-                  << vtkParticleMemory::FormatBytes(static_cast<double>(headBytes))
-                  << "): raise FragmentListMemory. Overlapping translucent particles are not drawn.");
+    // said once per view size and budget, not every frame
+    const std::pair<std::size_t, double> said(headBytes, this->MemoryBudget);
+    if (said != internals.BudgetErrorSaid)
+    {
+      vtkErrorMacro(<< "The fragment lists of a " << width << " x " << height
+                    << " view need more than their memory budget of " << this->MemoryBudget
+                    << " MiB (the per-pixel arrays alone take "
+                    << vtkParticleMemory::FormatBytes(2.0 * static_cast<double>(headBytes))
+                    << "): raise FragmentListMemory. Drawn as sorted spheres instead.");
+      internals.BudgetErrorSaid = said;
+    }
     return false;
   }
   if (headBytes != internals.HeadBytes)
   {
     if (!vtkParticleComputeProgram::AllocateStorage(internals.Heads, headBytes) ||
-      !vtkParticleComputeProgram::AllocateStorage(internals.Counters, 2 * sizeof(GLuint)))
+      !vtkParticleComputeProgram::AllocateStorage(internals.Deferred, headBytes) ||
+      !vtkParticleComputeProgram::AllocateStorage(internals.Counters, 3 * sizeof(GLuint)))
     {
       vtkErrorMacro(<< "Could not allocate "
                     << vtkParticleMemory::FormatBytes(static_cast<double>(headBytes))
@@ -223,21 +245,30 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
       return false;
     }
   }
-  this->AllocatedBytes = static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
+  this->AllocatedBytes = 2.0 * static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
 
-  // the resolve program, for the density model
+  // the resolve programs (first and second pass), for the density model
   vtkParticleComputeProgram* resolve = internals.Resolve;
+  vtkParticleComputeProgram* resolveDeferred = internals.ResolveDeferred;
   if (internals.ResolveModel != this->DensityModel)
   {
-    std::string source = vtkParticleShaders::Get("FragmentListResolve");
-    vtkShaderProgram::Substitute(source, "#version 430\n",
-      "#version 430\n#define PR_DENSITY_MODEL " + std::to_string(this->DensityModel) + "\n");
-    resolve->SetSource(source);
+    const std::string source = vtkParticleShaders::Get("FragmentListResolve");
+    const std::string model = "#define PR_DENSITY_MODEL " + std::to_string(this->DensityModel);
+    std::string first = source;
+    vtkShaderProgram::Substitute(first, "#version 430\n",
+      "#version 430\n" + model + "\n#define PR_LIST_LOCAL " + std::to_string(SegmentsHeldFirst) +
+        "\n");
+    resolve->SetSource(first);
+    std::string second = source;
+    vtkShaderProgram::Substitute(second, "#version 430\n",
+      "#version 430\n" + model + "\n#define PR_LIST_LOCAL " + std::to_string(SegmentsHeld) +
+        "\n#define PR_LIST_DEFERRED\n");
+    resolveDeferred->SetSource(second);
     internals.ResolveModel = this->DensityModel;
   }
-  if (!resolve->Build(context))
+  if (!resolve->Build(context) || !resolveDeferred->Build(context))
   {
-    vtkErrorMacro(<< "The fragment lists' resolve program could not be built.");
+    vtkErrorMacro(<< "The fragment lists' resolve programs could not be built.");
     return false;
   }
 
@@ -245,7 +276,7 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   vtkOpenGLState::ScopedglEnableDisable scissorSaved(ostate, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglScissor scissorBoxSaved(ostate);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
-  const GLuint zeros[2] = { 0, 0 };
+  const GLuint zeros[3] = { 0, 0, 0 };
   vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(zeros), zeros);
 
   bool grown = false;
@@ -255,11 +286,14 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
     const std::pair<int, int> band = bands.back();
     bands.pop_back();
     vtkParticleComputeProgram::ClearStorage(internals.Heads, headBytes, 0xffffffffu);
-    vtkParticleComputeProgram::ClearStorage(internals.Counters, sizeof(GLuint), 0u);
+    // the band's fragment and deferred-pixel counts (the incomplete pixels add up over bands)
+    vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(GLuint), zeros);
+    vtkParticleComputeProgram::UploadStorage(
+      internals.Counters, 2 * sizeof(GLuint), sizeof(GLuint), zeros);
     ostate->vtkglScissor(0, band.first, width, band.second - band.first);
     draw();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint counters[2] = { 0, 0 };
+    GLuint counters[3] = { 0, 0, 0 };
     vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
     const long long count = counters[0];
     if (count > internals.Capacity)
@@ -270,7 +304,7 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
         grown = true;
         if (allocateNodes(count + count / 4 + 1024))
         {
-          this->AllocatedBytes = static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
+          this->AllocatedBytes = 2.0 * static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
           bands.push_back(band);
           continue;
         }
@@ -290,7 +324,8 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
     this->LastNumberOfFragments += std::min(count, internals.Capacity);
     ++this->LastNumberOfBands;
 
-    // resolve the band into the accumulation image
+    // resolve the band into the accumulation image: every pixel with a short list, then the
+    // pixels with longer ones
     resolve->Use();
     this->PrepareProgram(resolve->GetHandle());
     resolve->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
@@ -300,6 +335,17 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
       GL_WRITE_ONLY, GL_RGBA32F);
     resolve->Dispatch(static_cast<unsigned int>((width + 7) / 8),
       static_cast<unsigned int>((band.second - band.first + 7) / 8));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
+    this->LastNumberOfDeferredPixels += counters[2];
+    if (counters[2] > 0)
+    {
+      resolveDeferred->Use();
+      this->PrepareProgram(resolveDeferred->GetHandle());
+      resolveDeferred->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
+      resolveDeferred->SetUniformi("prDeferredCount", static_cast<int>(counters[2]));
+      resolveDeferred->Dispatch(static_cast<unsigned int>((counters[2] + 63) / 64));
+    }
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     vtkParticleComputeProgram::UseNone();
   }
@@ -307,10 +353,10 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  GLuint counters[2] = { 0, 0 };
+  GLuint counters[3] = { 0, 0, 0 };
   vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
   this->LastNumberOfIncompletePixels = counters[1];
-  for (unsigned int binding : { HeadBinding, NodeBinding, CounterBinding })
+  for (unsigned int binding : { HeadBinding, NodeBinding, CounterBinding, DeferredBinding })
   {
     vtkParticleComputeProgram::BindStorage(binding, nullptr);
   }
@@ -327,9 +373,9 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   if (this->LastNumberOfIncompletePixels > 0 && !internals.IncompleteWarned)
   {
     vtkWarningMacro(<< this->LastNumberOfIncompletePixels
-                    << " pixels have more than 15 translucent spheres overlapping at one point "
-                       "of their ray: there the spheres that found no room were left out of the "
-                       "exact compositing.");
+                    << " pixels have more than " << SegmentsHeld - 1
+                    << " translucent spheres overlapping at one point of their ray: there the "
+                       "spheres that found no room were left out of the exact compositing.");
   }
   internals.IncompleteWarned = this->LastNumberOfIncompletePixels > 0;
   return true;
@@ -355,4 +401,5 @@ void vtkParticleFragmentLists::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastNumberOfBands: " << this->LastNumberOfBands << "\n";
   os << indent << "LastNumberOfIncompletePixels: " << this->LastNumberOfIncompletePixels << "\n";
   os << indent << "LastNumberOfDroppedFragments: " << this->LastNumberOfDroppedFragments << "\n";
+  os << indent << "LastNumberOfDeferredPixels: " << this->LastNumberOfDeferredPixels << "\n";
 }

@@ -174,6 +174,7 @@ public:
   bool Overlapping = false;
   std::vector<vtkMTimeType> OverlapKey;
   double OverlapScale = 0.0;
+  double OverlapTolerance = -1.0;
   bool ExactOverlapInUse = false;
 
   // per-particle opacity
@@ -684,8 +685,13 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     (this->OverlapCompositing == AUTOMATIC && this->HasOverlappingSpheres());
   if (internals.ExactOverlapInUse)
   {
-    this->RenderTranslucentLists(ren, act, savedByPass);
-    return;
+    if (this->RenderTranslucentLists(ren, act, savedByPass))
+    {
+      return;
+    }
+    // the lists could not be made (budget below the view's per-pixel arrays, no memory, no
+    // program; said by vtkParticleFragmentLists): the sorted spheres, a sane picture
+    internals.ExactOverlapInUse = false;
   }
   // Without a sort (too many particles for the GPU's buffers, compute shaders failing) the
   // particles are still composited, in index order: a sane picture, with one warning.
@@ -775,12 +781,14 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
   vtkFloatArray* radii = this->GetParticleRadii();
   vtkFloatArray* kappas = internals.OpticalDepths;
   const std::vector<vtkMTimeType> key = { this->GetParticleGeometryTime(), kappas->GetMTime() };
-  if (key == internals.OverlapKey && this->RadiusScaleFactor == internals.OverlapScale)
+  if (key == internals.OverlapKey && this->RadiusScaleFactor == internals.OverlapScale &&
+    this->OverlapTolerance == internals.OverlapTolerance)
   {
     return internals.Overlapping;
   }
   internals.OverlapKey = key;
   internals.OverlapScale = this->RadiusScaleFactor;
+  internals.OverlapTolerance = this->OverlapTolerance;
   internals.Overlapping = false;
   vtkPoints* points = input ? input->GetPoints() : nullptr;
   const vtkIdType numPts = points ? points->GetNumberOfPoints() : 0;
@@ -816,9 +824,11 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
   vtkNew<vtkStaticPointLocator> locator;
   locator->SetDataSet(cloud);
   locator->BuildLocator();
-  // i and j overlap when |p_i - p_j| < s (r_i + r_j) <= 2 s max(r_i, r_j): the larger sphere's
-  // query finds the pair. Touching spheres (to rounding) do not overlap.
+  // i and j penetrate by more than the tolerance t when |p_i - p_j| < s (r_i + r_j - t min(r_i,
+  // r_j)) <= 2 s max(r_i, r_j): the larger sphere's query finds the pair. Touching spheres (to
+  // rounding) do not overlap.
   const double s = this->RadiusScaleFactor;
+  const double tolerance = this->OverlapTolerance;
   std::atomic<bool> found(false);
   vtkSMPTools::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
@@ -839,7 +849,8 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
           }
           double q[3];
           drawn->GetPoint(j, q);
-          const double reach = s * (ri + drawnRadii[j]) * (1.0 - 1e-6);
+          const double rj = drawnRadii[j];
+          const double reach = s * (ri + rj - tolerance * std::min(ri, rj)) * (1.0 - 1e-6);
           if (vtkMath::Distance2BetweenPoints(p, q) < reach * reach)
           {
             found = true;
@@ -865,18 +876,19 @@ vtkParticleFragmentLists* vtkTransparentSphereMapper::GetFragmentLists()
 }
 
 //------------------------------------------------------------------------------
-void vtkTransparentSphereMapper::RenderTranslucentLists(
+bool vtkTransparentSphereMapper::RenderTranslucentLists(
   vtkRenderer* ren, vtkActor* act, bool savedByPass)
 {
   vtkInternals& internals = *this->Internals;
   const vtkIdType numPts = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
   if (!internals.Target->Begin(ren, savedByPass))
   {
-    return;
+    return true; // said by the target; nothing to fall back to
   }
   vtkTextureObject* opaqueDepth = internals.Target->GetOpaqueDepthTexture();
   opaqueDepth->Activate();
   vtkParticleFragmentLists* lists = internals.Lists;
+  bool drawn = true;
   lists->SetMemoryBudget(this->FragmentListMemory);
   lists->SetDensityModel(this->DensityModel);
   lists->SetHollowFraction2(this->HollowFraction * this->HollowFraction);
@@ -897,7 +909,7 @@ void vtkTransparentSphereMapper::RenderTranslucentLists(
     }
     vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
     vtkOpenGLState* ostate = ctx->GetState();
-    lists->Render(ctx, internals.Target->GetAccumulationTexture(),
+    drawn = lists->Render(ctx, internals.Target->GetAccumulationTexture(),
       [&]()
       {
         ctx->GetShaderCache()->ReadyShaderProgram(cellBO.Program);
@@ -914,12 +926,13 @@ void vtkTransparentSphereMapper::RenderTranslucentLists(
   }
   internals.Building = Variant::Opaque;
   opaqueDepth->Deactivate();
-  internals.Target->End();
-  if (this->CollectTimings)
+  internals.Target->End(); // an empty accumulation when nothing was drawn: the image unchanged
+  if (drawn && this->CollectTimings)
   {
     internals.TotalTimer.Stop();
     internals.TimingsPending = true;
   }
+  return drawn;
 }
 
 //------------------------------------------------------------------------------
@@ -1124,6 +1137,7 @@ void vtkTransparentSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "OverlapCompositing: " << this->OverlapCompositing << "\n";
   os << indent << "FragmentListMemory: " << this->FragmentListMemory << " MiB\n";
+  os << indent << "OverlapTolerance: " << this->OverlapTolerance << "\n";
   os << indent << "NumberOfSorts: " << this->NumberOfSorts << "\n";
   os << indent << "NumberOfOpacityUploads: " << this->NumberOfOpacityUploads << "\n";
 }

@@ -98,12 +98,22 @@
  *   (scalar rgb, or DiffuseColor without scalars). A segment whose start is clipped (eye inside
  *   the sphere, near plane cutting it) has no entry surface: L_RV = Theta c_i. A non-finite L_R
  *   discards the segment (like the GPU's discard).
- * - Order: segments are composited front to back by increasing t_n (ties: smaller particle id
- *   first), C += T L_RV, T *= 1 - Theta (evaluated as exp(log1p(-Theta_i) I / I_max), accurate
- *   also for Theta near 1), all in double. For spheres that do not intersect this is the exact
- *   visibility order. Intersecting translucent spheres are each composited whole in that order
- *   (the one whose visible part starts first is entirely in front), which is also what the GPU's
- *   depth sort does, although its sort key (the power of the eye) may order them differently.
+ * - Overlaps (the mapper's OverlapCompositing other than SORTED_SPHERES, i.e. its AUTOMATIC
+ *   default too: where nothing overlaps both agree): the exact integral through the summed
+ *   densities. Between consecutive boundaries along the ray (segment starts and ends, hollow-core
+ *   boundaries) the set of spheres is fixed; the interval's optical depths D_j are the numerical
+ *   integrals above, its opacity 1 - exp(-D) (D = sum D_j) and its colour the mix of the
+ *   spheres' L_RV / Theta weighted by int sigma_j T over the interval: D_j / D for constant
+ *   densities, adaptive Gauss-Kronrod quadrature of sigma_j(t) exp(-S(t)) (S the optical depth
+ *   from the interval's start, a polynomial in t) for squared-distance densities; C += T (1 -
+ *   exp(-D)) L_mix, T *= exp(-D).
+ * - Order (SORTED_SPHERES): segments are composited front to back by increasing t_n (ties:
+ *   smaller particle id first), C += T L_RV, T *= 1 - Theta (evaluated as exp(log1p(-Theta_i) I /
+ *   I_max), accurate also for Theta near 1), all in double. For spheres that do not intersect this
+ *   is the exact visibility order. Intersecting translucent spheres are each composited whole in
+ *   that order (the one whose visible part starts first is entirely in front), which is also
+ *   what the GPU's depth sort does, although its sort key (the power of the eye) may order them
+ *   differently.
  * - Result: colour = C + T * background (the renderer's background colour, or the opaque
  *   layer's or the opaque particle's colour), clamped to [0,1] per channel; alpha =
  *   1 - T (1 - background alpha) (the "over" operator; background alpha is the renderer's

@@ -7,10 +7,11 @@ transparent mode integrates each ray through the summed densities of the spheres
   2/255 of the reference on every pixel; the paper's sorted path is at least 20/255 off where they
   overlap (what the lists fix), and the reference of the sorted path agrees with it.
 - AUTOMATIC picks the lists for overlapping spheres and the sort for separate ones (whose
-  images are the same both ways).
+  images are the same both ways) and for spheres penetrating by less than OverlapTolerance.
 - A molecule-like cluster (40 spheres, neighbours at 0.9 radii, up to ~9 overlapping at a point,
   deeper lists than the 16 held at once): within 2/255 of the reference, no incomplete pixel.
-- A 1 MiB budget at 400 x 400: the view in bands, the same image within 1/255.
+- A 2 MiB budget at 400 x 400: the view in bands, the same image within 1/255; 1 MiB (less than
+  the per-pixel arrays): an error and the sorted spheres instead.
 - 24 concentric spheres (more overlapping at one point than the resolve holds): a warning, a
   finite image.
 """
@@ -113,6 +114,14 @@ auto = scene(apart, PAIR_RGB)
 gpu_auto, _ = render(*auto[:4])
 check(not auto[0].HasOverlappingSpheres() and not auto[0].GetExactOverlapInUse()
       and auto[0].GetNumberOfSorts() == 1, "AUTOMATIC sorts touching spheres")
+shallow = np.array([[0.0, 0.0, 0.0], [1.9, 0.0, 0.0]])  # penetrating by 0.1 radius
+auto = scene(shallow, PAIR_RGB)
+render(*auto[:4])
+check(not auto[0].GetExactOverlapInUse() and auto[0].GetNumberOfSorts() == 1,
+      "AUTOMATIC sorts spheres penetrating by less than OverlapTolerance (0.25)")
+auto[0].SetOverlapTolerance(0.0)
+render(*auto[:4])
+check(auto[0].GetExactOverlapInUse(), "OverlapTolerance 0: the lists for any overlap")
 lists = scene(apart, PAIR_RGB, mode=M.EXACT_OVERLAP)
 gpu_lists, _ = render(*lists[:4])
 check(error(gpu_auto, gpu_lists).max() <= 1, "separate spheres: lists and sort agree (%d/255)"
@@ -142,20 +151,27 @@ for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
     check(lists.GetLastNumberOfIncompletePixels() == 0, "cluster: no incomplete pixel")
     check(lists.GetLastNumberOfFragments() > 16 * 200, "cluster: lists deeper than 16 exist")
 
-    # 4. a small budget: bands, the same image (400 x 400: the 1 MiB holds 10 k of 98 k)
+    # 4. a small budget: bands, the same image (400 x 400: 2 MiB hold 20 k of 98 k fragments)
     cluster[3].SetSize(400, 400)
     cluster[3].Render()
     gpu = grab_image(cluster[3])[:, :3]
-    cluster[0].SetFragmentListMemory(1.0)
+    cluster[0].SetFragmentListMemory(2.0)
     cluster[3].Render()
     banded = grab_image(cluster[3])[:, :3]
-    print("1 MiB: %d bands, max %d/255 from the unbanded image"
+    print("2 MiB: %d bands, max %d/255 from the unbanded image"
           % (lists.GetLastNumberOfBands(), error(banded, gpu).max()))
-    check(lists.GetLastNumberOfBands() > 1, "1 MiB: drawn in bands")
-    check(error(banded, gpu).max() <= 1, "1 MiB: the same image")
-    check(lists.GetLastNumberOfDroppedFragments() == 0, "1 MiB: nothing dropped")
+    check(lists.GetLastNumberOfBands() > 1, "2 MiB: drawn in bands")
+    check(error(banded, gpu).max() <= 1, "2 MiB: the same image")
+    check(lists.GetLastNumberOfDroppedFragments() == 0, "2 MiB: nothing dropped")
     check(not cluster[4].errors and not cluster[4].warnings,
           "cluster: no messages (%s)" % cluster[4].text)
+    cluster[0].SetFragmentListMemory(1.0)
+    cluster[3].Render()
+    fallback = grab_image(cluster[3])[:, :3]
+    check(any("Drawn as sorted spheres instead" in e for e in cluster[4].errors)
+          and not cluster[0].GetExactOverlapInUse() and cluster[0].GetNumberOfSorts() == 1
+          and error(fallback, gpu).max() < 60 and (fallback != 255).any(),
+          "1 MiB: an error, the sorted spheres drawn instead")
 
 # 5. more spheres overlapping at one point than the resolve holds: a warning, a sane image
 onion = np.zeros((24, 3)) + rng.normal(scale=0.01, size=(24, 3))
