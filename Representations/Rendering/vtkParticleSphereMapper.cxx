@@ -67,6 +67,7 @@ public:
   double MinRadius = 0.0; // smallest drawn radius (MC)
   bool FocalPointShift = false; // positions uploaded relative to the camera's focal point
   std::string LastShiftWarning;
+  std::string LastPrecisionWarning;
   vtkIdType NumberOfPoints = 0;
   vtkMTimeType PrepareTime = 0;
   // what the prepared particles were computed from (see PrepareParticles)
@@ -1030,6 +1031,35 @@ void vtkParticleSphereMapper::UpdateFocalPointShift()
     internals.FocalPointShift = false;
   }
   this->WarnOnChange(warning, internals.LastShiftWarning);
+
+  // What no origin fixes: VTK composes the camera and actor matrices in double, which resolves
+  // 2^-52 of the largest coordinate (measured from outside: 1.6 % of a radius of 1e-6 at 1e8, an
+  // edge pixel off by 160/255). Supported: that step within 1e-3 of the smallest radius, i.e.
+  // the largest coordinate up to about 4.5e12 smallest radii.
+  double largest = 0.0;
+  if (b[0] <= b[1])
+  {
+    for (int k = 0; k < 6; ++k)
+    {
+      largest = std::max(largest, std::abs(b[k]));
+    }
+  }
+  const double doubleStep = largest * std::ldexp(1.0, -52);
+  const double smallest = internals.MinRadius * std::abs(this->RadiusScaleFactor);
+  std::string precision;
+  if (smallest > 0.0 && doubleStep > 1e-3 * smallest)
+  {
+    std::ostringstream text;
+    text << "The particles lie up to " << largest << " from the origin with radii down to "
+         << smallest << " (" << largest / smallest
+         << " radii): beyond double precision for VTK's camera and actor matrices, which resolve "
+         << doubleStep << " there, " << 100.0 * doubleStep / smallest
+         << " % of the smallest radius, so the smallest spheres' edges can be off by that much. "
+            "Supported: up to about 4.5e12 radii from the origin. Translate the data towards the "
+            "origin (e.g. with a Transform filter) to draw them exactly.";
+    precision = text.str();
+  }
+  this->WarnOnChange(precision, internals.LastPrecisionWarning);
 }
 
 //------------------------------------------------------------------------------

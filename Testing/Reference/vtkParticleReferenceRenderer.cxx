@@ -10,6 +10,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkParticleMemory.h"
 #include "vtkParticleReferenceEmissionAbsorption.h"
 #include "vtkParticleReferenceFrame.h"
 #include "vtkParticleReferenceRays.h"
@@ -256,7 +257,6 @@ bool vtkParticleReferenceRenderer::Render()
     this->InsideImage->SetNumberOfTuples(0);
     this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
     this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
-  this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
     return false;
   };
   if (!this->Renderer)
@@ -524,7 +524,18 @@ bool vtkParticleReferenceRenderer::Render()
   this->Renderer->GetBackground(background);
   const double backgroundAlpha = this->Renderer->GetBackgroundAlpha();
 
-  // ---- outputs
+  // ---- outputs: 11 doubles, an id, a flag and the cone bits per pixel
+  {
+    const double bytes = static_cast<double>(width) * height *
+      (11.0 * sizeof(double) + sizeof(vtkIdType) + 1.0 + sizeof(std::uint32_t));
+    std::string why;
+    if (!vtkParticleMemory::CanAllocate(bytes, why))
+    {
+      const std::string text = "The reference images of " + std::to_string(width) + " x " +
+        std::to_string(height) + " pixels: " + why + ".";
+      return fail(text.c_str());
+    }
+  }
   this->ColorImage = NewImage(width, height, 4, "Color");
   this->DepthImage = NewImage(width, height, 1, "Depth");
   this->ViewDepthImage = NewImage(width, height, 1, "ViewDepth");

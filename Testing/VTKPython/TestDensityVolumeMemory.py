@@ -8,6 +8,9 @@ Y GB free"), the particles are drawn (without ambient occlusion: the same pictur
 pass), and a second render neither retries nor repeats the message. Then a sane resolution on the
 same pass builds the volume again.
 
+The reference renderer's images too: 200000 x 200000 pixels (about 4 TB) are an error naming the
+size, Render() returns False with empty images, and a sane size renders afterwards.
+
 usage: python3 TestDensityVolumeMemory.py
 """
 import sys
@@ -67,5 +70,31 @@ for mode, name in ((0, "CPU"), (1, "GPU")):
     ao.GetDensityVolume().SetMaximumResolution(256)
     window.Render()
     check(ao.GetNumberOfVolumeBuilds() == 1, "%s build: a sane resolution builds no volume" % name)
+
+# the reference renderer's images
+reference = pr.vtkParticleReferenceRenderer()
+reference_messages = Messages(reference)
+mapper = pr.vtkParticleSphereMapper()
+mapper.SetInputData(particles)
+mapper.SetRadius(0.3)
+actor = vtkActor()
+actor.SetMapper(mapper)
+renderer = vtkRenderer()
+renderer.AddActor(actor)
+window = offscreen_window(renderer, (64, 64))
+renderer.ResetCamera()
+window.Render()
+reference.SetRenderer(renderer)
+reference.SetActor(actor)
+reference.SetImageSize(200000, 200000)
+rendered = reference.Render()
+print("reference at 200000 x 200000: %s %s" % (rendered, reference_messages.errors))
+check(not rendered and reference.GetColorImage().GetNumberOfPoints() == 0,
+      "reference: a huge image is refused")
+check(any("200000 x 200000" in e and "free" in e for e in reference_messages.errors),
+      "reference: the error names the size: %s" % reference_messages.errors)
+reference.SetImageSize(32, 32)
+check(reference.Render() and reference.GetColorImage().GetNumberOfPoints() == 32 * 32,
+      "reference: a sane size renders afterwards")
 
 sys.exit(finish())
