@@ -712,14 +712,7 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
   opaqueDepth->Activate();
 
   vtkOpenGLHelper& cellBO = internals.Translucent;
-  internals.Building = Variant::Translucent;
-  // Theta_a = 1 particles are drawn opaque unless the actor or its colours lower the opacity
-  // (scalar colours with alpha < 1: asked once per frame, used here and by the shader uniforms)
-  internals.ScalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
-  const bool opaqueDrawnSeparately =
-    act->GetProperty()->GetOpacity() >= 1.0 && !internals.ScalarAlpha;
-  internals.CullMode = opaqueDrawnSeparately ? CullTranslucentOnly : CullAllVisible;
-  this->UpdateShaders(cellBO, ren, act);
+  this->ReadyTranslucentVariant(ren, act, false);
   if (cellBO.Program)
   {
     if (sorted)
@@ -771,6 +764,20 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     // return 0 while the GPU is still working
     internals.TimingsPending = true;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::ReadyTranslucentVariant(vtkRenderer* ren, vtkActor* act, bool lists)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Building = lists ? Variant::TranslucentList : Variant::Translucent;
+  // Theta_a = 1 particles are drawn opaque unless the actor or its colours lower the opacity
+  // (scalar colours with alpha < 1: asked once per frame, used here and by the shader uniforms)
+  internals.ScalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
+  const bool opaqueDrawnSeparately =
+    act->GetProperty()->GetOpacity() >= 1.0 && !internals.ScalarAlpha;
+  internals.CullMode = opaqueDrawnSeparately ? CullTranslucentOnly : CullAllVisible;
+  this->UpdateShaders(lists ? internals.TranslucentList : internals.Translucent, ren, act);
 }
 
 //------------------------------------------------------------------------------
@@ -894,12 +901,7 @@ bool vtkTransparentSphereMapper::RenderTranslucentLists(
   lists->SetHollowFraction2(this->HollowFraction * this->HollowFraction);
 
   vtkOpenGLHelper& cellBO = internals.TranslucentList;
-  internals.Building = Variant::TranslucentList;
-  internals.ScalarAlpha = this->Superclass::HasTranslucentPolygonalGeometry();
-  const bool opaqueDrawnSeparately =
-    act->GetProperty()->GetOpacity() >= 1.0 && !internals.ScalarAlpha;
-  internals.CullMode = opaqueDrawnSeparately ? CullTranslucentOnly : CullAllVisible;
-  this->UpdateShaders(cellBO, ren, act);
+  this->ReadyTranslucentVariant(ren, act, true);
   if (cellBO.Program)
   {
     if (this->CollectTimings)

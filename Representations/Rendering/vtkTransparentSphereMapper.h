@@ -361,6 +361,12 @@ protected:
   bool UpdateSortedOrder(vtkRenderer* ren, vtkActor* act, vtkIdType count);
 
   /**
+   * Select the translucent variant (sorted glyphs, or list appends), its culling and scalar
+   * alpha for this frame, and build and bind its program.
+   */
+  void ReadyTranslucentVariant(vtkRenderer* ren, vtkActor* act, bool lists);
+
+  /**
    * The translucent stage with exact overlaps: fragments to per-pixel lists, resolved into the
    * front-to-back target. False when the lists could not be made (nothing drawn).
    */
