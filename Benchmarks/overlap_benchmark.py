@@ -273,8 +273,8 @@ def plot(rows):
         t = [next(r["frame_s"] for r in rows if r["scene"] == s and r["mode"] == mode)
              for s in scenes_]
         axes[0].bar(x + (k - 0.5) * 0.38, t, 0.38, label=mode)
-        e = [next((r.get("max_error", np.nan) for r in rows if r["scene"] == s and r["mode"] == mode),
-                  np.nan) for s in scenes_]
+        e = [next((r.get("max_error", np.nan) for r in rows
+                   if r["scene"] == s and r["mode"] == mode), np.nan) for s in scenes_]
         axes[1].bar(x + (k - 0.5) * 0.38, [np.nan if v == "" else v for v in e], 0.38, label=mode)
     for ax, title in ((axes[0], "frame time, 1024x768, orbiting [s]"),
                       (axes[1], "max error vs exact reference, 512x384 [1/255]")):

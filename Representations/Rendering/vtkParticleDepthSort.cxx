@@ -76,9 +76,10 @@ public:
   vtkOpenGLRenderTimer Timer;
   bool Timed = false;
   // keys, indices (an element array), scratch keys (+ tail), scratch indices
-  vtkSmartPointer<vtkOpenGLBufferObject> Buffers[4] = { vtkSmartPointer<vtkOpenGLBufferObject>::New(),
+  vtkSmartPointer<vtkOpenGLBufferObject> Buffers[4] = {
     vtkSmartPointer<vtkOpenGLBufferObject>::New(), vtkSmartPointer<vtkOpenGLBufferObject>::New(),
-    vtkSmartPointer<vtkOpenGLBufferObject>::New() };
+    vtkSmartPointer<vtkOpenGLBufferObject>::New(), vtkSmartPointer<vtkOpenGLBufferObject>::New()
+  };
   bool BuiltCoalescedWrites = true;
 
   std::vector<std::pair<vtkParticleComputeProgram*, const char*>> Programs()

@@ -219,6 +219,8 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
     internals.HeadBytes = headBytes;
   }
   internals.Width = width;
+  auto allocatedBytes = [&]()
+  { return 2.0 * static_cast<double>(headBytes) + internals.Capacity * NodeBytes; };
   auto allocateNodes = [&](long long capacity)
   {
     capacity = std::max<long long>(1, std::min(capacity, maximumCapacity));
@@ -245,7 +247,7 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
       return false;
     }
   }
-  this->AllocatedBytes = 2.0 * static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
+  this->AllocatedBytes = allocatedBytes();
 
   // the resolve programs (first and second pass), for the density model
   vtkParticleComputeProgram* resolve = internals.Resolve;
@@ -304,7 +306,7 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
         grown = true;
         if (allocateNodes(count + count / 4 + 1024))
         {
-          this->AllocatedBytes = 2.0 * static_cast<double>(headBytes) + internals.Capacity * NodeBytes;
+          this->AllocatedBytes = allocatedBytes();
           bands.push_back(band);
           continue;
         }

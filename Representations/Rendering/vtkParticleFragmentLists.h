@@ -18,7 +18,8 @@
  *
  * Memory is bounded: two per-pixel arrays (heads and the second pass's pixels, 4 bytes each)
  * and a node pool of 40 bytes per fragment within MemoryBudget (MiB, default 256: 6.6 million
- * fragments, 8.3 per pixel at 1024x768). The pool grows to the count of the last overflowing frame within the budget; when
+ * fragments, 8.3 per pixel at 1024x768). The pool grows to the count of the last overflowing
+ * frame within the budget; when
  * one frame's fragments do not fit, the viewport is drawn in horizontal bands (the particles
  * drawn once per band, scissored), split in halves until each fits; a single row that does not
  * fit is composited with the fragments that did, with a warning. The resolve is two compute

@@ -594,10 +594,7 @@ void vtkTransparentSphereMapper::SetMapperShaderParameters(
         this->GetEffectiveColumnLayers()));
     program->SetUniformi(
       "prOpaqueDepth", internals.Target->GetOpaqueDepthTexture()->GetTextureUnit());
-    if (&cellBO == &internals.TranslucentList)
-    {
-      internals.Lists->PrepareProgram(program);
-    }
+    // (the list variant's storage is bound per band by RenderTranslucentLists' draw)
   }
 }
 
@@ -767,7 +764,8 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
 }
 
 //------------------------------------------------------------------------------
-void vtkTransparentSphereMapper::ReadyTranslucentVariant(vtkRenderer* ren, vtkActor* act, bool lists)
+void vtkTransparentSphereMapper::ReadyTranslucentVariant(
+  vtkRenderer* ren, vtkActor* act, bool lists)
 {
   vtkInternals& internals = *this->Internals;
   internals.Building = lists ? Variant::TranslucentList : Variant::Translucent;

@@ -92,9 +92,10 @@ for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
                     camera.SetClippingRange(2.9, 10.0)  # the near plane at z = 0.1
             gpu, ref = render(*exact[:4])
             e = error(gpu, ref)
+            lists = exact[0].GetFragmentLists()
             print("%s: exact lists max %d/255, mean %.3f/255, %d fragments, %d bands"
-                  % (what, e.max(), e.mean(), exact[0].GetFragmentLists().GetLastNumberOfFragments(),
-                     exact[0].GetFragmentLists().GetLastNumberOfBands()))
+                  % (what, e.max(), e.mean(), lists.GetLastNumberOfFragments(),
+                     lists.GetLastNumberOfBands()))
             check(exact[0].GetExactOverlapInUse(), what + ": the lists are used")
             check(e.max() <= 2, what + ": exact lists within 2/255 of the reference")
             check((ref != 26).any(axis=1).sum() > 1000, what + ": the spheres cover the view")
