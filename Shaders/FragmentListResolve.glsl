@@ -333,7 +333,7 @@ void main()
 
 #ifndef PR_LIST_DEFERRED
   // a longer list: left to the second pass, which works in rounds (a program with that code
-  // costs several times more for every pixel on some implementations, llvmpipe among them)
+  // costs more for every pixel on some implementations, llvmpipe among them)
   uint slot = atomicAdd(prListCounters[2], 1u);
   prListDeferred[slot] = uint(pixel.y * prListWidth + pixel.x);
 }

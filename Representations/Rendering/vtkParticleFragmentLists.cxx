@@ -3,21 +3,19 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleMemory.h"
 #include "vtkParticleShaders.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <cmath>
-#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 

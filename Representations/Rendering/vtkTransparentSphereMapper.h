@@ -75,7 +75,7 @@
  * (|p_i - p_j| < s (r_i + r_j - t min(r_i, r_j)), s = RadiusScaleFactor; checked with
  * vtkStaticPointLocator when the positions, radii or opacities change) and the sort otherwise.
  * Where spheres do not overlap both paths agree; early termination applies to the sorted path
- * only. On llvmpipe the lists cost 1.5-6x the sorted path (Benchmarks/README.md).
+ * only. On llvmpipe the lists cost 1.8-5.8x the sorted path (Benchmarks/README.md).
  *
  * Compositing with other geometry: the translucent particles are accumulated front to back in
  * an off-screen float buffer. Each ray segment ends at the opaque depth (a copy of the depth

@@ -18,9 +18,8 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish, grab_image, offscreen_window, particles_from
+from prVTKTesting import Messages, actor_view, check, finish, grab_image, particles_from
 from vtkmodules.vtkCommonCore import VTK_ID_MAX
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
 particles = particles_from(np.random.default_rng(2).random((5000, 3)) * 20.0)
@@ -30,10 +29,7 @@ def scene(with_ao, mode=0):
     mapper = pr.vtkParticleSphereMapper()
     mapper.SetInputData(particles)
     mapper.SetRadius(0.6)
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
+    _, renderer, window = actor_view(mapper)
     ao = None
     if with_ao:
         ao = pr.vtkDensityVolumeAOPass()
@@ -44,7 +40,6 @@ def scene(with_ao, mode=0):
         volume.SetMaximumResolution(4096)
         volume.SetMaximumVoxelCount(VTK_ID_MAX)
         renderer.SetPass(ao)
-    window = offscreen_window(renderer)
     renderer.ResetCamera()
     return window, ao
 
@@ -77,11 +72,7 @@ reference_messages = Messages(reference)
 mapper = pr.vtkParticleSphereMapper()
 mapper.SetInputData(particles)
 mapper.SetRadius(0.3)
-actor = vtkActor()
-actor.SetMapper(mapper)
-renderer = vtkRenderer()
-renderer.AddActor(actor)
-window = offscreen_window(renderer, (64, 64))
+actor, renderer, window = actor_view(mapper, (64, 64))
 renderer.ResetCamera()
 window.Render()
 reference.SetRenderer(renderer)

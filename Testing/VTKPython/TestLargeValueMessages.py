@@ -17,8 +17,7 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish, offscreen_window, particles_from
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
+from prVTKTesting import Messages, actor_view, check, finish, grab_image, particles_from
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 xyz = np.random.default_rng(4).random((100, 3)) * 10.0
@@ -33,11 +32,7 @@ mapper = pr.vtkParticleSphereMapper()
 mapper.SetInputData(data)
 mapper.SetRadiusArrayName("radius")
 messages = Messages(mapper)
-actor = vtkActor()
-actor.SetMapper(mapper)
-renderer = vtkRenderer()
-renderer.AddActor(actor)
-window = offscreen_window(renderer, (100, 100))
+actor, renderer, window = actor_view(mapper, (100, 100))
 renderer.ResetCamera()
 window.Render()
 window.Render()
@@ -59,11 +54,7 @@ for centre, expected in ((1e8, True), (1e6, False)):
     tiny_mapper.SetInputData(tiny)
     tiny_mapper.SetRadius(1e-6)
     tiny_messages = Messages(tiny_mapper)
-    tiny_actor = vtkActor()
-    tiny_actor.SetMapper(tiny_mapper)
-    tiny_renderer = vtkRenderer()
-    tiny_renderer.AddActor(tiny_actor)
-    tiny_window = offscreen_window(tiny_renderer, (64, 64))
+    _, tiny_renderer, tiny_window = actor_view(tiny_mapper, (64, 64))
     camera = tiny_renderer.GetActiveCamera()
     camera.SetPosition(centre + 2e-7, 1e-7, 3e-7)  # the eye inside the sphere
     camera.SetFocalPoint(centre - 5e-7, 0.0, -1e-6)
@@ -73,7 +64,6 @@ for centre, expected in ((1e8, True), (1e6, False)):
     print("centre %g: %s" % (centre, tiny_messages.warnings))
     check(said == expected, "centre %g, radius 1e-6: double-precision warning %s"
           % (centre, "given" if expected else "not given"))
-    from prVTKTesting import grab_image
     covered = (grab_image(tiny_window)[:, :3].max(axis=1) > 0).sum()
     check(covered == 64 * 64, "centre %g: the eye inside the sphere sees it everywhere (%d px)"
           % (centre, covered))

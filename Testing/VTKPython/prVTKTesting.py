@@ -110,3 +110,14 @@ def offscreen_window(renderer, size=(200, 200), samples=0):
     window.SetSize(*size)
     window.AddRenderer(renderer)
     return window
+
+
+def actor_view(mapper, size=(200, 200)):
+    """An actor with `mapper` alone in a renderer of an off-screen window of `size` (no
+    multisampling): returns (actor, renderer, window)."""
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    return actor, renderer, offscreen_window(renderer, size)
