@@ -31,21 +31,8 @@ vtkStandardNewMacro(vtkDensityVolumeAOPass);
 class vtkDensityVolumeAOPass::vtkInternals
 {
 public:
-  explicit vtkInternals(vtkDensityVolumeAOPass* self)
-    : Hooks(self)
-  {
-  }
   vtkSmartPointer<vtkParticleDensityVolume> Volume;
   unsigned long VolumeProgressTag = 0;
-  vtkNew<vtkTextureObject> Texture;
-  // what the volume was built from
-  std::vector<double> BuiltState;
-  bool TextureValid = false;
-  bool Attempted = false; // a build was attempted for BuiltState
-  // the renderer being drawn (between PreRender and PostRender)
-  vtkRenderer* Renderer = nullptr;
-  // the shader hooks this pass fills (warns once per missing hook)
-  vtkParticleShaderHooks Hooks;
 
   // progress of the build under way (ProgressThreshold): its text
   std::string ProgressText;
@@ -89,7 +76,7 @@ private:
 
 //------------------------------------------------------------------------------
 vtkDensityVolumeAOPass::vtkDensityVolumeAOPass()
-  : Internals(new vtkInternals(this))
+  : Internals(new vtkInternals)
 {
   this->SetDensityVolume(vtkSmartPointer<vtkParticleDensityVolume>::New());
 }
@@ -109,7 +96,7 @@ void vtkDensityVolumeAOPass::SetDensityVolume(vtkParticleDensityVolume* volume)
   internals.Volume = volume;
   internals.VolumeProgressTag = volume->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkDensityVolumeAOPass::ForwardVolumeProgress);
-  internals.Attempted = false; // a new volume object: build it
+  this->ForgetBuild(); // a new volume object: build it
   this->Modified();
 }
 
@@ -151,34 +138,16 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
 {
   vtkInternals& internals = *this->Internals;
   // the particle props and what their volume depends on
-  std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> particles;
+  ParticleProps particles;
   std::vector<double> state;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    vtkParticleSphereMapper* mapper =
-      actor ? vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-    if (!mapper || !mapper->GetInput() || !actor->GetVisibility())
-    {
-      continue;
-    }
-    particles.emplace_back(actor, mapper);
-    state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(mapper)));
-    state.push_back(static_cast<double>(mapper->GetParticleGeometryTime()));
-    state.push_back(mapper->GetRadiusScaleVC(actor));
-    vtkMatrix4x4* m = actor->GetMatrix();
-    state.insert(state.end(), m->GetData(), m->GetData() + 16);
-  }
+  this->GatherParticleProps(s, particles, state);
   state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(internals.Volume.Get())));
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
   state.push_back(this->GenerationMode);
-  if (state == internals.BuiltState && internals.Attempted)
+  if (!this->NeedsBuild(state))
   {
     return; // built already (or failed for the same input: no retry, no repeated message)
   }
-  internals.BuiltState = state;
-  internals.Attempted = true;
-  internals.TextureValid = false;
   if (particles.empty())
   {
     vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
@@ -196,7 +165,7 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   const vtkProgressScope progressScope(this, volume->GetNumberOfParticles());
   vtkOpenGLRenderWindow* ctx =
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  vtkTextureObject* texture = internals.Texture;
+  vtkTextureObject* texture = this->VolumeTexture;
   texture->SetMinificationFilter(vtkTextureObject::Linear);
   texture->SetMagnificationFilter(vtkTextureObject::Linear);
   // outside the volume there is nothing: density 0
@@ -211,35 +180,8 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   {
     return; // the volume said why; no ambient occlusion
   }
-  internals.TextureValid = true;
+  this->VolumeValid = true;
   ++this->NumberOfVolumeBuilds;
-}
-
-//------------------------------------------------------------------------------
-void vtkDensityVolumeAOPass::Render(const vtkRenderState* s)
-{
-  this->NumberOfRenderedProps = 0;
-  if (!this->DelegatePass)
-  {
-    vtkWarningMacro(<< "No delegate pass: nothing is rendered.");
-    return;
-  }
-  this->UpdateVolume(s);
-  vtkInternals& internals = *this->Internals;
-  if (internals.TextureValid)
-  {
-    internals.Texture->Activate();
-    internals.Renderer = s->GetRenderer();
-    this->PreRender(s);
-  }
-  this->DelegatePass->Render(s);
-  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-  if (internals.TextureValid)
-  {
-    this->PostRender(s);
-    internals.Texture->Deactivate();
-    internals.Renderer = nullptr;
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -250,7 +192,7 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
   {
     return true;
   }
-  vtkParticleShaderHooks& hooks = this->Internals->Hooks;
+  vtkParticleShaderHooks& hooks = *this->Hooks;
   hooks.Begin(vertexShader, geometryShader, fragmentShader);
   using Hooks = vtkParticleShaderHooks;
   const std::string uniforms = "uniform sampler3D prDensityVolume;\n"
@@ -313,51 +255,28 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
   vtkInternals& internals = *this->Internals;
-  if (!vtkParticleSphereMapper::SafeDownCast(mapper) || !internals.TextureValid ||
+  if (!vtkParticleSphereMapper::SafeDownCast(mapper) || !this->VolumeValid ||
     !program->IsUniformUsed("prDensityVolume"))
   {
     return true;
   }
-  vtkCamera* camera = internals.Renderer ? internals.Renderer->GetActiveCamera() : nullptr;
-  if (!camera)
+  // view -> world -> volume texture coordinates, in double; the rotation for normals
+  vtkParticleDensityVolume* volume = internals.Volume;
+  const int* dims = volume->GetDimensions();
+  const double scale[3] = { 1.0 / (dims[0] * volume->GetVoxelSize()),
+    1.0 / (dims[1] * volume->GetVoxelSize()), 1.0 / (dims[2] * volume->GetVoxelSize()) };
+  if (!this->SetViewToGridUniform(program, "prViewToVolume", volume->GetOrigin(), scale))
   {
     return true;
   }
-  // view -> world -> volume texture coordinates, in double
-  vtkParticleDensityVolume* volume = internals.Volume;
-  vtkNew<vtkMatrix4x4> viewToWorld;
-  vtkMatrix4x4::Invert(camera->GetModelViewTransformMatrix(), viewToWorld);
-  vtkNew<vtkMatrix4x4> worldToVolume;
-  const double* origin = volume->GetOrigin();
-  const int* dims = volume->GetDimensions();
-  for (int k = 0; k < 3; ++k)
-  {
-    const double size = dims[k] * volume->GetVoxelSize();
-    worldToVolume->SetElement(k, k, 1.0 / size);
-    worldToVolume->SetElement(k, 3, -origin[k] / size);
-  }
-  vtkNew<vtkMatrix4x4> viewToVolume;
-  vtkMatrix4x4::Multiply4x4(worldToVolume, viewToWorld, viewToVolume);
-  vtkNew<vtkMatrix4x4> transposed; // vtkShaderProgram uploads row-major data as columns
-  vtkMatrix4x4::Transpose(viewToVolume, transposed);
-  program->SetUniformMatrix("prViewToVolume", transposed);
-  // the rotation part, for normals (row-major data uploaded as columns: transposed)
-  float rotation[9];
-  for (int row = 0; row < 3; ++row)
-  {
-    for (int col = 0; col < 3; ++col)
-    {
-      rotation[col * 3 + row] = static_cast<float>(viewToWorld->GetElement(row, col));
-    }
-  }
-  program->SetUniformMatrix3x3("prViewToWorld", rotation);
+  this->SetViewToWorldRotationUniform(program, "prViewToWorld");
   const float fetchStep[3] = {
     static_cast<float>(this->FetchDistance / dims[0]),
     static_cast<float>(this->FetchDistance / dims[1]),
     static_cast<float>(this->FetchDistance / dims[2]),
   };
   program->SetUniform3f("prFetchStep", fetchStep);
-  program->SetUniformi("prDensityVolume", internals.Texture->GetTextureUnit());
+  program->SetUniformi("prDensityVolume", this->VolumeTexture->GetTextureUnit());
   program->SetUniformf("prFetchDistance",
     static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
   program->SetUniformf("prStrength", static_cast<float>(this->Strength));
@@ -381,9 +300,6 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
 void vtkDensityVolumeAOPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Internals->Volume->ReleaseGraphicsResources(w);
-  this->Internals->Texture->ReleaseGraphicsResources(w);
-  this->Internals->TextureValid = false;
-  this->Internals->Attempted = false;
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
@@ -397,6 +313,5 @@ void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
   os << indent << "FetchDistance: " << this->FetchDistance << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
-  os << indent << "NumberOfVolumeBuilds: " << this->NumberOfVolumeBuilds << "\n";
   os << indent << "ProgressThreshold: " << this->ProgressThreshold << "\n";
 }

@@ -25,9 +25,9 @@
  *
  * The mappers know nothing about AO beyond their //PR::AmbientOcclusion::Impl hook: the pass
  * fills it through vtkOpenGLRenderPass::PostReplaceShaderValues and binds the volume and the
- * view-to-volume matrix in SetShaderParameters. It is a vtkImageProcessingPass (VTK's "render
- * pass with a delegate") whose delegate (e.g. vtkRenderStepsPass; in ParaView the Particle Render
- * View's pass chain) renders the scene directly, without an intermediate image.
+ * view-to-volume matrix in SetShaderParameters. Like every vtkParticleVolumeAOPass it is a
+ * render pass with a delegate (e.g. vtkRenderStepsPass; in ParaView the Particle Render View's
+ * pass chain) that renders the scene directly, without an intermediate image.
  *
  * The volume is rebuilt only when the particles' positions or radii, the set of particle props,
  * their matrices or the pass's settings change -- never when only the camera moves
@@ -42,19 +42,18 @@
 #ifndef vtkDensityVolumeAOPass_h
 #define vtkDensityVolumeAOPass_h
 
-#include "vtkImageProcessingPass.h"
 #include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkParticleVolumeAOPass.h"
 
 class vtkParticleDensityVolume;
 
-class VTKPARTICLERENDERING_EXPORT vtkDensityVolumeAOPass : public vtkImageProcessingPass
+class VTKPARTICLERENDERING_EXPORT vtkDensityVolumeAOPass : public vtkParticleVolumeAOPass
 {
 public:
   static vtkDensityVolumeAOPass* New();
-  vtkTypeMacro(vtkDensityVolumeAOPass, vtkImageProcessingPass);
+  vtkTypeMacro(vtkDensityVolumeAOPass, vtkParticleVolumeAOPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   enum RetrievalModes
@@ -126,11 +125,6 @@ public:
   void SetDensityVolume(vtkParticleDensityVolume* volume);
   ///@}
 
-  /**
-   * Number of density-volume builds so far.
-   */
-  vtkGetMacro(NumberOfVolumeBuilds, vtkIdType);
-
   ///@{
   /**
    * A volume build over at least ProgressThreshold particles (all particle props together;
@@ -162,14 +156,13 @@ protected:
   /**
    * Rebuild the volume and its texture when the particles or the settings changed.
    */
-  void UpdateVolume(const vtkRenderState* s);
+  void UpdateVolume(const vtkRenderState* s) override;
 
   int RetrievalMode = PER_FRAGMENT;
   int GenerationMode = CPU_GENERATION;
   int LastGenerationMode = CPU_GENERATION;
   double FetchDistance = 0.5;
   double Strength = 1.0;
-  vtkIdType NumberOfVolumeBuilds = 0;
   vtkIdType ProgressThreshold = vtkIdType(1) << 20;
 
 private:

@@ -1,0 +1,745 @@
+#include "vtkParticleAmbientVolume.h"
+
+#include "vtkActor.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkParticleMemory.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
+#include "vtkTransparentSphereMapper.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+vtkStandardNewMacro(vtkParticleAmbientVolume);
+
+namespace
+{
+// 16-point Gauss-Legendre nodes and weights on [-1, 1] (positive half; symmetric)
+const double GaussNodes[8] = { 0.0950125098376374, 0.2816035507792589, 0.4580167776572274,
+  0.6178762444026438, 0.7554044083550030, 0.8656312023878318, 0.9445750230732326,
+  0.9894009349916499 };
+const double GaussWeights[8] = { 0.1894506104550685, 0.1826034150449236, 0.1691565193950025,
+  0.1495959888165767, 0.1246289712555339, 0.0951585116824928, 0.0622535239386479,
+  0.0271524594117541 };
+
+// integral of f over [a, b] with the 16-point rule
+template <typename F>
+double Integrate(F f, double a, double b)
+{
+  const double mid = 0.5 * (a + b);
+  const double half = 0.5 * (b - a);
+  double sum = 0.0;
+  for (int i = 0; i < 8; ++i)
+  {
+    sum += GaussWeights[i] * (f(mid - half * GaussNodes[i]) + f(mid + half * GaussNodes[i]));
+  }
+  return sum * half;
+}
+
+int NextPowerOfTwo(int n)
+{
+  int p = 1;
+  while (p < n && p < (1 << 30))
+  {
+    p <<= 1;
+  }
+  return p;
+}
+
+int PowerOfTwoAtMost(int n)
+{
+  int p = 1;
+  while (2 * p <= n)
+  {
+    p <<= 1;
+  }
+  return p;
+}
+
+// one sphere prepared for voxelisation (world coordinates)
+struct Sphere
+{
+  double Center[3];
+  double Radius;
+  // extinction per voxel edge of a full voxel (w = 1) and the emission it carries
+  double Sigma;
+  double Color[3];
+};
+}
+
+//------------------------------------------------------------------------------
+class vtkParticleAmbientVolume::vtkInternals
+{
+public:
+  std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> Props;
+  std::vector<std::vector<float>> Levels;
+};
+
+//------------------------------------------------------------------------------
+vtkParticleAmbientVolume::vtkParticleAmbientVolume()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticleAmbientVolume::~vtkParticleAmbientVolume()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+double vtkParticleAmbientVolume::MeanDiscOpacity(
+  double theta, int densityModel, double hollowFraction)
+{
+  if (!(theta > 0.0))
+  {
+    return 0.0; // also NaN
+  }
+  if (theta >= 1.0)
+  {
+    return 1.0;
+  }
+  const double depth = -std::log1p(-theta); // optical depth of the most opaque ray
+  const double f = std::min(std::max(hollowFraction, 0.0), 0.999);
+  if (densityModel == vtkTransparentSphereMapper::CONSTANT_DENSITY && f == 0.0)
+  {
+    // <Theta> = 2 int_0^1 (1 - e^{-T s}) s ds = 1 - 2 (1 - e^{-T} (1 + T)) / T^2
+    if (depth < 1e-4)
+    {
+      return depth * (2.0 / 3.0) - depth * depth * 0.25;
+    }
+    return 1.0 - 2.0 * (-std::expm1(-depth) - depth * std::exp(-depth)) / (depth * depth);
+  }
+  // Over the disc, with s = sqrt(1 - u^2) the chord's half-length (u the impact parameter):
+  // 2 u du = 2 s ds, and the path integrals are polynomials in s. Outside the hollow core's
+  // shadow (s < s0 = sqrt(1 - f^2)) the integrand is smooth; inside it q = sqrt(s^2 - s0^2), the
+  // core's half-chord, makes it smooth again (2 s ds = 2 q dq, q in [0, f]).
+  const double maximum = vtkTransparentSphereMapper::GetMaximumPathIntegral(densityModel, f);
+  auto opacity = [&](double half, double coreHalf) {
+    const double u2 = std::max(0.0, 1.0 - half * half);
+    double path = 0.0;
+    if (densityModel == vtkTransparentSphereMapper::CONSTANT_DENSITY)
+    {
+      path = 2.0 * (half - coreHalf);
+    }
+    else
+    {
+      // rho = |x - p|^2 = u^2 + t^2 along the chord
+      path = 2.0 * (u2 * half + half * half * half / 3.0) -
+        2.0 * (u2 * coreHalf + coreHalf * coreHalf * coreHalf / 3.0);
+    }
+    return -std::expm1(-depth * path / maximum);
+  };
+  const double s0 = std::sqrt(1.0 - f * f);
+  double result = Integrate([&](double s) { return opacity(s, 0.0) * 2.0 * s; }, 0.0, s0);
+  if (f > 0.0)
+  {
+    result += Integrate(
+      [&](double q) { return opacity(std::sqrt(s0 * s0 + q * q), q) * 2.0 * q; }, 0.0, f);
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::SetUpGrid(
+  const double bounds[6], double meanRadius, int deviceAxisLimit)
+{
+  double extent[3];
+  double longest = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    extent[k] = bounds[2 * k + 1] - bounds[2 * k];
+    longest = std::max(longest, extent[k]);
+  }
+  if (!(longest > 0.0) || !std::isfinite(longest) || !(meanRadius > 0.0))
+  {
+    vtkErrorMacro(<< "Cannot set up an ambient volume for the extent " << longest
+                  << " and mean radius " << meanRadius << ".");
+    return false;
+  }
+  const int maximum = PowerOfTwoAtMost(this->MaximumResolution);
+  int n = 0;
+  if (this->Resolution > 0)
+  {
+    n = NextPowerOfTwo(this->Resolution);
+  }
+  else
+  {
+    // a voxel edge of one mean radius, 32 ... MaximumResolution voxels along the longest axis
+    const double wanted = std::ceil(longest / meanRadius);
+    n = NextPowerOfTwo(static_cast<int>(std::min(wanted, 4096.0)));
+    n = std::max(n, 32);
+  }
+  if (n > maximum)
+  {
+    n = maximum;
+  }
+  for (;;)
+  {
+    const double edge = longest / n;
+    int dims[3];
+    bool fits = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      dims[k] = NextPowerOfTwo(std::max(1, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
+      if (deviceAxisLimit > 0 && dims[k] > deviceAxisLimit)
+      {
+        fits = false;
+      }
+    }
+    const double voxels = static_cast<double>(dims[0]) * dims[1] * dims[2];
+    const double bytes = voxels * 8.0 * 8.0 / 7.0; // RGBA16F with all mips
+    if (bytes > this->MaximumMemory * 1048576.0)
+    {
+      fits = false;
+    }
+    if (!fits && n > 1)
+    {
+      vtkWarningMacro(<< "The ambient volume of " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                      << " voxels (" << bytes / 1048576.0 << " MiB with its mips) exceeds "
+                      << (bytes > this->MaximumMemory * 1048576.0 ? "MaximumMemory"
+                                                                   : "the largest 3D texture")
+                      << ": halving the resolution.");
+      n /= 2;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Dimensions[k] = dims[k];
+      this->Origin[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) - 0.5 * dims[k] * edge;
+    }
+    this->VoxelSize = edge;
+    this->TextureBytes = bytes;
+    int levels = 1;
+    while ((std::max(std::max(dims[0], dims[1]), dims[2]) >> (levels - 1)) > 1)
+    {
+      ++levels;
+    }
+    this->NumberOfLevels = levels;
+    return true;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::Voxelise(const std::vector<double>& centers,
+  const std::vector<double>& radii, const std::vector<double>& colors,
+  const std::vector<double>& meanOpacities, int deviceAxisLimit)
+{
+  const size_t n = radii.size();
+  if (centers.size() != 3 * n || colors.size() != 3 * n || meanOpacities.size() != n)
+  {
+    vtkErrorMacro(<< "Voxelise(): " << n << " radii need 3 centre coordinates, 3 colour "
+                                         "components and one opacity each.");
+    return false;
+  }
+  // bounds of the valid spheres and their mean radius
+  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double radiusSum = 0.0;
+  std::vector<size_t> valid;
+  valid.reserve(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double* c = &centers[3 * i];
+    const double r = radii[i];
+    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(c[0] + c[1] + c[2]))
+    {
+      continue;
+    }
+    valid.push_back(i);
+    radiusSum += r;
+    for (int k = 0; k < 3; ++k)
+    {
+      bounds[2 * k] = std::min(bounds[2 * k], c[k] - r);
+      bounds[2 * k + 1] = std::max(bounds[2 * k + 1], c[k] + r);
+    }
+  }
+  if (valid.empty())
+  {
+    vtkWarningMacro(<< "No particle with a finite position and a radius > 0: the ambient "
+                       "volume stays empty.");
+    return false;
+  }
+  return this->VoxeliseValid(centers, radii, colors, meanOpacities, valid, bounds,
+    radiusSum / static_cast<double>(valid.size()), deviceAxisLimit);
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
+  const std::vector<double>& radii, const std::vector<double>& colors,
+  const std::vector<double>& meanOpacities, const std::vector<size_t>& valid,
+  const double bounds[6], double meanRadius, int deviceAxisLimit)
+{
+  if (!this->SetUpGrid(bounds, meanRadius, deviceAxisLimit))
+  {
+    return false;
+  }
+  const int nx = this->Dimensions[0];
+  const int ny = this->Dimensions[1];
+  const int nz = this->Dimensions[2];
+  const double voxels = static_cast<double>(nx) * ny * nz;
+  std::string why;
+  if (!vtkParticleMemory::CanAllocate(voxels * 4.0 * sizeof(float) * 8.0 / 7.0, why))
+  {
+    vtkErrorMacro(<< "The " << nx << "x" << ny << "x" << nz << " ambient volume " << why
+                  << ": no voxel cone tracing. Lower Resolution or MaximumMemory.");
+    return false;
+  }
+  const double edge = this->VoxelSize;
+  const double cellVolume = edge * edge * edge;
+
+  // the spheres with their extinction: sigma per voxel edge for w = 1 is
+  // (3 / (4 r)) <Theta> edge (number density times cross-section, see the class description)
+  std::vector<Sphere> spheres(valid.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(valid.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      const size_t i = valid[j];
+      Sphere& s = spheres[j];
+      for (int k = 0; k < 3; ++k)
+      {
+        s.Center[k] = (centers[3 * i + k] - this->Origin[k]) / edge; // in voxel units
+        s.Color[k] = std::min(std::max(colors[3 * i + k], 0.0), 1.0);
+      }
+      s.Radius = radii[i] / edge;
+      const double theta = std::min(std::max(meanOpacities[i], 0.0), 1.0);
+      s.Sigma = std::isfinite(theta) ? 0.75 / s.Radius * theta : 0.0;
+    }
+  });
+
+  // spheres per z slab (each slab is then voxelised by one thread: no races)
+  std::vector<vtkIdType> slabStart(nz + 1, 0);
+  auto zRange = [&](const Sphere& s, int& z0, int& z1) {
+    z0 = std::max(0, static_cast<int>(std::floor(s.Center[2] - s.Radius)));
+    z1 = std::min(nz - 1, static_cast<int>(std::floor(s.Center[2] + s.Radius)));
+  };
+  for (const Sphere& s : spheres)
+  {
+    int z0, z1;
+    zRange(s, z0, z1);
+    for (int z = z0; z <= z1; ++z)
+    {
+      ++slabStart[z + 1];
+    }
+  }
+  for (int z = 0; z < nz; ++z)
+  {
+    slabStart[z + 1] += slabStart[z];
+  }
+  std::vector<vtkIdType> slabSpheres(static_cast<size_t>(slabStart[nz]));
+  {
+    std::vector<vtkIdType> fill(slabStart.begin(), slabStart.end() - 1);
+    for (size_t j = 0; j < spheres.size(); ++j)
+    {
+      int z0, z1;
+      zRange(spheres[j], z0, z1);
+      for (int z = z0; z <= z1; ++z)
+      {
+        slabSpheres[fill[z]++] = static_cast<vtkIdType>(j);
+      }
+    }
+  }
+
+  // the overlap weights of one sphere (voxel units): the voxels it covers exactly (1), the
+  // partial ones by the sub-grid, rescaled so that the sphere's whole volume is deposited
+  const int s = this->SubGridSamples;
+  auto weightOfCell = [s](const Sphere& sp, int x, int y, int z) -> double {
+    const double lo[3] = { double(x), double(y), double(z) };
+    double nearest = 0.0;
+    double farthest = 0.0;
+    bool inside = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double c = sp.Center[k];
+      const double dn = c < lo[k] ? lo[k] - c : (c > lo[k] + 1.0 ? c - lo[k] - 1.0 : 0.0);
+      const double df = std::max(std::abs(c - lo[k]), std::abs(c - lo[k] - 1.0));
+      nearest += dn * dn;
+      farthest += df * df;
+      inside = inside && c - sp.Radius >= lo[k] && c + sp.Radius <= lo[k] + 1.0;
+    }
+    const double r2 = sp.Radius * sp.Radius;
+    if (nearest > r2)
+    {
+      return 0.0;
+    }
+    if (farthest <= r2)
+    {
+      return 1.0;
+    }
+    if (inside)
+    {
+      return 4.0 / 3.0 * vtkMath::Pi() * r2 * sp.Radius;
+    }
+    int hits = 0;
+    for (int a = 0; a < s; ++a)
+    {
+      const double pz = lo[2] + (a + 0.5) / s - sp.Center[2];
+      for (int b = 0; b < s; ++b)
+      {
+        const double py = lo[1] + (b + 0.5) / s - sp.Center[1];
+        for (int c = 0; c < s; ++c)
+        {
+          const double px = lo[0] + (c + 0.5) / s - sp.Center[0];
+          hits += px * px + py * py + pz * pz <= r2 ? 1 : 0;
+        }
+      }
+    }
+    return -static_cast<double>(hits) / (s * s * s); // negative: partial, rescaled below
+  };
+  // per sphere: the rescale factor of its partial voxels so that sum w = V_sphere / V_voxel
+  // (computed once over all its voxels, then applied slab by slab)
+  std::vector<double> partialScale(spheres.size(), 1.0);
+  std::vector<char> lost(spheres.size(), 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(spheres.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      const Sphere& sp = spheres[j];
+      int lo[3], hi[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::max(0, static_cast<int>(std::floor(sp.Center[k] - sp.Radius)));
+        hi[k] = std::min(this->Dimensions[k] - 1, static_cast<int>(std::floor(sp.Center[k] + sp.Radius)));
+      }
+      double full = 0.0;
+      double partial = 0.0;
+      for (int z = lo[2]; z <= hi[2]; ++z)
+      {
+        for (int y = lo[1]; y <= hi[1]; ++y)
+        {
+          for (int x = lo[0]; x <= hi[0]; ++x)
+          {
+            const double w = weightOfCell(sp, x, y, z);
+            (w < 0.0 ? partial : full) += std::abs(w);
+          }
+        }
+      }
+      const double volume = 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius;
+      if (partial > 0.0)
+      {
+        partialScale[j] = std::max(0.0, volume - full) / partial;
+      }
+      else if (full == 0.0)
+      {
+        lost[j] = 1; // smaller than the sub-grid and between its samples: all into its voxel
+      }
+    }
+  });
+
+  std::vector<std::vector<float>>& levels = this->Internals->Levels;
+  levels.assign(1, std::vector<float>());
+  std::vector<float>& level0 = levels[0];
+  level0.assign(static_cast<size_t>(voxels) * 4, 0.0f);
+  vtkSMPTools::For(0, nz, [&](vtkIdType zBegin, vtkIdType zEnd) {
+    for (vtkIdType z = zBegin; z < zEnd; ++z)
+    {
+      for (vtkIdType e = slabStart[z]; e < slabStart[z + 1]; ++e)
+      {
+        const vtkIdType j = slabSpheres[e];
+        const Sphere& sp = spheres[j];
+        auto deposit = [&](int x, int y, double w) {
+          float* v = &level0[4 * ((static_cast<size_t>(z) * ny + y) * nx + x)];
+          const double sigma = w * sp.Sigma;
+          v[0] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[0]);
+          v[1] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[1]);
+          v[2] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[2]);
+          v[3] += static_cast<float>(sigma);
+        };
+        if (lost[j])
+        {
+          const int cx = std::min(nx - 1, std::max(0, static_cast<int>(sp.Center[0])));
+          const int cy = std::min(ny - 1, std::max(0, static_cast<int>(sp.Center[1])));
+          const int cz = std::min(nz - 1, std::max(0, static_cast<int>(sp.Center[2])));
+          if (cz == z)
+          {
+            deposit(cx, cy, 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius);
+          }
+          continue;
+        }
+        const int x0 = std::max(0, static_cast<int>(std::floor(sp.Center[0] - sp.Radius)));
+        const int x1 = std::min(nx - 1, static_cast<int>(std::floor(sp.Center[0] + sp.Radius)));
+        const int y0 = std::max(0, static_cast<int>(std::floor(sp.Center[1] - sp.Radius)));
+        const int y1 = std::min(ny - 1, static_cast<int>(std::floor(sp.Center[1] + sp.Radius)));
+        for (int y = y0; y <= y1; ++y)
+        {
+          for (int x = x0; x <= x1; ++x)
+          {
+            double w = weightOfCell(sp, x, y, static_cast<int>(z));
+            w = w < 0.0 ? -w * partialScale[j] : w;
+            if (w > 0.0)
+            {
+              deposit(x, y, w);
+            }
+          }
+        }
+      }
+    }
+  });
+  (void)cellVolume;
+  this->BuildMips();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::BuildMips()
+{
+  std::vector<std::vector<float>>& levels = this->Internals->Levels;
+  levels.resize(1);
+  int dims[3] = { this->Dimensions[0], this->Dimensions[1], this->Dimensions[2] };
+  for (int level = 1; level < this->NumberOfLevels; ++level)
+  {
+    const int child[3] = { dims[0], dims[1], dims[2] };
+    for (int k = 0; k < 3; ++k)
+    {
+      dims[k] = std::max(1, dims[k] / 2);
+    }
+    const std::vector<float>& fine = levels[level - 1];
+    std::vector<float> coarse(static_cast<size_t>(dims[0]) * dims[1] * dims[2] * 4, 0.0f);
+    // children per axis: 2, or 1 where the finer level is already 1 voxel thick
+    const int sx = child[0] > 1 ? 2 : 1;
+    const int sy = child[1] > 1 ? 2 : 1;
+    const int sz = child[2] > 1 ? 2 : 1;
+    const float norm = 1.0f / static_cast<float>(sx * sy * sz);
+    vtkSMPTools::For(0, dims[2], [&](vtkIdType zBegin, vtkIdType zEnd) {
+      for (vtkIdType z = zBegin; z < zEnd; ++z)
+      {
+        for (int y = 0; y < dims[1]; ++y)
+        {
+          for (int x = 0; x < dims[0]; ++x)
+          {
+            float sum[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+            for (int c = 0; c < sz; ++c)
+            {
+              for (int b = 0; b < sy; ++b)
+              {
+                for (int a = 0; a < sx; ++a)
+                {
+                  const size_t f = 4 *
+                    ((static_cast<size_t>(sz * z + c) * child[1] + (sy * y + b)) * child[0] +
+                      (sx * x + a));
+                  for (int k = 0; k < 4; ++k)
+                  {
+                    sum[k] += fine[f + k];
+                  }
+                }
+              }
+            }
+            float* out = &coarse[4 * ((static_cast<size_t>(z) * dims[1] + y) * dims[0] + x)];
+            for (int k = 0; k < 4; ++k)
+            {
+              out[k] = sum[k] * norm;
+            }
+          }
+        }
+      }
+    });
+    levels.push_back(std::move(coarse));
+  }
+}
+
+//------------------------------------------------------------------------------
+const std::vector<float>& vtkParticleAmbientVolume::GetLevel(int level) const
+{
+  static const std::vector<float> none;
+  const auto& levels = this->Internals->Levels;
+  return level >= 0 && level < static_cast<int>(levels.size()) ? levels[level] : none;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::BeginParticles()
+{
+  this->Internals->Props.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::AddParticles(vtkActor* actor, vtkParticleSphereMapper* mapper)
+{
+  if (actor && mapper && mapper->GetInput())
+  {
+    this->Internals->Props.emplace_back(actor, mapper);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkParticleAmbientVolume::GetNumberOfParticles()
+{
+  vtkIdType total = 0;
+  for (auto& item : this->Internals->Props)
+  {
+    total += item.second->GetParticleRadii()->GetNumberOfTuples();
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::EndParticles(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.Props.empty() || !context || !texture)
+  {
+    vtkErrorMacro(<< "EndParticles() needs particle props (AddParticles), a context and a texture.");
+    return false;
+  }
+  // the spheres as drawn: world centres, radii, colours and mean disc opacities
+  const vtkIdType total = this->GetNumberOfParticles();
+  std::vector<double> centers(3 * total);
+  std::vector<double> radii(total, 0.0);
+  std::vector<double> colors(3 * total, 1.0);
+  std::vector<double> opacities(total, 1.0);
+  vtkIdType offset = 0;
+  for (auto& item : internals.Props)
+  {
+    vtkActor* actor = item.first;
+    vtkParticleSphereMapper* mapper = item.second;
+    const vtkIdType n = mapper->GetParticleRadii()->GetNumberOfTuples();
+    vtkPoints* points = mapper->GetInput()->GetPoints();
+    if (n == 0 || !points || points->GetNumberOfPoints() < n)
+    {
+      offset += n;
+      continue;
+    }
+    const float* r = mapper->GetParticleRadii()->GetPointer(0);
+    const double scale = mapper->GetRadiusScaleVC(actor);
+    const double* m = actor->GetMatrix()->GetData();
+    vtkUnsignedCharArray* mapped = mapper->MapScalars(1.0);
+    if (mapped && (mapped->GetNumberOfComponents() != 4 || mapped->GetNumberOfTuples() < n))
+    {
+      mapped = nullptr;
+    }
+    vtkProperty* property = actor->GetProperty();
+    double propertyColor[3];
+    property->GetColor(propertyColor);
+    const double propertyOpacity = property->GetOpacity();
+    vtkTransparentSphereMapper* transparent = vtkTransparentSphereMapper::SafeDownCast(mapper);
+    vtkDoubleArray* thetaA = transparent ? transparent->GetParticleOpacities() : nullptr;
+    if (thetaA && thetaA->GetNumberOfTuples() < n)
+    {
+      thetaA = nullptr;
+    }
+    const int model = transparent ? transparent->GetDensityModel() : 0;
+    const double hollow = transparent ? transparent->GetHollowFraction() : 0.0;
+    vtkDataArray* xyz = points->GetData();
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        double q[3];
+        xyz->GetTuple(i, q);
+        for (int k = 0; k < 3; ++k)
+        {
+          centers[3 * (offset + i) + k] =
+            m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
+        }
+        radii[offset + i] = r[i] * scale;
+        double theta = propertyOpacity;
+        if (mapped)
+        {
+          const unsigned char* c = mapped->GetPointer(4 * i);
+          for (int k = 0; k < 3; ++k)
+          {
+            colors[3 * (offset + i) + k] = c[k] / 255.0;
+          }
+          theta *= c[3] / 255.0;
+        }
+        else
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            colors[3 * (offset + i) + k] = propertyColor[k];
+          }
+        }
+        if (thetaA)
+        {
+          theta *= thetaA->GetValue(i);
+        }
+        // the opaque core draws a flat opacity over the disc; the emission-absorption glyphs
+        // their profile
+        opacities[offset + i] =
+          transparent ? vtkParticleAmbientVolume::MeanDiscOpacity(theta, model, hollow) : theta;
+      }
+    });
+    offset += n;
+  }
+  if (!this->Voxelise(centers, radii, colors, opacities,
+        vtkTextureObject::GetMaximumTextureSize3D(context)))
+  {
+    return false;
+  }
+
+  // upload: level 0 through vtkTextureObject, the mips into the same texture
+  texture->SetContext(context);
+  texture->SetInternalFormat(GL_RGBA16F);
+  const int* dims = this->Dimensions;
+  const std::vector<float>& level0 = internals.Levels[0];
+  // half floats end at 65504: clamp (extinction per voxel edge is O(1) for sensible data)
+  auto clamped = [](const std::vector<float>& in) {
+    std::vector<float> out(in.size());
+    for (size_t i = 0; i < in.size(); ++i)
+    {
+      out[i] = std::min(in[i], 65000.0f);
+    }
+    return out;
+  };
+  std::vector<float> upload = clamped(level0);
+  if (!texture->Create3DFromRaw(
+        dims[0], dims[1], dims[2], 4, VTK_FLOAT, static_cast<void*>(upload.data())))
+  {
+    vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " ambient volume texture: no voxel cone tracing.");
+    return false;
+  }
+  texture->Bind();
+  int size[3] = { dims[0], dims[1], dims[2] };
+  for (int level = 1; level < this->NumberOfLevels; ++level)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      size[k] = std::max(1, size[k] / 2);
+    }
+    upload = clamped(internals.Levels[level]);
+    glTexImage3D(GL_TEXTURE_3D, level, GL_RGBA16F, size[0], size[1], size[2], 0, GL_RGBA,
+      GL_FLOAT, upload.data());
+  }
+  texture->SetBaseLevel(0);
+  texture->SetMaxLevel(this->NumberOfLevels - 1);
+  texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetWrapS(vtkTextureObject::ClampToBorder);
+  texture->SetWrapT(vtkTextureObject::ClampToBorder);
+  texture->SetWrapR(vtkTextureObject::ClampToBorder);
+  texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
+  texture->SendParameters();
+  texture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::ReleaseGraphicsResources(vtkWindow*) {}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "MaximumResolution: " << this->MaximumResolution << "\n";
+  os << indent << "SubGridSamples: " << this->SubGridSamples << "\n";
+  os << indent << "AmbientEmission: " << this->AmbientEmission << "\n";
+  os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
+     << this->Dimensions[2] << "\n";
+  os << indent << "VoxelSize: " << this->VoxelSize << "\n";
+  os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
+}
