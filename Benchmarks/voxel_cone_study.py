@@ -10,9 +10,10 @@ spheres up to
   far   the cone length of the voxel-cone pass, 0.25 of the largest extent (the paper's default)
 Each method is scored against both.
 
-Knobs of the voxel-cone pass, varied one at a time around the defaults (resolution 0 = automatic,
-3 cones, aperture 60 degrees, start offset 1 voxel, length 0.25): resolution (voxels along the
-longest axis), cone count, aperture, start offset. Frame times: the shortest of FRAMES frames of
+Knobs of the voxel-cone pass, varied one at a time around the defaults (per fragment, resolution
+0 = automatic, 3 cones, aperture 60 degrees, start offset 1 voxel, length 0.25): resolution (voxels
+along the longest axis), cone count, aperture, start offset; and the per-sphere retrieval with 1,
+3 and 6 cones per axis. Frame times: the shortest of FRAMES frames of
 a slowly orbiting camera (static scene, the volume is not rebuilt), and one volume build.
 
 usage: /usr/bin/python3 Benchmarks/voxel_cone_study.py --data Testing/Data --out Benchmarks/results
@@ -82,7 +83,7 @@ def main():
         cones.SetDelegatePass(vtkRenderStepsPass())
         scene.renderer.SetPass(cones)
         volume = cones.GetAmbientVolume()
-        defaults = dict(resolution=0, cones=3, aperture=60.0, start=1.0)
+        defaults = dict(resolution=0, cones=3, aperture=60.0, start=1.0, retrieval=0)
         variations = [dict(defaults)]
         for res in (32, 64, 128, 256):
             variations.append(dict(defaults, resolution=res))
@@ -92,6 +93,8 @@ def main():
             variations.append(dict(defaults, aperture=aperture))
         for start in (0.5, 2.0):
             variations.append(dict(defaults, start=start))
+        for count in (1, 3, 6):  # per sphere (vertex stage)
+            variations.append(dict(defaults, retrieval=1, cones=count))
         if args.quick:
             variations = variations[:2]
         for v in variations:
@@ -99,6 +102,7 @@ def main():
             cones.SetConeCount(v["cones"])
             cones.SetConeAperture(v["aperture"])
             cones.SetStartOffset(v["start"])
+            cones.SetRetrievalMode(v["retrieval"])
             builds = cones.GetNumberOfVolumeBuilds()
             scene.data.GetPoints().Modified()  # a new time step: rebuild
             rebuild = scene.frame()
@@ -126,8 +130,8 @@ def main():
             measure(scene, refs, base, "ssao", dict(ssao_radius=radius_factor), rows)
         scene.renderer.SetPass(None)
 
-    fields = ["scene", "particles", "size", "method", "resolution", "dims", "cones", "aperture",
-              "start", "strength", "ssao_radius", "frame_s", "plain_frame_s", "build_s"]
+    fields = ["scene", "particles", "size", "method", "retrieval", "resolution", "dims", "cones",
+              "aperture", "start", "strength", "ssao_radius", "frame_s", "plain_frame_s", "build_s"]
     for key in ("far", "near"):
         fields += ["rmse_" + key, "affine_rmse_" + key, "bias_" + key]
     fields += ["reference_samples", "near_distance", "far_distance"]
@@ -151,7 +155,7 @@ def plot(rows, out, scenes):
         mine = [r for r in rows if r["scene"] == name]
         for j, key in enumerate(("rmse_far", "rmse_near")):
             ax = axes[i][j]
-            vc = [r for r in mine if r["method"] == "voxel-cone"]
+            vc = [r for r in mine if r["method"] == "voxel-cone" and r["retrieval"] == 0]
             default = vc[0]
             for knob, colour, marker in knobs:
                 pts = [r for r in vc[1:] if any(r[k] != default[k] for k in (knob,))
@@ -163,6 +167,12 @@ def plot(rows, out, scenes):
                     ax.annotate(str(r[knob]), (1e3 * r["frame_s"], r[key]), fontsize=6)
             ax.plot([1e3 * default["frame_s"]], [default[key]], "*", color="red", markersize=14,
                     label="voxel cone, defaults")
+            ps = sorted([r for r in mine if r["method"] == "voxel-cone" and r["retrieval"] == 1],
+                        key=lambda r: r["cones"])
+            ax.plot([1e3 * r["frame_s"] for r in ps], [r[key] for r in ps], marker="P",
+                    color="tab:red", linestyle=":", label="voxel cone per sphere: cones")
+            for r in ps:
+                ax.annotate(str(r["cones"]), (1e3 * r["frame_s"], r[key]), fontsize=6)
             for method, colour, marker in (("density-volume", "tab:orange", "D"),
                                            ("ssao", "tab:gray", "x")):
                 pts = [r for r in mine if r["method"] == method]

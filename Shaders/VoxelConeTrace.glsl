@@ -53,11 +53,9 @@ vec4 prTraceCone(vec3 p, vec3 dir)
   return vec4(radiance, transmittance);
 }
 
-// pointVC, normalVC: the visible point and its unit normal in view coordinates
-vec4 prTraceCones(vec3 pointVC, vec3 normalVC)
+// p, n: a surface point and its unit normal in voxel units
+vec4 prTraceConesVoxel(vec3 p, vec3 n)
 {
-  vec3 p = (prViewToVoxel * vec4(pointVC, 1.0)).xyz;
-  vec3 n = normalize(mat3(prViewToVoxel) * normalVC);
   vec3 helper = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
   vec3 u = normalize(cross(n, helper));
   vec3 v = cross(n, u);
@@ -72,4 +70,35 @@ vec4 prTraceCones(vec3 pointVC, vec3 normalVC)
     sum += cone.w * prTraceCone(p, normalize(cone.x * u + cone.y * v + cone.z * n));
   }
   return sum;
+}
+
+// pointVC, normalVC: the visible point and its unit normal in view coordinates
+vec4 prTraceCones(vec3 pointVC, vec3 normalVC)
+{
+  return prTraceConesVoxel((prViewToVoxel * vec4(pointVC, 1.0)).xyz,
+    normalize(mat3(prViewToVoxel) * normalVC));
+}
+
+// Per sphere (vertex stage): the cones of the sphere's six extreme points along the world axes,
+// +x, -x, +y, -y, +z, -z, each around its axis (the grid is aligned with the world axes).
+void prTraceSphereCones(vec3 centerVC, float radiusVC, out vec4 cones[6])
+{
+  vec3 c = (prViewToVoxel * vec4(centerVC, 1.0)).xyz;
+  float r = radiusVC * length(prViewToVoxel[0].xyz);
+  for (int k = 0; k < 6; ++k)
+  {
+    vec3 axis = vec3(0.0);
+    axis[k / 2] = (k % 2 == 0) ? 1.0 : -1.0;
+    cones[k] = prTraceConesVoxel(c + r * axis, axis);
+  }
+}
+
+// Per fragment: the six axis results blended by the squared components of the world normal
+// (they sum to 1), the side chosen by each component's sign.
+vec4 prBlendSphereCones(vec3 normalWC, vec4 plusX, vec4 minusX, vec4 plusY, vec4 minusY,
+  vec4 plusZ, vec4 minusZ)
+{
+  vec3 w = normalWC * normalWC;
+  return w.x * (normalWC.x >= 0.0 ? plusX : minusX) + w.y * (normalWC.y >= 0.0 ? plusY : minusY) +
+    w.z * (normalWC.z >= 0.0 ? plusZ : minusZ);
 }

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkVoxelConeAOPass);
@@ -132,10 +133,34 @@ bool vtkVoxelConeAOPass::PostReplaceShaderValues(std::string& vertexShader,
   }
   vtkParticleShaderHooks& hooks = *this->Hooks;
   hooks.Begin(vertexShader, geometryShader, fragmentShader);
-  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec", "//PR::Include VoxelConeTrace");
-  // Eq. 7: the occlusion multiplies the lit colour, the ambient illumination is added
-  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::AmbientOcclusion::Impl",
-    "vec4 prCones = prTraceCones(vertexVC.xyz, normalVCVSOutput);\n"
+  using Hooks = vtkParticleShaderHooks;
+  hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "//PR::Include VoxelConeTrace");
+  if (this->RetrievalMode == PER_FRAGMENT)
+  {
+    // Eq. 7: the occlusion multiplies the lit colour, the ambient illumination is added
+    hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",
+      "vec4 prCones = prTraceCones(vertexVC.xyz, normalVCVSOutput);\n"
+      "    prAmbientOcclusion *= clamp(prCones.a, 0.0, 1.0);\n"
+      "    prAmbientLight += prAmbientScale * prCones.rgb;");
+    return true;
+  }
+  // per sphere: the six axis results, traced once per sphere, carried to the fragments
+  static const char* const names[6] = { "prConePX", "prConeMX", "prConePY", "prConeMY",
+    "prConePZ", "prConeMZ" };
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", "//PR::Include VoxelConeTrace");
+  std::string impl = "vec4 prSphereCones[6];\n"
+                     "  prTraceSphereCones(centerVC, radiusVC, prSphereCones);";
+  std::string blend = "prViewToWorld * normalVCVSOutput";
+  for (int k = 0; k < 6; ++k)
+  {
+    hooks.AddSphereVarying("vec4", names[k]);
+    impl += "\n  " + std::string(names[k]) + "VSOutput = prSphereCones[" + std::to_string(k) + "];";
+    blend += ", " + std::string(names[k]) + "VSOutput";
+  }
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl", impl);
+  hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "uniform mat3 prViewToWorld;");
+  hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",
+    "vec4 prCones = prBlendSphereCones(" + blend + ");\n"
     "    prAmbientOcclusion *= clamp(prCones.a, 0.0, 1.0);\n"
     "    prAmbientLight += prAmbientScale * prCones.rgb;");
   return true;
@@ -164,6 +189,10 @@ bool vtkVoxelConeAOPass::SetShaderParameters(
     static_cast<float>(dims[2]) };
   program->SetUniform3f("prAmbientDimensions", dimensions);
   program->SetUniformi("prAmbientVolume", this->VolumeTexture->GetTextureUnit());
+  if (program->IsUniformUsed("prViewToWorld"))
+  {
+    this->SetViewToWorldRotationUniform(program, "prViewToWorld");
+  }
   const double halfAngle = vtkMath::RadiansFromDegrees(0.5 * this->ConeAperture);
   program->SetUniformf("prConeTanHalf", static_cast<float>(std::tan(halfAngle)));
   program->SetUniformf("prConeStart", static_cast<float>(this->StartOffset));
@@ -216,6 +245,8 @@ void vtkVoxelConeAOPass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkVoxelConeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "RetrievalMode: "
+     << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
   os << indent << "ConeCount: " << this->ConeCount << "\n";
   os << indent << "ConeAperture: " << this->ConeAperture << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";

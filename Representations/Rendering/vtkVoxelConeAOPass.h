@@ -52,6 +52,25 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  enum RetrievalModes
+  {
+    PER_FRAGMENT = 0, // every visible fragment traces its cones around its normal
+    PER_SPHERE = 1    // every sphere traces the cones of its six extreme points along the world
+                      // axes once (vertex stage); fragments blend them by their normal
+  };
+
+  ///@{
+  /**
+   * Where the cones are traced. PER_FRAGMENT (default) is the paper's. PER_SPHERE traces
+   * 6 x ConeCount cones per sphere in the vertex stage from the points centre +- r along the
+   * world axes, and each fragment blends the six results by the squared components of its world
+   * normal (as vtkDensityVolumeAOPass's PER_SPHERE): the cost no longer grows with the pixels a
+   * sphere covers, at the price of the detail within a sphere.
+   */
+  vtkSetClampMacro(RetrievalMode, int, PER_FRAGMENT, PER_SPHERE);
+  vtkGetMacro(RetrievalMode, int);
+  ///@}
+
   ///@{
   /**
    * Number of cones per fragment, 1 to 16 (see the class description). Default 3 (the paper's).
@@ -107,6 +126,10 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  /**
+   * The shader code depends on RetrievalMode: mappers rebuild their shaders when it changes.
+   */
+  vtkMTimeType GetShaderStageMTime() override { return this->GetMTime(); }
 
 protected:
   vtkVoxelConeAOPass();
@@ -120,6 +143,7 @@ protected:
   void AppendPropState(
     vtkActor* actor, vtkParticleSphereMapper* mapper, std::vector<double>& state) override;
 
+  int RetrievalMode = PER_FRAGMENT;
   int ConeCount = 3;
   double ConeAperture = 60.0;
   double StartOffset = 1.0;

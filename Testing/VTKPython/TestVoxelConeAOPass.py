@@ -6,7 +6,7 @@ vtkParticleAmbientVolume, from plain VTK Python. Checked:
 - voxelisation conserves the extinction: the sum over the voxels equals
   sum_i (4/3 pi rho_i^3) (3 / (4 rho_i)) <Theta_i> (rho in voxel edges) for radii from 1e-3 to 4
   voxel edges (spheres smaller than the sub-grid included), and every mip level keeps the total;
-- rendering: a probe sphere above a slab of spheres is darker on its side facing the slab than
+- rendering, per fragment and per sphere: a probe sphere above a slab of spheres is darker on its side facing the slab than
   on its far side; a translucent slab (Theta 0.3) occludes less than an opaque one; an isolated
   sphere is barely changed; with AmbientIllumination a red slab tints the probe's underside red;
   AO alone never brightens a pixel;
@@ -135,6 +135,7 @@ def scene(slab_opacity=1.0, probe=True, slab_present=True, slab_color=(0.8, 0.8,
         aopass = pr.vtkVoxelConeAOPass()
         aopass.SetDelegatePass(vtkRenderStepsPass())
         aopass.SetAmbientIllumination(ambient)
+        aopass.SetRetrievalMode(MODE)
         renderer.SetPass(aopass)
     window = offscreen_window(renderer, (300, 300))
     camera = renderer.GetActiveCamera()
@@ -155,66 +156,75 @@ def probe_rows(image):
     return lower, upper
 
 
-window, renderer, aopass, actors = scene(pass_on=False)
-plain = grab_image(window)
-window, renderer, aopass, actors = scene()
-occluded = grab_image(window)
-check(aopass.GetNumberOfVolumeBuilds() == 1, "one volume build for the first frame")
-lower0, upper0 = probe_rows(plain)
-lower1, upper1 = probe_rows(occluded)
-print("probe without AO: lower %.1f upper %.1f; with: lower %.1f upper %.1f"
-      % (lower0, upper0, lower1, upper1))
-check(lower1 < 0.85 * lower0, "the side facing the slab is darker (%.1f -> %.1f)"
-      % (lower0, lower1))
-check(upper1 > 0.9 * upper0, "the open side keeps its light (%.1f -> %.1f)" % (upper0, upper1))
-check(int((occluded[:, :3] - plain[:, :3]).max()) <= 1, "AO alone never brightens (max +%d)"
-      % int((occluded[:, :3] - plain[:, :3]).max()))
-check(np.isfinite(occluded).all(), "no NaN")
+for MODE in (0, 1):  # PER_FRAGMENT, PER_SPHERE
+    print("retrieval mode", MODE)
+    window, renderer, aopass, actors = scene(pass_on=False)
+    plain = grab_image(window)
+    window, renderer, aopass, actors = scene()
+    occluded = grab_image(window)
+    check(aopass.GetNumberOfVolumeBuilds() == 1, "one volume build for the first frame")
+    lower0, upper0 = probe_rows(plain)
+    lower1, upper1 = probe_rows(occluded)
+    print("probe without AO: lower %.1f upper %.1f; with: lower %.1f upper %.1f"
+          % (lower0, upper0, lower1, upper1))
+    check(lower1 < 0.85 * lower0, "the side facing the slab is darker (%.1f -> %.1f)"
+          % (lower0, lower1))
+    if MODE == 0:
+        check(upper1 > 0.9 * upper0, "the open side keeps its light (%.1f -> %.1f)"
+              % (upper0, upper1))
+    else:
+        # per sphere the side results blend into the top as well: only the order is kept
+        check(lower1 / lower0 < upper1 / upper0 - 0.1,
+              "per sphere: the side facing the slab keeps less light (%.2f) than the open side "
+              "(%.2f)" % (lower1 / lower0, upper1 / upper0))
+    check(int((occluded[:, :3] - plain[:, :3]).max()) <= 1, "AO alone never brightens (max +%d)"
+          % int((occluded[:, :3] - plain[:, :3]).max()))
+    check(np.isfinite(occluded).all(), "no NaN")
 
-# camera move: no new volume; colour change and a volume setting: rebuild
-renderer.GetActiveCamera().Azimuth(30)
-window.Render()
-check(aopass.GetNumberOfVolumeBuilds() == 1, "a camera move re-traces only (builds %d)"
-      % aopass.GetNumberOfVolumeBuilds())
-actors[0].GetProperty().SetColor(0.2, 0.9, 0.3)
-window.Render()
-check(aopass.GetNumberOfVolumeBuilds() == 2, "a colour change rebuilds (builds %d)"
-      % aopass.GetNumberOfVolumeBuilds())
-aopass.GetAmbientVolume().SetSubGridSamples(4)
-window.Render()
-check(aopass.GetNumberOfVolumeBuilds() == 3, "a volume setting rebuilds (builds %d)"
-      % aopass.GetNumberOfVolumeBuilds())
+    # camera move: no new volume; colour change and a volume setting: rebuild
+    renderer.GetActiveCamera().Azimuth(30)
+    window.Render()
+    check(aopass.GetNumberOfVolumeBuilds() == 1, "a camera move re-traces only (builds %d)"
+          % aopass.GetNumberOfVolumeBuilds())
+    actors[0].GetProperty().SetColor(0.2, 0.9, 0.3)
+    window.Render()
+    check(aopass.GetNumberOfVolumeBuilds() == 2, "a colour change rebuilds (builds %d)"
+          % aopass.GetNumberOfVolumeBuilds())
+    aopass.GetAmbientVolume().SetSubGridSamples(4)
+    window.Render()
+    check(aopass.GetNumberOfVolumeBuilds() == 3, "a volume setting rebuilds (builds %d)"
+          % aopass.GetNumberOfVolumeBuilds())
 
-# translucent slab occludes less
-window, renderer, aopass, actors = scene(slab_opacity=0.3)
-translucent = grab_image(window)
-window, renderer, aopass, actors = scene(slab_opacity=0.3, pass_on=False)
-translucent_plain = grab_image(window)
-lower_t, _ = probe_rows(translucent)
-lower_tp, _ = probe_rows(translucent_plain)
-print("translucent slab: lower %.1f without AO, %.1f with" % (lower_tp, lower_t))
-check(lower_t / lower_tp > lower1 / lower0 + 0.05,
-      "a translucent slab occludes less (%.2f of the light kept vs %.2f)"
-      % (lower_t / lower_tp, lower1 / lower0))
+    # translucent slab occludes less
+    window, renderer, aopass, actors = scene(slab_opacity=0.3)
+    translucent = grab_image(window)
+    window, renderer, aopass, actors = scene(slab_opacity=0.3, pass_on=False)
+    translucent_plain = grab_image(window)
+    lower_t, _ = probe_rows(translucent)
+    lower_tp, _ = probe_rows(translucent_plain)
+    print("translucent slab: lower %.1f without AO, %.1f with" % (lower_tp, lower_t))
+    check(lower_t / lower_tp > lower1 / lower0 + 0.05,
+          "a translucent slab occludes less (%.2f of the light kept vs %.2f)"
+          % (lower_t / lower_tp, lower1 / lower0))
 
-# isolated sphere: barely changed
-window, renderer, aopass, actors = scene(slab_present=False, pass_on=False)
-alone_plain = grab_image(window)
-window, renderer, aopass, actors = scene(slab_present=False)
-alone = grab_image(window)
-diff = np.abs(alone[:, :3] - alone_plain[:, :3])
-check(diff.mean() < 0.5 and diff.max() <= 8,
-      "an isolated sphere is barely changed (mean %.2f, max %d)" % (diff.mean(), diff.max()))
+    # isolated sphere: barely changed
+    window, renderer, aopass, actors = scene(slab_present=False, pass_on=False)
+    alone_plain = grab_image(window)
+    window, renderer, aopass, actors = scene(slab_present=False)
+    alone = grab_image(window)
+    diff = np.abs(alone[:, :3] - alone_plain[:, :3])
+    check(diff.mean() < 0.5 and diff.max() <= 8,
+          "an isolated sphere is barely changed (mean %.2f, max %d)" % (diff.mean(), diff.max()))
 
-# ambient illumination: a red slab tints the underside red
-window, renderer, aopass, actors = scene(slab_color=(1.0, 0.0, 0.0), ambient=0.0)
-red0 = grab_image(window).reshape(300, 300, -1)[150 - 60:150 - 30, 135:165, :3].mean(axis=(0, 1))
-window, renderer, aopass, actors = scene(slab_color=(1.0, 0.0, 0.0), ambient=1.0)
-red1 = grab_image(window).reshape(300, 300, -1)[150 - 60:150 - 30, 135:165, :3].mean(axis=(0, 1))
-print("underside RGB with alpha_A 0:", red0, "with 1:", red1)
-check(red1[0] - red0[0] > 5 * max(red1[1] - red0[1], red1[2] - red0[2], 1.0),
-      "ambient illumination tints the underside red (gain R %.1f, G %.1f, B %.1f)"
-      % tuple(red1 - red0))
+    # ambient illumination: a red slab tints the underside red
+    window, renderer, aopass, actors = scene(slab_color=(1.0, 0.0, 0.0), ambient=0.0)
+    red0 = grab_image(window).reshape(300, 300, -1)[150 - 60:150 - 30, 135:165, :3].mean(axis=(0, 1))
+    window, renderer, aopass, actors = scene(slab_color=(1.0, 0.0, 0.0), ambient=1.0)
+    red1 = grab_image(window).reshape(300, 300, -1)[150 - 60:150 - 30, 135:165, :3].mean(axis=(0, 1))
+    print("underside RGB with alpha_A 0:", red0, "with 1:", red1)
+    check(red1[0] - red0[0] > 5 * max(red1[1] - red0[1], red1[2] - red0[2], 1.0),
+          "ambient illumination tints the underside red (gain R %.1f, G %.1f, B %.1f)"
+          % tuple(red1 - red0))
 
 # NaN / Inf positions: the finite particles' picture
 bad = np.array([[np.nan, 0.0, 0.0], [np.inf, 1.0, 1.0]])
