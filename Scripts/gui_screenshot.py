@@ -31,7 +31,7 @@ def main():
     types.IndexedColors = [0.85, 0.35, 0.2, 0.2, 0.55, 0.9]
     display.SetScalarBarVisibility(view, True)
     display.Opacity = 0.7                     # translucency; "Opacity Of": Column Through The Data
-    view.DensityVolumeAmbientOcclusion = 1
+    view.ParticleAmbientOcclusion = 'Density Volume'
     box = Show(OutputPort(run, 1), view)      # the simulation box
     box.DiffuseColor = [0.7, 0.7, 0.7]
 

@@ -13,6 +13,7 @@
 #include "vtkParticlePassChain.h"
 #include "vtkProcessModule.h"
 #include "vtkRenderer.h"
+#include "vtkVoxelConeAOPass.h"
 
 vtkStandardNewMacro(vtkParticleRenderView);
 
@@ -29,6 +30,7 @@ vtkParticleRenderView::vtkParticleRenderView()
   // handler; a render pass is not one, so its long work (the AO volume build) is reported
   // through a stand-in algorithm registered here.
   this->SetDensityVolumeAOPass(vtkSmartPointer<vtkDensityVolumeAOPass>::New());
+  this->SetVoxelConeAOPass(vtkSmartPointer<vtkVoxelConeAOPass>::New());
   vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
   vtkPVSession* session =
     processModule ? vtkPVSession::SafeDownCast(processModule->GetActiveSession()) : nullptr;
@@ -57,28 +59,86 @@ vtkAlgorithm* vtkParticleRenderView::GetPassProgressReporter()
 vtkParticleRenderView::~vtkParticleRenderView() = default;
 
 //------------------------------------------------------------------------------
-void vtkParticleRenderView::SetDensityVolumeAmbientOcclusion(int on)
+vtkImageProcessingPass* vtkParticleRenderView::GetAmbientOcclusionPass(int method)
 {
-  const bool installed = this->ParticlePassChain->HasPass(this->DensityVolumeAOPass);
-  if (on && !installed)
+  switch (method)
   {
-    this->ParticlePassChain->AddPass(this->DensityVolumeAOPass);
+    case DENSITY_VOLUME:
+      return this->DensityVolumeAOPass;
+    case VOXEL_CONE_TRACING:
+      return this->VoxelConeAOPass;
+    default:
+      return nullptr;
   }
-  else if (!on && installed)
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetAmbientOcclusion(int method)
+{
+  if (method < NO_AMBIENT_OCCLUSION || method > VOXEL_CONE_TRACING)
   {
-    this->ParticlePassChain->RemovePass(this->DensityVolumeAOPass);
+    vtkErrorMacro(<< "Unknown ambient-occlusion method " << method
+                  << " (0 none, 1 density volume, 2 voxel cone tracing).");
+    return;
   }
-  else
+  if (method == this->AmbientOcclusion)
   {
     return;
+  }
+  if (vtkImageProcessingPass* old = this->GetAmbientOcclusionPass(this->AmbientOcclusion))
+  {
+    this->ParticlePassChain->RemovePass(old);
+  }
+  this->AmbientOcclusion = method;
+  if (vtkImageProcessingPass* pass = this->GetAmbientOcclusionPass(method))
+  {
+    this->ParticlePassChain->AddPass(pass);
   }
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
+int vtkParticleRenderView::GetAmbientOcclusion()
+{
+  return this->AmbientOcclusion;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetDensityVolumeAmbientOcclusion(int on)
+{
+  if (on)
+  {
+    this->SetAmbientOcclusion(DENSITY_VOLUME);
+  }
+  else if (this->AmbientOcclusion == DENSITY_VOLUME)
+  {
+    this->SetAmbientOcclusion(NO_AMBIENT_OCCLUSION);
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkParticleRenderView::GetDensityVolumeAmbientOcclusion()
 {
-  return this->ParticlePassChain->HasPass(this->DensityVolumeAOPass) ? 1 : 0;
+  return this->AmbientOcclusion == DENSITY_VOLUME ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+template <typename PassType>
+void vtkParticleRenderView::ReplaceAmbientOcclusionPass(
+  vtkSmartPointer<PassType>& slot, PassType* pass, int method)
+{
+  // the chain holds the pass of the current method only: swap it there too
+  const bool installed = this->AmbientOcclusion == method;
+  if (installed)
+  {
+    this->ParticlePassChain->RemovePass(slot);
+  }
+  slot = pass;
+  if (installed)
+  {
+    this->ParticlePassChain->AddPass(pass);
+  }
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -88,23 +148,29 @@ void vtkParticleRenderView::SetDensityVolumeAOPass(vtkDensityVolumeAOPass* pass)
   {
     return;
   }
-  const bool installed = this->GetDensityVolumeAmbientOcclusion() != 0;
-  if (installed)
-  {
-    this->ParticlePassChain->RemovePass(this->DensityVolumeAOPass);
-  }
   if (this->DensityVolumeAOPass)
   {
     this->DensityVolumeAOPass->RemoveObserver(this->PassProgressTag);
   }
-  this->DensityVolumeAOPass = pass;
   this->PassProgressTag = pass->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
-  if (installed)
+  this->ReplaceAmbientOcclusionPass(this->DensityVolumeAOPass, pass, DENSITY_VOLUME);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetVoxelConeAOPass(vtkVoxelConeAOPass* pass)
+{
+  if (!pass || pass == this->VoxelConeAOPass)
   {
-    this->ParticlePassChain->AddPass(pass);
+    return;
   }
-  this->Modified();
+  this->ReplaceAmbientOcclusionPass(this->VoxelConeAOPass, pass, VOXEL_CONE_TRACING);
+}
+
+//------------------------------------------------------------------------------
+vtkVoxelConeAOPass* vtkParticleRenderView::GetVoxelConeAOPass()
+{
+  return this->VoxelConeAOPass;
 }
 
 //------------------------------------------------------------------------------
@@ -175,6 +241,7 @@ int vtkParticleRenderView::GetNumberOfParticlePasses()
 void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
   os << indent << "ParticlePassChain:\n";
   this->ParticlePassChain->PrintSelf(os, indent.GetNextIndent());
 }

@@ -54,8 +54,10 @@
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 
 class vtkAlgorithm;
+class vtkImageProcessingPass;
 class vtkDensityVolumeAOPass;
 class vtkParticlePassChain;
+class vtkVoxelConeAOPass;
 
 class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleRenderView : public vtkPVRenderView
 {
@@ -81,20 +83,44 @@ public:
    */
   int GetNumberOfParticlePasses();
 
+  enum AmbientOcclusionMethods
+  {
+    NO_AMBIENT_OCCLUSION = 0,
+    DENSITY_VOLUME = 1, // vtkDensityVolumeAOPass (Grottel et al. 2012)
+    VOXEL_CONE_TRACING = 2 // vtkVoxelConeAOPass (Staib et al. 2015)
+  };
+
   ///@{
   /**
-   * Object-space ambient occlusion of the particles from a coarse density volume
-   * (vtkDensityVolumeAOPass, Grottel et al. 2012): on/off puts the pass into the chain or takes
-   * it out. The pass's own settings are not forwarded by the view: in ParaView the pass is a
-   * proxy of its own (group particle_passes) whose VTK object the view receives through
-   * SetDensityVolumeAOPass (a SubProxy command), and whose properties the view exposes -- the
-   * pattern every further pass follows. Without a proxy (plain VTK use of this class) the view
-   * has a pass of its own.
+   * The view's one ambient-occlusion choice: NO_AMBIENT_OCCLUSION (default), DENSITY_VOLUME or
+   * VOXEL_CONE_TRACING. It puts that pass into the chain and takes the other out, so that two
+   * techniques are never on at once. The passes' own settings are not forwarded by the view: in
+   * ParaView each pass is a proxy of its own (group particle_passes) whose VTK object the view
+   * receives through Set...AOPass (a SubProxy command), and whose properties the view exposes --
+   * the pattern every further pass follows. Without proxies (plain VTK use of this class) the
+   * view has passes of its own.
+   */
+  void SetAmbientOcclusion(int method);
+  int GetAmbientOcclusion();
+  ///@}
+
+  ///@{
+  /**
+   * Density-volume ambient occlusion on (DENSITY_VOLUME) or off (NO_AMBIENT_OCCLUSION when it
+   * was the choice), for C++ callers of earlier versions.
    */
   void SetDensityVolumeAmbientOcclusion(int on);
   int GetDensityVolumeAmbientOcclusion();
+  ///@}
+
+  ///@{
+  /**
+   * The passes behind the choice (see SetAmbientOcclusion).
+   */
   void SetDensityVolumeAOPass(vtkDensityVolumeAOPass* pass);
   vtkDensityVolumeAOPass* GetDensityVolumeAOPass();
+  void SetVoxelConeAOPass(vtkVoxelConeAOPass* pass);
+  vtkVoxelConeAOPass* GetVoxelConeAOPass();
   ///@}
 
   /**
@@ -116,6 +142,8 @@ protected:
 
   vtkNew<vtkParticlePassChain> ParticlePassChain;
   vtkSmartPointer<vtkDensityVolumeAOPass> DensityVolumeAOPass;
+  vtkSmartPointer<vtkVoxelConeAOPass> VoxelConeAOPass;
+  int AmbientOcclusion = NO_AMBIENT_OCCLUSION;
   unsigned long PassProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;
 
@@ -125,6 +153,11 @@ private:
 
   // a pass's ProgressEvent, re-invoked by PassProgress
   void ForwardPassProgress(vtkObject* caller, unsigned long, void* callData);
+  // the pass of an AO method (nullptr for none)
+  vtkImageProcessingPass* GetAmbientOcclusionPass(int method);
+  // a new pass object for an AO method, swapped into the chain when that method is on
+  template <typename PassType>
+  void ReplaceAmbientOcclusionPass(vtkSmartPointer<PassType>& slot, PassType* pass, int method);
 };
 
 #endif

@@ -1,11 +1,14 @@
-"""Density-volume ambient occlusion (Grottel et al. 2012) in ParaView: the Particle Render View's
-"Density Volume Ambient Occlusion" property puts vtkDensityVolumeAOPass into the view's pass
-chain. The LAMMPS FCC block (32000 atoms, radii from 'radius', coloured by type) with AO on is
+"""Ambient occlusion in ParaView: the Particle Render View's one "Particle Ambient Occlusion"
+choice puts vtkDensityVolumeAOPass (Grottel et al. 2012) or vtkVoxelConeAOPass (Staib et al.
+2015) into the view's pass chain, never both. The LAMMPS FCC block (32000 atoms, radii from 'radius', coloured by type) with AO on is
 compared with a baseline; the image must be darker than without AO (never brighter), the chain
 must hold one pass with AO on and none with it off. Each setting must reach the pass: per-sphere
 retrieval changes the picture locally (it differs per sphere by design) but little on average,
 GPU generation builds the volume on the GPU (information property) and gives the same image to
-2/255, the paper's nearest-voxel splat changes the picture.
+2/255, the paper's nearest-voxel splat changes the picture. Voxel cone tracing: one pass in the
+chain, the block darker and nowhere brighter, another picture than the density volume's, one
+volume build; the cone count re-traces (picture changes, no build), the resolution rebuilds;
+back to the density volume gives its picture again.
 
 Criteria of the baseline comparison: the GPU's own image on the same platform matches to
 rounding; AO darkens the block by a mean of ~10/255, so a mean of 1/255 or 1 % of the pixels
@@ -57,7 +60,7 @@ def rgb(image):
 def full_test():
     ok = True
     plain = pr.capture(view, os.path.join(args.temp_dir, "TestParticleRenderViewAO_off.png"))
-    view.DensityVolumeAmbientOcclusion = 1
+    view.ParticleAmbientOcclusion = 'Density Volume'
     if info("NumberOfParticlePasses") != 1:
         print("FAIL: AO on, but %s passes in the chain" % info("NumberOfParticlePasses"))
         ok = False
@@ -113,7 +116,46 @@ def full_test():
         view.DensityVolumeGeneration = "CPU"
         view.DensityVolumeSplat = "Trilinear"
 
-    view.DensityVolumeAmbientOcclusion = 0
+    # voxel cone tracing (Staib et al. 2015): the one AO choice replaces the density volume
+    view.ParticleAmbientOcclusion = 'Voxel Cone Tracing'
+    if info("NumberOfParticlePasses") != 1:
+        print("FAIL: voxel cones on, but %s passes in the chain" % info("NumberOfParticlePasses"))
+        ok = False
+    cones = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestParticleRenderViewAO_cones.png")))
+    c = cones.sum(axis=1)
+    darker = int((c < a - 3).sum())
+    brighter = int((c > a + 3).sum())
+    print("voxel cones: %d pixels darker, %d brighter, %d builds"
+          % (darker, brighter, info("NumberOfVoxelConeBuilds")))
+    if darker < 5000 or brighter > 0 or info("NumberOfVoxelConeBuilds") != 1:
+        print("FAIL: voxel cones should darken the block, brighten nothing, build once")
+        ok = False
+    if pr.max_abs_difference(occluded, pr.capture(view, os.path.join(
+            args.temp_dir, "TestParticleRenderViewAO_cones2.png"))) == 0:
+        print("FAIL: voxel cones give the density volume's picture")
+        ok = False
+    # settings reach the pass: cone count re-traces only, resolution rebuilds
+    for prop, value, rebuild in (("VoxelConeCount", 6, False), ("VoxelConeResolution", 32, True)):
+        builds = info("NumberOfVoxelConeBuilds")
+        setattr(view, prop, value)
+        other = rgb(pr.capture(view, os.path.join(args.temp_dir,
+                                                  "TestParticleRenderViewAO_%s.png" % prop)))
+        changed = int((abs(other - cones).max(axis=1) > 2).sum())
+        print("%s = %s: %d pixels changed, builds %d -> %d"
+              % (prop, value, changed, builds, info("NumberOfVoxelConeBuilds")))
+        if changed < 1000 or (info("NumberOfVoxelConeBuilds") > builds) != rebuild:
+            print("FAIL: %s did not reach the pass as expected" % prop)
+            ok = False
+    view.VoxelConeCount = 3
+    view.VoxelConeResolution = 0
+    view.ParticleAmbientOcclusion = 'Density Volume'
+    if info("NumberOfParticlePasses") != 1 or pr.max_abs_difference(
+            occluded, pr.capture(view, os.path.join(args.temp_dir,
+                                                    "TestParticleRenderViewAO_back.png"))) != 0:
+        print("FAIL: back to the density volume: one pass and its picture expected")
+        ok = False
+
+    view.ParticleAmbientOcclusion = 'None'
     if info("NumberOfParticlePasses") != 0:
         print("FAIL: AO off, but %s passes in the chain" % info("NumberOfParticlePasses"))
         ok = False

@@ -53,7 +53,7 @@ def on_handler_progress(obj, event):
 handler.AddObserver("ProgressEvent", on_handler_progress)
 
 view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=(400, 300))
-view.DensityVolumeAmbientOcclusion = 1
+view.ParticleAmbientOcclusion = 'Density Volume'
 # a ball of random points; vtkPointSource makes single-precision points and a vertex cell
 source = simple.PointSource(NumberOfPoints=LARGE, Radius=60.0)
 display = pr.show_particles(source, view, color_by_type=False, use_radius_array=False)

@@ -82,9 +82,9 @@ with pr.captured_messages() as messages:  # (reported after the block)
             fail("%s: ParaView's SSAO does not run (opaque particles darkened by %.2f/255)"
                  % (kind, darkening))
         if kind == "ParticleRenderView":
-            view.DensityVolumeAmbientOcclusion = 1
+            view.ParticleAmbientOcclusion = 'Density Volume'
             dao = grab(view, kind + "_translucent_density_ao")
-            view.DensityVolumeAmbientOcclusion = 0
+            view.ParticleAmbientOcclusion = 'None'
             darker = (plain - dao)[particles].mean()
             brighter = (dao - plain).max()
             background_change = abs(dao - plain)[background].max()

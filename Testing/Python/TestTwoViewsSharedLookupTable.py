@@ -36,7 +36,7 @@ def fail(message):
 
 film, _ = pr.open_particles(args, "lj_film.vtp")
 particle_view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=(300, 240))
-particle_view.DensityVolumeAmbientOcclusion = 0
+particle_view.ParticleAmbientOcclusion = 'None'
 render_view = pr.setup_view(simple.CreateView("RenderView"), size=(300, 240))
 gaussian_view = pr.setup_view(simple.CreateView("RenderView"), size=(300, 240))
 views = [particle_view, render_view, gaussian_view]
