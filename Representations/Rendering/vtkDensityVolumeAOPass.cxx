@@ -254,12 +254,11 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
 bool vtkDensityVolumeAOPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  vtkInternals& internals = *this->Internals;
-  if (!vtkParticleSphereMapper::SafeDownCast(mapper) || !this->VolumeValid ||
-    !program->IsUniformUsed("prDensityVolume"))
+  if (!this->SetVolumeSampler(program, mapper, "prDensityVolume"))
   {
     return true;
   }
+  vtkInternals& internals = *this->Internals;
   // view -> world -> volume texture coordinates, in double; the rotation for normals
   vtkParticleDensityVolume* volume = internals.Volume;
   const int* dims = volume->GetDimensions();
@@ -276,7 +275,6 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
     static_cast<float>(this->FetchDistance / dims[2]),
   };
   program->SetUniform3f("prFetchStep", fetchStep);
-  program->SetUniformi("prDensityVolume", this->VolumeTexture->GetTextureUnit());
   program->SetUniformf("prFetchDistance",
     static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
   program->SetUniformf("prStrength", static_cast<float>(this->Strength));

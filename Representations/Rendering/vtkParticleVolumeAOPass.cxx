@@ -93,6 +93,19 @@ void vtkParticleVolumeAOPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleVolumeAOPass::SetVolumeSampler(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, const char* sampler)
+{
+  if (!vtkParticleSphereMapper::SafeDownCast(mapper) || !this->VolumeValid ||
+    !program->IsUniformUsed(sampler))
+  {
+    return false;
+  }
+  program->SetUniformi(sampler, this->VolumeTexture->GetTextureUnit());
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleVolumeAOPass::SetViewToGridUniform(
   vtkShaderProgram* program, const char* name, const double origin[3], const double scale[3])
 {

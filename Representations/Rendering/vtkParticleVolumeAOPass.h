@@ -77,6 +77,13 @@ protected:
   void ForgetBuild() { this->Attempted = false; }
 
   /**
+   * For SetShaderParameters: true when the program is a particle mapper's that samples the
+   * volume texture through the sampler `sampler` and the volume is valid; then the sampler is
+   * set to the texture's unit. False: nothing of this pass to set.
+   */
+  bool SetVolumeSampler(vtkShaderProgram* program, vtkAbstractMapper* mapper, const char* sampler);
+
+  /**
    * Set the mat4 uniform `name` to the map view -> world -> grid, grid = (world - origin) * scale
    * per axis, composed in double precision from the current renderer's camera. False without a
    * camera.

@@ -170,12 +170,11 @@ bool vtkVoxelConeAOPass::PostReplaceShaderValues(std::string& vertexShader,
 bool vtkVoxelConeAOPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  vtkInternals& internals = *this->Internals;
-  if (!vtkParticleSphereMapper::SafeDownCast(mapper) || !this->VolumeValid ||
-    !program->IsUniformUsed("prAmbientVolume"))
+  if (!this->SetVolumeSampler(program, mapper, "prAmbientVolume"))
   {
     return true;
   }
+  vtkInternals& internals = *this->Internals;
   // view -> world -> level-0 voxel units, in double
   vtkParticleAmbientVolume* volume = internals.Volume;
   const double edge = volume->GetVoxelSize();
@@ -188,7 +187,6 @@ bool vtkVoxelConeAOPass::SetShaderParameters(
   const float dimensions[3] = { static_cast<float>(dims[0]), static_cast<float>(dims[1]),
     static_cast<float>(dims[2]) };
   program->SetUniform3f("prAmbientDimensions", dimensions);
-  program->SetUniformi("prAmbientVolume", this->VolumeTexture->GetTextureUnit());
   if (program->IsUniformUsed("prViewToWorld"))
   {
     this->SetViewToWorldRotationUniform(program, "prViewToWorld");
