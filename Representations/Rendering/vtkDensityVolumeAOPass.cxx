@@ -2,9 +2,7 @@
 #include "vtkMath.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleDensityVolume.h"

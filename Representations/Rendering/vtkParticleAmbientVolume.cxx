@@ -300,7 +300,6 @@ bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
     return false;
   }
   const double edge = this->VoxelSize;
-  const double cellVolume = edge * edge * edge;
 
   // the spheres with their extinction: sigma per voxel edge for w = 1 is
   // (3 / (4 r)) <Theta> edge (number density times cross-section, see the class description)
@@ -488,7 +487,6 @@ bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
       }
     }
   });
-  (void)cellVolume;
   this->BuildMips();
   return true;
 }
@@ -725,9 +723,6 @@ bool vtkParticleAmbientVolume::EndParticles(
   texture->Deactivate();
   return true;
 }
-
-//------------------------------------------------------------------------------
-void vtkParticleAmbientVolume::ReleaseGraphicsResources(vtkWindow*) {}
 
 //------------------------------------------------------------------------------
 void vtkParticleAmbientVolume::PrintSelf(ostream& os, vtkIndent indent)

@@ -56,7 +56,6 @@ class vtkActor;
 class vtkOpenGLRenderWindow;
 class vtkParticleSphereMapper;
 class vtkTextureObject;
-class vtkWindow;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleAmbientVolume : public vtkObject
 {
@@ -151,8 +150,6 @@ public:
    * Level l of the pyramid (RGBA floats, x fastest), as last voxelised on the CPU.
    */
   const std::vector<float>& GetLevel(int level) const;
-
-  void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:
   vtkParticleAmbientVolume();

@@ -1,10 +1,8 @@
 #include "vtkVoxelConeAOPass.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleAmbientVolume.h"
@@ -16,7 +14,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextureObject.h"
 #include "vtkTransparentSphereMapper.h"
 
 #include <algorithm>
@@ -230,13 +227,6 @@ bool vtkVoxelConeAOPass::SetShaderParameters(
   program->SetUniformi("prConeCount", k);
   program->SetUniform4fv("prCones", 16, reinterpret_cast<const float(*)[4]>(cones.data()));
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkVoxelConeAOPass::ReleaseGraphicsResources(vtkWindow* w)
-{
-  this->Internals->Volume->ReleaseGraphicsResources(w);
-  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
