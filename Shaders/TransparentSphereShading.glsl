@@ -30,12 +30,14 @@ struct prSegment
 };
 
 // kappaA: the particle's optical depth (< 0: opaque, Theta_a = 1); opacity: VTK's fragment
-// opacity; litColor: the lit surface colour; diffuseColor: the material colour; the ray
+// opacity; litColor: the lit surface colour L_R; diffuseColor: the material colour c_i;
+// ambientOcclusion and ambientLight: A_O and alpha_A L_A of an AO pass at the entry point
+// (1 and 0 without one), applied as Eq. 7: A_O L_RV + alpha_A L_A; the ray
 // (rayS relative to the centre, unit rayD) with both hits t0 < t1; radiusVC; centerOffsetVC:
 // the centre without the MC->VC translation. Returns false when the fragment adds nothing (or
 // belongs to the opaque stage).
 bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffuseColor,
-  vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC,
+  float ambientOcclusion, vec3 ambientLight, vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC,
   out prSegment seg)
 {
   seg = prSegment(0.0, 0.0, 0.0, 0.0, 0.0, false, false, vec3(0.0));
@@ -95,21 +97,24 @@ bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffu
   seg.b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));
   seg.tn = -seg.h + 2.0 * seg.h * un;
   seg.tf = -seg.h + 2.0 * seg.h * uf;
-  // Eq. 2: surface reflection at the entry point mixed with the volume colour; without an
-  // entry surface (the segment starts inside) only the volume emits
-  seg.radiance = seg.clipN ? diffuseColor : mix(litColor, diffuseColor, prVolumeMix);
+  // Eq. 2: surface reflection at the entry point mixed with the volume colour, occluded and lit
+  // by the ambient terms there (Eq. 7); without an entry surface (the segment starts inside)
+  // only the volume emits, and there is no front hit for the ambient terms
+  seg.radiance = seg.clipN ? diffuseColor
+    : ambientOcclusion * mix(litColor, diffuseColor, prVolumeMix) + ambientLight;
   return true;
 }
 
 // The premultiplied colour (theta * radiance, theta) of the fragment's segment alone, for
 // front-to-back compositing of sorted spheres. Returns false when it adds nothing.
 bool prShadeTranslucentSphere(float kappaA, float opacity, vec3 litColor, vec3 diffuseColor,
-  vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC, out vec4 result)
+  float ambientOcclusion, vec3 ambientLight, vec3 rayS, vec3 rayD, float t0, float t1,
+  float radiusVC, vec3 centerOffsetVC, out vec4 result)
 {
   result = vec4(0.0);
   prSegment seg;
-  if (!prTranslucentSegment(kappaA, opacity, litColor, diffuseColor, rayS, rayD, t0, t1,
-        radiusVC, centerOffsetVC, seg))
+  if (!prTranslucentSegment(kappaA, opacity, litColor, diffuseColor, ambientOcclusion,
+        ambientLight, rayS, rayD, t0, t1, radiusVC, centerOffsetVC, seg))
   {
     return false;
   }

@@ -487,9 +487,10 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
         "//VTK::System::Dec\n" + vtkParticleFragmentLists::GetAppendExtension());
       hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
         "prSegment prSeg;\n"
-        "    if (!prTranslucentSegment(opticalDepthVSOutput, opacity, gl_FragData[0].rgb,\n"
-        "          diffuseColor, prRayS, prRayD, prT0, prT1, radiusVC, centerOffsetVCVSOutput,\n"
-        "          prSeg) || any(isnan(prSeg.radiance)) || any(isinf(prSeg.radiance)))\n"
+        "    if (!prTranslucentSegment(opticalDepthVSOutput, opacity, prSurfaceColor,\n"
+        "          diffuseColor, prAmbientOcclusion, prAmbientLight, prRayS, prRayD, prT0, prT1,\n"
+        "          radiusVC, centerOffsetVCVSOutput, prSeg) || any(isnan(prSeg.radiance)) ||\n"
+        "        any(isinf(prSeg.radiance)))\n"
         "    {\n"
         "      discard;\n"
         "    }\n"
@@ -500,9 +501,9 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
     else
     {
       hooks.Insert(Hooks::Fragment, "//PR::Shading::Impl",
-        "if (!prShadeTranslucentSphere(opticalDepthVSOutput, opacity, gl_FragData[0].rgb,\n"
-        "          diffuseColor, prRayS, prRayD, prT0, prT1, radiusVC, centerOffsetVCVSOutput,\n"
-        "          gl_FragData[0]))\n"
+        "if (!prShadeTranslucentSphere(opticalDepthVSOutput, opacity, prSurfaceColor,\n"
+        "          diffuseColor, prAmbientOcclusion, prAmbientLight, prRayS, prRayD, prT0, prT1,\n"
+        "          radiusVC, centerOffsetVCVSOutput, gl_FragData[0]))\n"
         "    {\n"
         "      discard;\n"
         "    }");

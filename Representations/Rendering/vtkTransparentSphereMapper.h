@@ -44,6 +44,12 @@
  * which is the paper's "no ambient term"; VTK's Phong specular lobe is used rather than
  * Blinn-Phong so that opaque and translucent particles match). When the segment starts inside
  * the sphere (eye inside, near plane cutting it) there is no entry surface and L_RV = Theta c_i.
+ * With an ambient-occlusion pass (vtkDensityVolumeAOPass, vtkVoxelConeAOPass) the emitted
+ * radiance is Eq. 7 evaluated at the entry point, L_E = Theta (A_O ((1 - VolumeMix) L_R +
+ * VolumeMix c_i) + alpha_A L_A): the occlusion darkens the surface and the volume part alike,
+ * and the ambient illumination scales with the segment's opacity like any emission of the
+ * glyph (the paper adds alpha_A L_A without Theta; for a nearly clear particle that would make
+ * it glow brighter than an opaque one). A segment without entry surface gets no ambient terms.
  * The background seen through a particle is attenuated by 1 - Theta (front-to-back compositing).
  *
  * Opaque particles (Theta_i = 1) are drawn in the opaque pass exactly as the core draws them,

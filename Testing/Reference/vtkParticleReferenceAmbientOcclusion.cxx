@@ -1,6 +1,7 @@
 #include "vtkParticleReferenceAmbientOcclusion.h"
 
 #include "vtkMath.h"
+#include "vtkParticleReferenceEmissionAbsorption.h"
 #include "vtkParticleReferenceFrame.h"
 
 #include <algorithm>
@@ -8,85 +9,181 @@
 
 namespace prReference
 {
+namespace
+{
+// the k-th of n Hammersley points (k / n, radical inverse of k), rotated by (rotU, rotV)
+void Hammersley(int k, int n, double rotU, double rotV, double& u, double& w)
+{
+  std::uint32_t bits = static_cast<std::uint32_t>(k);
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  u = (k + 0.5) / n + rotU;
+  w = bits * 2.3283064365386963e-10 + rotV;
+  u -= std::floor(u);
+  w -= std::floor(w);
+}
+}
+
 //------------------------------------------------------------------------------
-double AmbientOcclusion(const Frame& frame, const double p[3], const double n[3], vtkIdType own,
-  int px, int py, std::vector<std::uint32_t>& candidates)
+double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vtkIdType own,
+  int px, int py, AmbientScratch& scratch, double light[3])
 {
   const int aoSamples = frame.AmbientOcclusionSamples;
   const double aoDistance = frame.AmbientOcclusionDistance;
   const SphereGrid& grid = *frame.Grid;
   const std::vector<SphereVC>& spheres = frame.Spheres;
+  const bool allOpaque = frame.SphereTheta.empty();
+  light[0] = light[1] = light[2] = 0.0;
+  if (aoSamples <= 0)
   {
-    // orthonormal basis around n
-    double t1[3];
-    const double helper[3] = { std::abs(n[0]) < 0.9 ? 1.0 : 0.0, std::abs(n[0]) < 0.9 ? 0.0 : 1.0,
-      0.0 };
-    vtkMath::Cross(n, helper, t1);
-    vtkMath::Normalize(t1);
-    double t2[3];
-    vtkMath::Cross(n, t1, t2);
-    // per-pixel Cranley-Patterson rotation from a hash of the pixel
-    std::uint32_t h = static_cast<std::uint32_t>(px) * 73856093u ^
-      static_cast<std::uint32_t>(py) * 19349663u;
-    h ^= h >> 13;
-    h *= 0x5bd1e995u;
-    h ^= h >> 15;
-    const double rotU = (h & 0xffffu) / 65536.0;
-    const double rotV = (h >> 16) / 65536.0;
-    int free = 0;
-    for (int k = 0; k < aoSamples; ++k)
+    return 1.0;
+  }
+  // orthonormal basis around n
+  double t1[3];
+  const double helper[3] = { std::abs(n[0]) < 0.9 ? 1.0 : 0.0, std::abs(n[0]) < 0.9 ? 0.0 : 1.0,
+    0.0 };
+  vtkMath::Cross(n, helper, t1);
+  vtkMath::Normalize(t1);
+  double t2[3];
+  vtkMath::Cross(n, t1, t2);
+  // per-pixel Cranley-Patterson rotation from a hash of the pixel
+  std::uint32_t h = static_cast<std::uint32_t>(px) * 73856093u ^
+    static_cast<std::uint32_t>(py) * 19349663u;
+  h ^= h >> 13;
+  h *= 0x5bd1e995u;
+  h ^= h >> 15;
+  const double rotU = (h & 0xffffu) / 65536.0;
+  const double rotV = (h >> 16) / 65536.0;
+  double transmittanceSum = 0.0;
+  std::vector<std::uint32_t>& candidates = scratch.Candidates;
+  std::vector<AmbientScratch::Piece>& pieces = scratch.Pieces;
+  for (int k = 0; k < aoSamples; ++k)
+  {
+    double u;
+    double w;
+    Hammersley(k, aoSamples, rotU, rotV, u, w);
+    // cosine-weighted direction
+    const double sinTheta = std::sqrt(u);
+    const double cosTheta = std::sqrt(std::max(0.0, 1.0 - u));
+    const double phi = 2.0 * vtkMath::Pi() * w;
+    double dir[3];
+    for (int c = 0; c < 3; ++c)
     {
-      // Hammersley point (k / N, radical inverse of k), rotated
-      std::uint32_t bits = static_cast<std::uint32_t>(k);
-      bits = (bits << 16u) | (bits >> 16u);
-      bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-      bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-      bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-      bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-      double u = (k + 0.5) / aoSamples + rotU;
-      double w = bits * 2.3283064365386963e-10 + rotV;
-      u -= std::floor(u);
-      w -= std::floor(w);
-      // cosine-weighted direction
-      const double sinTheta = std::sqrt(u);
-      const double cosTheta = std::sqrt(std::max(0.0, 1.0 - u));
-      const double phi = 2.0 * vtkMath::Pi() * w;
-      double dir[3];
-      for (int c = 0; c < 3; ++c)
+      dir[c] = sinTheta * (std::cos(phi) * t1[c] + std::sin(phi) * t2[c]) + cosTheta * n[c];
+    }
+    candidates.clear();
+    grid.Collect(p, dir, 0.0, aoDistance, candidates);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    // the spheres' parts of [0, distance]; the first opaque point ends the ray
+    double tOpaque = aoDistance;
+    std::uint32_t opaqueIndex = 0;
+    bool blocked = false;
+    pieces.clear();
+    for (std::uint32_t j : candidates)
+    {
+      if (static_cast<vtkIdType>(j) == own)
       {
-        dir[c] = sinTheta * (std::cos(phi) * t1[c] + std::sin(phi) * t2[c]) + cosTheta * n[c];
+        continue;
       }
-      candidates.clear();
-      grid.Collect(p, dir, 0.0, aoDistance, candidates);
-      bool blocked = false;
-      for (std::uint32_t j : candidates)
+      const SphereVC& sv = spheres[j];
+      const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
+      const double b = vtkMath::Dot(oc, dir);
+      // closest approach relative to the centre (no cancellation), as everywhere here
+      const double q[3] = { oc[0] - b * dir[0], oc[1] - b * dir[1], oc[2] - b * dir[2] };
+      const double h2 = sv.R * sv.R - vtkMath::Dot(q, q);
+      if (!(h2 >= 0.0))
       {
-        if (static_cast<vtkIdType>(j) == own)
-        {
-          continue;
-        }
-        const SphereVC& sv = spheres[j];
-        const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
-        const double b = vtkMath::Dot(oc, dir);
-        // closest approach relative to the centre (no cancellation), as everywhere here
-        const double q[3] = { oc[0] - b * dir[0], oc[1] - b * dir[1], oc[2] - b * dir[2] };
-        const double h2 = sv.R * sv.R - vtkMath::Dot(q, q);
-        if (!(h2 >= 0.0))
-        {
-          continue;
-        }
-        const double hh = std::sqrt(h2);
-        const double tIn = -b - hh;
-        const double tOut = -b + hh;
-        if (tOut > 1e-9 * sv.R && tIn < aoDistance)
+        continue;
+      }
+      const double hh = std::sqrt(h2);
+      const double tIn = -b - hh;
+      const double tOut = -b + hh;
+      if (!(tOut > 1e-9 * sv.R && tIn < aoDistance))
+      {
+        continue;
+      }
+      const double start = std::max(tIn, 0.0);
+      if (allOpaque || frame.SphereTheta[j] >= 1.0)
+      {
+        if (!blocked || start < tOpaque || (start == tOpaque && j < opaqueIndex))
         {
           blocked = true;
-          break;
+          tOpaque = start;
+          opaqueIndex = j;
+        }
+        continue;
+      }
+      pieces.push_back({ start, std::min(tOut, aoDistance), j });
+    }
+    if (allOpaque)
+    {
+      if (blocked)
+      {
+        double c[3];
+        frame.EmissionColor(opaqueIndex, c);
+        for (int m = 0; m < 3; ++m)
+        {
+          light[m] += frame.AmbientEmission * c[m];
         }
       }
-      free += blocked ? 0 : 1;
+      else
+      {
+        transmittanceSum += 1.0;
+      }
+      continue;
     }
-    return static_cast<double>(free) / aoSamples;
+    std::sort(pieces.begin(), pieces.end(),
+      [](const AmbientScratch::Piece& a, const AmbientScratch::Piece& b)
+      { return a.Start < b.Start || (a.Start == b.Start && a.Index < b.Index); });
+    double transmittance = 1.0;
+    for (const AmbientScratch::Piece& piece : pieces)
+    {
+      if (!(piece.Start < tOpaque))
+      {
+        break;
+      }
+      const SphereVC& sv = spheres[piece.Index];
+      const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
+      const double tc = -vtkMath::Dot(oc, dir);
+      const double q[3] = { oc[0] + tc * dir[0], oc[1] + tc * dir[1], oc[2] + tc * dir[2] };
+      const double impact = std::sqrt(vtkMath::Dot(q, q));
+      const double integral = IntegrateDensityImpl(frame.DensityModel, frame.HollowFraction,
+        sv.R, impact, piece.Start - tc, std::min(piece.End, tOpaque) - tc);
+      const double opticalDepth =
+        frame.SphereKappa[piece.Index] * (integral / frame.SphereMaximum[piece.Index]);
+      if (!(opticalDepth > 0.0) || !std::isfinite(opticalDepth))
+      {
+        continue;
+      }
+      double c[3];
+      frame.EmissionColor(piece.Index, c);
+      const double theta = OpacityFromOpticalDepth(opticalDepth);
+      for (int m = 0; m < 3; ++m)
+      {
+        light[m] += transmittance * theta * frame.AmbientEmission * c[m];
+      }
+      transmittance *= std::exp(-opticalDepth);
+    }
+    if (blocked)
+    {
+      double c[3];
+      frame.EmissionColor(opaqueIndex, c);
+      for (int m = 0; m < 3; ++m)
+      {
+        light[m] += transmittance * frame.AmbientEmission * c[m];
+      }
+      transmittance = 0.0;
+    }
+    transmittanceSum += transmittance;
   }
+  for (int m = 0; m < 3; ++m)
+  {
+    light[m] /= aoSamples;
+  }
+  return transmittanceSum / aoSamples;
 }
 } // namespace prReference

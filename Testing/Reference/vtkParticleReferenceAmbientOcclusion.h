@@ -1,7 +1,9 @@
 // Private header of ParticleRendering::Reference (vtkParticleReferenceRenderer): ray-traced
-// ambient occlusion -- cosine-distributed rays from a visible point (Hammersley points with a
-// per-pixel Cranley-Patterson rotation), binary visibility against the real spheres (all of
-// them, the visible one excepted) up to the distance; the reference of every AO technique.
+// ambient occlusion A_O and ambient illumination L_A (Staib et al. 2015, Eq. 5 and 6) --
+// cosine-distributed rays from a visible point (Hammersley points with a per-pixel
+// Cranley-Patterson rotation) through the real spheres (all of them, the visible one excepted)
+// up to the distance: an opaque sphere stops the ray, a translucent one attenuates it by its
+// exact emission-absorption transmittance and emits e_A c_j; the reference of every AO technique.
 #ifndef vtkParticleReferenceAmbientOcclusion_h
 #define vtkParticleReferenceAmbientOcclusion_h
 
@@ -14,13 +16,33 @@ namespace prReference
 {
 struct Frame;
 
+// per-thread work space of the ambient rays
+struct AmbientScratch
+{
+  // a sphere's part of an ambient ray
+  struct Piece
+  {
+    double Start;
+    double End;
+    std::uint32_t Index;
+  };
+  std::vector<std::uint32_t> Candidates;
+  std::vector<Piece> Pieces;
+};
+
 /**
- * Unoccluded fraction of frame.AmbientOcclusionSamples rays from p (view coordinates) around the
- * unit normal n within frame.AmbientOcclusionDistance; own is the sphere the point lies on,
- * (px, py) the pixel (it rotates the sample pattern); candidates is scratch space.
+ * A_O (Eq. 5): the mean transmittance of frame.AmbientOcclusionSamples rays from p (view
+ * coordinates) around the unit normal n within frame.AmbientOcclusionDistance, cosine
+ * distributed; light receives L_A (Eq. 6), the mean radiance e_A c_j the spheres emit into the
+ * rays, composited front to back. Spheres with frame.SphereTheta >= 1 (or all, when it is empty:
+ * the opaque mode) are opaque: the transmittance is 0 from their first point on the ray (binary
+ * visibility, Eq. 3). Translucent spheres attenuate by exp(-kappa_j I / I_max) with I the
+ * density integral of their part of the ray (exact for overlaps too: optical depths add); their
+ * emission is composited in the order of their entry along the ray (exact where they do not
+ * overlap). own is the sphere the point lies on, (px, py) the pixel (it rotates the pattern).
  */
-double AmbientOcclusion(const Frame& frame, const double p[3], const double n[3], vtkIdType own,
-  int px, int py, std::vector<std::uint32_t>& candidates);
+double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vtkIdType own,
+  int px, int py, AmbientScratch& scratch, double light[3]);
 } // namespace prReference
 
 #endif

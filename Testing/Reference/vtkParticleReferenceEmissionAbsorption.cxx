@@ -1,5 +1,6 @@
 #include "vtkParticleReferenceEmissionAbsorption.h"
 
+#include "vtkParticleReferenceAmbientOcclusion.h"
 #include "vtkParticleReferenceFrame.h"
 
 #include <algorithm>
@@ -39,6 +40,7 @@ struct TranslucentScratch
   std::vector<Event> Events;
   std::vector<int> Active;
   std::vector<double> Depths;
+  AmbientScratch Ambient;
 };
 
 // Density integral of a piece [tau0, tau1] (relative to the closest approach, no core inside
@@ -316,7 +318,24 @@ void RenderTranslucent(const Frame& frame)
       unsigned char insideFront = 0;
       std::uint32_t conesFront = 0;
       double normalFront[3] = { 0, 0, 0 };
+      double occlusionFront = 1.0;
+      double lightFront[3] = { 0, 0, 0 };
       double tOpaqueFront = inf;
+      // Eq. 5-7 at a surface point: A_O and L_A into occlusion and light; the radiance becomes
+      // A_O radiance + alpha_A L_A when they are applied
+      const bool ambient = frame.AmbientOcclusionSamples > 0;
+      auto applyAmbient = [&](const double p[3], const double n[3], std::uint32_t own,
+                            double radiance[3], double& occlusion, double light[3])
+      {
+        occlusion = AmbientTerms(frame, p, n, own, x, y, scratch.Ambient, light);
+        if (frame.ApplyAmbientOcclusion)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            radiance[k] = occlusion * radiance[k] + frame.AmbientIllumination * light[k];
+          }
+        }
+      };
       if (opaqueHit.Index >= 0)
       {
         const vtkIdType pid = ids[opaqueHit.Index];
@@ -325,6 +344,12 @@ void RenderTranslucent(const Frame& frame)
         double color[3];
         double alpha;
         const std::uint32_t cones = frame.ShadeHit(opaqueHit, n, p, color, alpha);
+        double occlusion = 1.0;
+        double light[3] = { 0, 0, 0 };
+        if (ambient)
+        {
+          applyAmbient(p, n, static_cast<std::uint32_t>(opaqueHit.Index), color, occlusion, light);
+        }
         const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
                             std::isfinite(color[2]) && std::isfinite(alpha);
         // otherwise the GPU discards the fragment; at a tie the particle (drawn later,
@@ -344,6 +369,8 @@ void RenderTranslucent(const Frame& frame)
           insideFront = opaqueHit.Inside ? 1 : 0;
           conesFront = cones;
           std::copy(n, n + 3, normalFront);
+          occlusionFront = occlusion;
+          std::copy(light, light + 3, lightFront);
         }
       }
 
@@ -387,6 +414,8 @@ void RenderTranslucent(const Frame& frame)
         std::uint32_t cones = 0;
         double n[3] = { 0, 0, 0 };
         double depth = 0.0;
+        double occlusion = 1.0;
+        double light[3] = { 0, 0, 0 };
         if (seg.Entry)
         {
           double rel[3];
@@ -407,6 +436,12 @@ void RenderTranslucent(const Frame& frame)
           for (int k = 0; k < 3; ++k)
           {
             radiance[k] = (1.0 - volumeMix) * surface[k] + volumeMix * dif[k];
+          }
+          if (ambient)
+          {
+            // a segment without entry surface (the eye or the near plane inside the sphere)
+            // has no front hit x_0: no ambient terms
+            applyAmbient(p, n, seg.Index, radiance, occlusion, light);
           }
           cam.Depth(p, depth);
         }
@@ -435,6 +470,8 @@ void RenderTranslucent(const Frame& frame)
           insideFront = seg.Entry ? 0 : 1;
           conesFront = cones;
           std::copy(n, n + 3, normalFront);
+          occlusionFront = occlusion;
+          std::copy(light, light + 3, lightFront);
         }
         if (exactOverlaps)
         {
@@ -481,6 +518,11 @@ void RenderTranslucent(const Frame& frame)
       out[3] = std::min(1.0, std::max(0.0, 1.0 - transmittance * (1.0 - back[3])));
       frame.WriteSurface(pixel, depthFront, viewDepthFront, idFront, insideFront != 0, conesFront,
         normalFront, particleOpacity);
+      if (idFront >= 0)
+      {
+        frame.AmbientOcclusionOut[pixel] = occlusionFront;
+        std::copy(lightFront, lightFront + 3, frame.AmbientLightOut + 3 * pixel);
+      }
     });
 }
 } // namespace prReference

@@ -53,10 +53,15 @@ struct Frame
   double Background[3] = { 0, 0, 0 };
   double BackgroundAlpha = 0.0;
 
-  // ray-traced ambient occlusion (opaque mode): samples (0: none), distance, applied to colour
+  // ray-traced ambient occlusion: samples (0: none), distance, applied to colour; ambient
+  // illumination: alpha_A of Eq. 7, e_A of Eq. 6, the property's colour (without scalars)
   int AmbientOcclusionSamples = 0;
   double AmbientOcclusionDistance = 0.0;
   bool ApplyAmbientOcclusion = false;
+  double AmbientIllumination = 0.0;
+  double AmbientEmission = 1.0;
+  double PropertyColor[3] = { 1, 1, 1 };
+  double* AmbientLightOut = nullptr; // L_A, 3 per pixel
 
   // outputs, Width x Height, row-major from the bottom row
   double* ColorOut = nullptr;     // RGBA
@@ -92,6 +97,26 @@ struct Frame
    */
   std::uint32_t ShadeHit(
     const Hit& hit, double n[3], double p[3], double color[3], double& alpha) const;
+
+  /**
+   * The colour c_j sphere j (an index into Spheres) emits into ambient rays (Eq. 6), as
+   * vtkParticleAmbientVolume voxelises it: the scalar colour, or the property's colour.
+   */
+  void EmissionColor(std::uint32_t j, double c[3]) const
+  {
+    if (this->RGBA)
+    {
+      const unsigned char* rgba = this->RGBA + 4 * this->Ids[j];
+      for (int k = 0; k < 3; ++k)
+      {
+        c[k] = rgba[k] / 255.0;
+      }
+    }
+    else
+    {
+      std::copy(this->PropertyColor, this->PropertyColor + 3, c);
+    }
+  }
 
   /**
    * Material of a particle as vtkOpenGLPolyDataMapper: ambient and diffuse colours (with their

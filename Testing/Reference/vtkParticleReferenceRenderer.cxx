@@ -79,6 +79,7 @@ vtkParticleReferenceRenderer::vtkParticleReferenceRenderer()
   this->InsideImage->SetName("Inside");
   this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
   this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
+  this->AmbientLightImage = NewImage(0, 0, 3, "AmbientLight");
 }
 
 //------------------------------------------------------------------------------
@@ -113,6 +114,11 @@ vtkImageData* vtkParticleReferenceRenderer::GetNormalImage()
 vtkImageData* vtkParticleReferenceRenderer::GetAmbientOcclusionImage()
 {
   return this->AmbientOcclusionImage;
+}
+
+vtkImageData* vtkParticleReferenceRenderer::GetAmbientLightImage()
+{
+  return this->AmbientLightImage;
 }
 
 //------------------------------------------------------------------------------
@@ -257,6 +263,7 @@ bool vtkParticleReferenceRenderer::Render()
     this->InsideImage->SetNumberOfTuples(0);
     this->TranslucentAlphaImage = NewImage(0, 0, 1, "TranslucentAlpha");
     this->AmbientOcclusionImage = NewImage(0, 0, 1, "AmbientOcclusion");
+    this->AmbientLightImage = NewImage(0, 0, 3, "AmbientLight");
     return false;
   };
   if (!this->Renderer)
@@ -561,6 +568,10 @@ bool vtkParticleReferenceRenderer::Render()
   double* aoOut = vtkDoubleArray::SafeDownCast(
     this->AmbientOcclusionImage->GetPointData()->GetScalars())->GetPointer(0);
   std::fill(aoOut, aoOut + static_cast<size_t>(width) * height, 1.0);
+  this->AmbientLightImage = NewImage(width, height, 3, "AmbientLight");
+  double* ambientLightOut = vtkDoubleArray::SafeDownCast(
+    this->AmbientLightImage->GetPointData()->GetScalars())->GetPointer(0);
+  std::fill(ambientLightOut, ambientLightOut + 3 * static_cast<size_t>(width) * height, 0.0);
   double* translucentAlphaOut = vtkDoubleArray::SafeDownCast(
     this->TranslucentAlphaImage->GetPointData()->GetScalars())
                                   ->GetPointer(0);
@@ -605,19 +616,11 @@ bool vtkParticleReferenceRenderer::Render()
   frame.InsideOut = insideOut;
   frame.ConeOut = coneOut;
   frame.AmbientOcclusionOut = aoOut;
+  frame.AmbientLightOut = ambientLightOut;
   frame.TranslucentAlphaOut = translucentAlphaOut;
 
-  if (transparent)
-  {
-    RenderTranslucent(frame);
-    this->LastRenderSeconds = vtkTimerLog::GetUniversalTime() - startTime;
-    this->Modified();
-    return true;
-  }
-
-  // Ray-traced ambient occlusion: cosine-distributed rays from a visible point, binary
-  // visibility against the real spheres (all of them, the visible one excepted) up to the
-  // distance.
+  // Ray-traced ambient occlusion and illumination (vtkParticleReferenceAmbientOcclusion): up to
+  // the distance, four mean radii by default
   const int aoSamples = this->AmbientOcclusionSamples;
   double aoDistance = this->AmbientOcclusionDistance;
   if (aoSamples > 0 && !(aoDistance > 0.0))
@@ -632,6 +635,17 @@ bool vtkParticleReferenceRenderer::Render()
   frame.AmbientOcclusionSamples = aoSamples;
   frame.AmbientOcclusionDistance = aoDistance;
   frame.ApplyAmbientOcclusion = this->ApplyAmbientOcclusion;
+  frame.AmbientIllumination = this->AmbientIllumination;
+  frame.AmbientEmission = this->AmbientEmission;
+  property->GetColor(frame.PropertyColor);
+
+  if (transparent)
+  {
+    RenderTranslucent(frame);
+    this->LastRenderSeconds = vtkTimerLog::GetUniversalTime() - startTime;
+    this->Modified();
+    return true;
+  }
 
   RenderOpaque(frame);
 
@@ -709,4 +723,9 @@ void vtkParticleReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
   os << indent << "LastGridBuildSeconds: " << this->LastGridBuildSeconds << "\n";
   os << indent << "OpaqueLayer: " << (this->OpaqueLayerColors ? "set" : "none") << "\n";
+  os << indent << "AmbientOcclusionSamples: " << this->AmbientOcclusionSamples << "\n";
+  os << indent << "AmbientOcclusionDistance: " << this->AmbientOcclusionDistance << "\n";
+  os << indent << "ApplyAmbientOcclusion: " << this->ApplyAmbientOcclusion << "\n";
+  os << indent << "AmbientIllumination: " << this->AmbientIllumination << "\n";
+  os << indent << "AmbientEmission: " << this->AmbientEmission << "\n";
 }

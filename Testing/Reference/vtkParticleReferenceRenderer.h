@@ -124,9 +124,12 @@
  *   ((0,0,0) and inside = 1 when the start is clipped), or the opaque particle's hit when no
  *   translucent segment lies in front of it.
  *
+ * Ambient occlusion and ambient illumination (Sec. 3.2 of the paper), ray traced in both modes:
+ * see SetAmbientOcclusionSamples().
+ *
  * Not modelled: gradient or textured backgrounds, image-based lighting, user light transforms
- * (VR), off-axis/stereo projections, render passes (AO, shadows), other props of the renderer,
- * the ambient occlusion and ambient illumination of the paper (Sec. 3.2), early termination
+ * (VR), off-axis/stereo projections, render passes (shadows), other props of the renderer
+ * (neither as occluders of the ambient rays), early termination
  * (the reference always composites every segment). In the opaque mode (plain
  * vtkParticleSphereMapper) an opacity < 1 is shaded as an opaque surface and the opaque layer is
  * ignored.
@@ -246,14 +249,30 @@ public:
 
   ///@{
   /**
-   * Ray-traced ambient occlusion (opaque mode; the ground truth for vtkDensityVolumeAOPass):
-   * with AmbientOcclusionSamples > 0, every visible point casts that many rays into the
-   * hemisphere of its normal, cosine-distributed (a stratified Hammersley set rotated per pixel,
-   * deterministic), against the real spheres up to AmbientOcclusionDistance (0, the default:
-   * four mean radii, one voxel of vtkParticleDensityVolume's automatic grid). The unoccluded
-   * fraction -- Eq. 3 of Staib et al. 2015 / Eq. 1 of Grottel et al. 2012 with a binary
-   * visibility -- is written to GetAmbientOcclusionImage() (1 component; 1 for the
-   * background). With ApplyAmbientOcclusion the colour is the lit colour times that factor, as
+   * Ray-traced ambient occlusion and ambient illumination (Staib et al. 2015, Eq. 3-7; the
+   * ground truth for vtkDensityVolumeAOPass and vtkVoxelConeAOPass): with
+   * AmbientOcclusionSamples > 0, every visible surface point -- the opaque hit, and in the
+   * transparent mode the entry point of every composited segment (a segment that starts clipped
+   * has no surface point and gets none) and of an opaque particle -- casts that many rays into
+   * the hemisphere of its normal, cosine-distributed (a stratified Hammersley set rotated per
+   * pixel, deterministic), through the real spheres (all of them but its own) up to
+   * AmbientOcclusionDistance (0, the default: four mean radii, one voxel of
+   * vtkParticleDensityVolume's automatic grid):
+   * - A_O (Eq. 5) is the mean transmittance of the rays. An opaque sphere (the opaque mode, or
+   *   Theta_i >= 1) stops a ray (binary visibility, Eq. 3); a translucent one attenuates it by
+   *   its exact emission-absorption transmittance exp(-kappa_i I / I_max) over its part of the
+   *   ray, I the density integral of its model (IntegrateDensity()), so optical depths of
+   *   overlapping spheres add.
+   * - L_A (Eq. 6) is the mean radiance the spheres emit into the rays, e_A c_j
+   *   (AmbientEmission times the particle's scalar colour, or the property's colour -- what
+   *   vtkParticleAmbientVolume voxelises), composited front to back in the order of the
+   *   spheres' entries along the ray with their segment opacities (an opaque sphere emits e_A c_j
+   *   with what transmittance is left).
+   * The front-most composited surface's A_O goes to GetAmbientOcclusionImage() (1 component; 1
+   * for the background) and its L_A to GetAmbientLightImage() (3 components; 0 for the
+   * background). With ApplyAmbientOcclusion every such surface's colour becomes Eq. 7,
+   * A_O L + AmbientIllumination L_A, where L is the lit colour (opaque) or the segment's colour
+   * of Eq. 2 ((1 - VolumeMix) L_R + VolumeMix c_i, before its opacity Theta multiplies it), as
    * the mappers' //PR::AmbientOcclusion::Impl hook applies it.
    */
   vtkSetClampMacro(AmbientOcclusionSamples, int, 0, 65536);
@@ -262,7 +281,12 @@ public:
   vtkGetMacro(AmbientOcclusionDistance, double);
   vtkSetMacro(ApplyAmbientOcclusion, bool);
   vtkGetMacro(ApplyAmbientOcclusion, bool);
+  vtkSetClampMacro(AmbientIllumination, double, 0.0, 1e3);
+  vtkGetMacro(AmbientIllumination, double);
+  vtkSetClampMacro(AmbientEmission, double, 0.0, 1e3);
+  vtkGetMacro(AmbientEmission, double);
   vtkImageData* GetAmbientOcclusionImage();
+  vtkImageData* GetAmbientLightImage();
   ///@}
 
   /**
@@ -368,6 +392,9 @@ protected:
   int AmbientOcclusionSamples = 0;
   double AmbientOcclusionDistance = 0.0;
   bool ApplyAmbientOcclusion = false;
+  double AmbientIllumination = 0.0;
+  double AmbientEmission = 1.0;
+  vtkSmartPointer<vtkImageData> AmbientLightImage;
   vtkSmartPointer<vtkDataArray> ParticleRadii;
   vtkSmartPointer<vtkUnsignedCharArray> ParticleColors;
   vtkSmartPointer<vtkDataArray> ParticleOpacities;

@@ -255,11 +255,10 @@ void RenderOpaque(const Frame& frame)
   const int aoSamples = frame.AmbientOcclusionSamples;
   double* colorOut = frame.ColorOut;
   double* aoOut = frame.AmbientOcclusionOut;
-  ForEachPixelRay<std::vector<std::uint32_t>>(frame,
+  ForEachPixelRay<AmbientScratch>(frame,
     [&](int x, int y, std::size_t pixel, const double o[3], const double d[3], double tNear,
-      double tFar, std::vector<std::uint32_t>& scratch)
+      double tFar, AmbientScratch& scratch)
     {
-      std::vector<std::uint32_t>& aoCandidates = scratch;
       Hit hit;
       const double tMin = tNear - 1e-9 * std::abs(tNear) - 1e-300;
       const double tMax = tFar + 1e-9 * std::abs(tFar) + 1e-300;
@@ -282,14 +281,16 @@ void RenderOpaque(const Frame& frame)
         double alpha;
         cones = frame.ShadeHit(hit, n, p, color, alpha);
         double occlusion = 1.0;
+        double light[3] = { 0, 0, 0 };
         if (aoSamples > 0)
         {
-          occlusion = AmbientOcclusion(frame, p, n, hit.Index, x, y, aoCandidates);
+          occlusion = AmbientTerms(frame, p, n, hit.Index, x, y, scratch, light);
           if (frame.ApplyAmbientOcclusion)
           {
+            // Eq. 7: L_E = A_O L_R + alpha_A L_A
             for (int k = 0; k < 3; ++k)
             {
-              color[k] *= occlusion;
+              color[k] = occlusion * color[k] + frame.AmbientIllumination * light[k];
             }
           }
         }
@@ -298,6 +299,7 @@ void RenderOpaque(const Frame& frame)
         if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
         {
           aoOut[pixel] = occlusion;
+          std::copy(light, light + 3, frame.AmbientLightOut + 3 * pixel);
           for (int k = 0; k < 3; ++k)
           {
             rgbaOut[k] = std::min(1.0, std::max(0.0, color[k]));
