@@ -183,6 +183,8 @@ def main():
     parser.add_argument("--frames", type=int, default=5)
     parser.add_argument("--samples", type=int, default=64)
     parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--cache", help="directory for the reference images (reused when the "
+                        "scene, size, samples and distance match)")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     rows = []
@@ -194,7 +196,19 @@ def main():
         distance = 0.25 * scene.extent
         refs = {}
         for illumination in (0.0, 0.5):
-            refs[illumination] = scene.reference(args.samples, distance, illumination)
+            cached = None
+            if args.cache:
+                os.makedirs(args.cache, exist_ok=True)
+                cached = os.path.join(args.cache, "%s_%d_%d_%.4f_%.1f.npz" % (
+                    name, args.size, args.samples, distance, illumination))
+            if cached and os.path.exists(cached):
+                z = np.load(cached)
+                refs[illumination] = (z["value"], z["mask"], float(z["seconds"]))
+            else:
+                refs[illumination] = scene.reference(args.samples, distance, illumination)
+                if cached:
+                    np.savez(cached, value=refs[illumination][0], mask=refs[illumination][1],
+                             seconds=refs[illumination][2])
             print("%s: %d particles, mean Theta %.2f, reference (alpha_A %.1f, distance %.2f): "
                   "%.1f s, mean %.3f" % (name, scene.data.GetNumberOfPoints(), scene.mean_theta,
                                           illumination, distance, refs[illumination][2],

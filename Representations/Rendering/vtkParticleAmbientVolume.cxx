@@ -188,34 +188,45 @@ bool vtkParticleAmbientVolume::SetUpGrid(
   {
     n = maximum;
   }
+  // halve until the grid fits the memory bound and the GPU's 3D texture size; one warning
+  // names the first grid and the one it became
+  int wantedDims[3] = { 0, 0, 0 };
+  double wantedBytes = 0.0;
+  const char* reason = nullptr;
   for (;;)
   {
     const double edge = longest / n;
     int dims[3];
-    bool fits = true;
+    bool tooLarge = false;
     for (int k = 0; k < 3; ++k)
     {
       dims[k] = NextPowerOfTwo(std::max(1, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
       if (deviceAxisLimit > 0 && dims[k] > deviceAxisLimit)
       {
-        fits = false;
+        tooLarge = true;
       }
     }
     const double voxels = static_cast<double>(dims[0]) * dims[1] * dims[2];
     const double bytes = voxels * 8.0 * 8.0 / 7.0; // RGBA16F with all mips
-    if (bytes > this->MaximumMemory * 1048576.0)
+    const bool tooMuch = bytes > this->MaximumMemory * 1048576.0;
+    if ((tooLarge || tooMuch) && n > 1)
     {
-      fits = false;
-    }
-    if (!fits && n > 1)
-    {
-      vtkWarningMacro(<< "The ambient volume of " << dims[0] << "x" << dims[1] << "x" << dims[2]
-                      << " voxels (" << bytes / 1048576.0 << " MiB with its mips) exceeds "
-                      << (bytes > this->MaximumMemory * 1048576.0 ? "MaximumMemory"
-                                                                   : "the largest 3D texture")
-                      << ": halving the resolution.");
+      if (!reason)
+      {
+        std::copy(dims, dims + 3, wantedDims);
+        wantedBytes = bytes;
+        reason = tooMuch ? "MaximumMemory" : "the largest 3D texture";
+      }
       n /= 2;
       continue;
+    }
+    if (reason)
+    {
+      vtkWarningMacro(<< "The ambient volume of " << wantedDims[0] << "x" << wantedDims[1] << "x"
+                      << wantedDims[2] << " voxels (" << wantedBytes / 1048576.0
+                      << " MiB with its mips) exceeds " << reason << ": reduced to " << dims[0]
+                      << "x" << dims[1] << "x" << dims[2] << " voxels (" << bytes / 1048576.0
+                      << " MiB).");
     }
     for (int k = 0; k < 3; ++k)
     {
@@ -256,7 +267,10 @@ bool vtkParticleAmbientVolume::Voxelise(const std::vector<double>& centers,
   {
     const double* c = &centers[3 * i];
     const double r = radii[i];
-    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(c[0] + c[1] + c[2]))
+    // clear particles (<Theta> <= 0, or NaN) are not drawn and occlude nothing: they do not
+    // stretch the grid either
+    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(c[0] + c[1] + c[2]) ||
+      !(meanOpacities[i] > 0.0))
     {
       continue;
     }
@@ -270,8 +284,8 @@ bool vtkParticleAmbientVolume::Voxelise(const std::vector<double>& centers,
   }
   if (valid.empty())
   {
-    vtkWarningMacro(<< "No particle with a finite position and a radius > 0: the ambient "
-                       "volume stays empty.");
+    vtkWarningMacro(<< "No particle with a finite position, a radius > 0 and an opacity > 0: "
+                       "the ambient volume stays empty.");
     return false;
   }
   return this->VoxeliseValid(centers, radii, colors, meanOpacities, valid, bounds,

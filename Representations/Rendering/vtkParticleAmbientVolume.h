@@ -123,8 +123,9 @@ public:
   /**
    * Voxelise given spheres (world coordinates; colours RGB in [0,1], 3 per sphere; opacities are
    * the mean disc opacities <Theta_i>) into the grid set up for their bounds, on the CPU, without
-   * a texture (EndParticles uses it; tests call it directly). Spheres with a radius <= 0 or a
-   * non-finite value are skipped. deviceAxisLimit > 0 caps the voxels per axis further.
+   * a texture (EndParticles uses it; tests call it directly). Spheres with a radius <= 0, a mean
+   * opacity <= 0 (clear: not drawn) or a non-finite value are skipped. deviceAxisLimit > 0
+   * caps the voxels per axis further.
    */
   bool Voxelise(const std::vector<double>& centers, const std::vector<double>& radii,
     const std::vector<double>& colors, const std::vector<double>& meanOpacities,
