@@ -40,7 +40,8 @@
  * a larger grid is halved with a warning. The GPU's largest 3D texture bounds every axis.
  *
  * The voxelisation runs on the CPU (vtkSMPTools, slab by slab along z, no races), the mips too;
- * both are uploaded level by level into one texture with trilinear mip filtering.
+ * both are converted to half floats in parallel and uploaded level by level into one texture
+ * with trilinear mip filtering.
  *
  * @sa vtkVoxelConeAOPass vtkParticleDensityVolume
  */
@@ -148,6 +149,24 @@ public:
   vtkGetMacro(TextureBytes, double);
 
   /**
+   * IEEE half-float bits of a float, rounded to nearest even (the texture upload's conversion):
+   * beyond the largest half (65504) and Inf give 65504, NaN gives 0, subnormals are kept.
+   */
+  static unsigned short FloatToHalf(float value);
+
+  ///@{
+  /**
+   * Wall times of the stages of the last build, in seconds (for benchmarks): gathering the
+   * spheres from the props (EndParticles), voxelising level 0, building the mips (both
+   * Voxelise), uploading the texture (EndParticles, finished with glFinish).
+   */
+  vtkGetMacro(LastGatherSeconds, double);
+  vtkGetMacro(LastVoxeliseSeconds, double);
+  vtkGetMacro(LastMipSeconds, double);
+  vtkGetMacro(LastUploadSeconds, double);
+  ///@}
+
+  /**
    * Level l of the pyramid (RGBA floats, x fastest), as last voxelised on the CPU.
    */
   const std::vector<float>& GetLevel(int level) const;
@@ -173,6 +192,10 @@ protected:
   double Origin[3] = { 0.0, 0.0, 0.0 };
   double VoxelSize = 0.0;
   int NumberOfLevels = 0;
+  double LastGatherSeconds = 0.0;
+  double LastVoxeliseSeconds = 0.0;
+  double LastMipSeconds = 0.0;
+  double LastUploadSeconds = 0.0;
   double TextureBytes = 0.0;
 
 private:

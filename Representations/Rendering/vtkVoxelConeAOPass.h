@@ -9,8 +9,10 @@
  * renderer's props are voxelised into an RGBA volume with a mip pyramid
  * (vtkParticleAmbientVolume, Sec. 5.1: overlap weights, ambient transfer functions
  * pre-classified; translucent particles occlude less), and every visible sphere fragment -- the
- * opaque spheres and the front hit of the emission-absorption glyphs -- traces ConeCount cones
- * around its normal through it (Sec. 5.2, Shaders/VoxelConeTrace.glsl):
+ * opaque spheres and the entry point of every emission-absorption glyph (its L_RV of Eq. 2,
+ * surface and volume part, is occluded; its alpha_A L_A is emitted with its opacity, see
+ * vtkTransparentSphereMapper) -- traces ConeCount cones around its normal through it (Sec. 5.2,
+ * Shaders/VoxelConeTrace.glsl):
  *
  *   A_O = sum_k w_k tau_k   (Eq. 5: the transmittance along the cones, not binary visibility)
  *   L_A = sum_k w_k L_k     (Eq. 6: the ambient emission that reaches the point)
@@ -32,6 +34,11 @@
  *
  * Memory: see vtkParticleAmbientVolume (256^3 voxels with mips: 153 MB as RGBA16F;
  * MaximumMemory bounds it with a warning).
+ *
+ * Accuracy (Benchmarks/README.md): against vtkParticleReferenceRenderer's transparency-aware
+ * ray-traced Eq. 5/7, RMSE 0.036-0.048 of the pixel on translucent LAMMPS scenes at the defaults
+ * (0.33-0.41 without AO). The cone length acts in whole steps (the diameter about doubles per
+ * step with the default aperture).
  *
  * @sa vtkParticleAmbientVolume vtkDensityVolumeAOPass vtkTransparentSphereMapper
  */

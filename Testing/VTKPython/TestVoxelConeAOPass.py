@@ -60,6 +60,24 @@ numeric = float(np.sum((1.0 - np.exp(math.log1p(-theta) * path)) * 2.0 * u) / le
 check(abs(mean(theta, 0, f) - numeric) < 2e-6,
       "hollow constant density, theta 0.9: %.7f vs numeric %.7f" % (mean(theta, 0, f), numeric))
 
+# --- the texture's half floats: the same bits as numpy's float16 (round to nearest even) -------
+half = pr.vtkParticleAmbientVolume.FloatToHalf
+rng16 = np.random.default_rng(11)
+samples = np.concatenate([
+    np.exp(rng16.uniform(np.log(1e-9), np.log(65000.0), 20000)).astype(np.float32),
+    np.array([0.0, 2.0 ** -24, 2.0 ** -25, 1.5 * 2.0 ** -25, 2.0 ** -14, 65504.0, 1.0, 0.5,
+              1.0 + 2.0 ** -11, 1.0 + 3 * 2.0 ** -11], dtype=np.float32),
+    # exact ties between neighbouring halves
+    (np.arange(1, 2000, dtype=np.float32) * np.float32(2.0 ** -24) + np.float32(2.0 ** -25)),
+    np.float32(1.0) + np.arange(0, 2000, dtype=np.float32) * np.float32(2.0 ** -11)])
+ours = np.array([half(float(v)) for v in samples], dtype=np.uint16)
+numpy_bits = samples.astype(np.float16).view(np.uint16)
+mismatch = int((ours != numpy_bits).sum())
+check(mismatch == 0, "FloatToHalf agrees with numpy's float16 on %d values (%d differ, e.g. %s)"
+      % (len(samples), mismatch, samples[ours != numpy_bits][:3]))
+check(half(float("nan")) == 0 and half(1e30) == 0x7bff and half(float("inf")) == 0x7bff,
+      "FloatToHalf: NaN -> 0, beyond 65504 and Inf -> 65504")
+
 # --- voxelisation conserves the extinction -------------------------------------------------
 rng = np.random.default_rng(7)
 n = 400
