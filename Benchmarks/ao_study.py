@@ -58,7 +58,7 @@ class Scene:
         self.data = reader.GetOutput()
         radii = vtk_to_numpy(self.data.GetPointData().GetArray("radius"))
         self.mean_radius = float(radii.mean())
-        self.mapper = pr.vtkParticleSphereMapper()
+        self.mapper = self.make_mapper()
         self.mapper.SetInputData(self.data)
         self.mapper.SetRadiusArrayName("radius")
         self.mapper.ScalarVisibilityOff()
@@ -98,6 +98,10 @@ class Scene:
             camera.Zoom(1.3)
         self.window.Render()
         self.camera_state = (camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp())
+
+    def make_mapper(self):
+        """The particles' mapper (a subclass may draw them otherwise)."""
+        return pr.vtkParticleSphereMapper()
 
     def reset_camera(self):
         camera = self.renderer.GetActiveCamera()

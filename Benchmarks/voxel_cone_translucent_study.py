@@ -36,13 +36,11 @@ import time
 import numpy as np
 
 import particlerendering as pr
+import ao_study
 from ao_study import errors
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkIdList
 from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
@@ -62,87 +60,24 @@ def density_opacity(data, radius):
     return np.clip(1.0 - 0.9 * counts / bulk, 0.1, 0.9)
 
 
-class Scene:
-    def __init__(self, name, path, size, frames):
-        self.name = name
-        self.size = size
-        self.frames = frames
-        reader = vtkXMLPolyDataReader()
-        reader.SetFileName(path)
-        reader.Update()
-        self.data = reader.GetOutput()
-        radii = vtk_to_numpy(self.data.GetPointData().GetArray("radius"))
-        self.mean_radius = float(radii.mean())
-        theta = density_opacity(self.data, self.mean_radius)
+class Scene(ao_study.Scene):
+    """ao_study's scene (white ambient-only material, the oblique camera) with the particles as
+    emission-absorption spheres whose Theta_i comes from the local density."""
+
+    def make_mapper(self):
+        radius = float(vtk_to_numpy(self.data.GetPointData().GetArray("radius")).mean())
+        theta = density_opacity(self.data, radius)
         array = numpy_to_vtk(theta.astype(np.float32), deep=True)
         array.SetName("opacity")
         self.data.GetPointData().AddArray(array)
         self.mean_theta = float(theta.mean())
-        self.mapper = pr.vtkTransparentSphereMapper()
-        self.mapper.SetInputData(self.data)
-        self.mapper.SetRadiusArrayName("radius")
-        self.mapper.SetOpacityArrayName("opacity")
-        self.mapper.SetOpacityRange(0.0, 1.0)
-        self.mapper.SetVolumeMix(0.0)
-        self.mapper.ScalarVisibilityOff()
-        self.actor = vtkActor()
-        self.actor.SetMapper(self.mapper)
-        prop = self.actor.GetProperty()
-        prop.SetColor(1, 1, 1)
-        prop.SetAmbient(1)
-        prop.SetDiffuse(0)
-        prop.SetSpecular(0)
-        self.renderer = vtkRenderer()
-        self.renderer.AddActor(self.actor)
-        self.renderer.SetBackground(0, 0, 0)
-        self.window = vtkRenderWindow()
-        self.window.SetSize(size, size)
-        self.window.SetMultiSamples(0)
-        self.window.AddRenderer(self.renderer)
-        camera = self.renderer.GetActiveCamera()
         b = self.data.GetBounds()
-        centre = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2]
-        camera.SetFocalPoint(*centre)
-        camera.SetPosition(centre[0] + 0.9 * (b[1] - b[0]), centre[1] - 1.2 * (b[3] - b[2]),
-                           centre[2] + 0.8 * (b[5] - b[4]))
-        camera.SetViewUp(0, 0, 1)
-        self.renderer.ResetCamera()
-        camera.Zoom(1.3)
-        self.window.Render()
-        self.camera_state = (camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp())
-        self.extent = max(b[1] - b[0], b[3] - b[2], b[5] - b[4]) + 2 * self.mean_radius
-
-    def reset_camera(self):
-        camera = self.renderer.GetActiveCamera()
-        camera.SetPosition(*self.camera_state[0])
-        camera.SetFocalPoint(*self.camera_state[1])
-        camera.SetViewUp(*self.camera_state[2])
-        self.renderer.ResetCameraClippingRange()
-
-    def frame(self):
-        start = time.perf_counter()
-        self.window.Render()
-        self.window.GetZbufferDataAtPoint(0, 0)  # waits for the GPU
-        return time.perf_counter() - start
-
-    def timed(self):
-        self.frame()
-        times = []
-        for _ in range(self.frames):
-            self.renderer.GetActiveCamera().Azimuth(0.2)
-            times.append(self.frame())
-        self.reset_camera()
-        return min(times)
-
-    def image(self):
-        self.reset_camera()
-        self.frame()
-        grab = vtkWindowToImageFilter()
-        grab.SetInput(self.window)
-        grab.ReadFrontBufferOff()
-        grab.Update()
-        rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-        return rgb.reshape(self.size, self.size, -1)[:, :, 0].astype(np.float64) / 255.0
+        self.extent = max(b[1] - b[0], b[3] - b[2], b[5] - b[4]) + 2 * radius
+        mapper = pr.vtkTransparentSphereMapper()
+        mapper.SetOpacityArrayName("opacity")
+        mapper.SetOpacityRange(0.0, 1.0)
+        mapper.SetVolumeMix(0.0)
+        return mapper
 
     def reference(self, samples, distance, illumination):
         ref = pr.vtkParticleReferenceRenderer()
