@@ -703,7 +703,7 @@ bool vtkParticleAmbientVolume::EndParticles(
 
   // upload: converted to half floats here, in parallel (a float upload into RGBA16F makes the
   // driver convert on one core: 1.1 s for 256^3 on llvmpipe); level 0's storage through
-  // vtkTextureObject, every level's data with glTexImage3D
+  // vtkTextureObject, the mips' with glTexImage3D
   texture->SetContext(context);
   texture->SetInternalFormat(GL_RGBA16F);
   const int* dims = this->Dimensions;
@@ -733,8 +733,17 @@ bool vtkParticleAmbientVolume::EndParticles(
         half[i] = vtkParticleAmbientVolume::FloatToHalf(values[i]);
       }
     });
-    glTexImage3D(GL_TEXTURE_3D, level, GL_RGBA16F, size[0], size[1], size[2], 0, GL_RGBA,
-      GL_HALF_FLOAT, half.data());
+    if (level == 0)
+    {
+      // into the storage vtkTextureObject allocated (no second allocation)
+      glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, size[0], size[1], size[2], GL_RGBA,
+        GL_HALF_FLOAT, half.data());
+    }
+    else
+    {
+      glTexImage3D(GL_TEXTURE_3D, level, GL_RGBA16F, size[0], size[1], size[2], 0, GL_RGBA,
+        GL_HALF_FLOAT, half.data());
+    }
   }
   texture->SetBaseLevel(0);
   texture->SetMaxLevel(this->NumberOfLevels - 1);

@@ -40,7 +40,6 @@
 #include <array>
 #include <cmath>
 #include <iostream>
-#include <sstream>
 #include <vector>
 
 namespace

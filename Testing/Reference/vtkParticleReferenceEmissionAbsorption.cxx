@@ -437,10 +437,11 @@ void RenderTranslucent(const Frame& frame)
           {
             radiance[k] = (1.0 - volumeMix) * surface[k] + volumeMix * dif[k];
           }
-          if (ambient)
+          // a segment without entry surface (the eye or the near plane inside the sphere) has
+          // no front hit x_0: no ambient terms; without ApplyAmbientOcclusion only the front
+          // surface's terms are used (the images)
+          if (ambient && (frame.ApplyAmbientOcclusion || !haveFront))
           {
-            // a segment without entry surface (the eye or the near plane inside the sphere)
-            // has no front hit x_0: no ambient terms
             applyAmbient(p, n, seg.Index, radiance, occlusion, light);
           }
           cam.Depth(p, depth);
