@@ -8,10 +8,13 @@ coloured by type, 640 x 480. Modes, each in a fresh renderer of the same window:
   transparent        vtkTransparentSphereMapper (sorted every frame the camera moves)
   transparent+vc     the same with vtkVoxelConeAOPass, per fragment (the defaults)
   transparent+vc-ps  the same, per-sphere retrieval
+  transparent+vc-cpu per fragment, the volume voxelised on the CPU and uploaded
+                     (GPUVoxelisation off) instead of in compute shaders
 Per mode: the first frame, the median of FRAMES frames of a rotating camera (1 degree per frame:
 sort + trace, no voxelisation), a static camera, and a time series (the positions marked modified
 every frame: voxelise + mips + upload + sort + trace). Stages (last time-series frame): gather,
-voxelise, mip, upload (vtkParticleAmbientVolume's wall times), sort (GPU timer query of the
+voxelise, mip, upload (vtkParticleAmbientVolume's wall times, each finished with glFinish; on the
+GPU "upload" is the spheres' and "mip" includes storing the levels into the texture), sort (GPU timer query of the
 depth sort), trace = rotating(transparent+vc) - rotating(transparent). ratio_vs_opaque =
 rotating frame / the opaque core's rotating frame.
 
@@ -38,7 +41,7 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
-MODES = ("opaque", "transparent", "transparent+vc", "transparent+vc-ps")
+MODES = ("opaque", "transparent", "transparent+vc", "transparent+vc-ps", "transparent+vc-cpu")
 
 
 def tiled(path, k):
@@ -91,6 +94,7 @@ def make_renderer(data, mode):
         aopass = pr.vtkVoxelConeAOPass()
         aopass.SetDelegatePass(vtkRenderStepsPass())
         aopass.SetRetrievalMode(1 if mode.endswith("-ps") else 0)
+        aopass.GetAmbientVolume().SetGPUVoxelisation(not mode.endswith("-cpu"))
         renderer.SetPass(aopass)
     return renderer, mapper, aopass
 
@@ -134,7 +138,8 @@ def measure(window, data, mode, frames):
                    mip_s=volume.GetLastMipSeconds(), upload_s=volume.GetLastUploadSeconds(),
                    dims="%dx%dx%d" % volume.GetDimensions(),
                    texture_mb=volume.GetTextureBytes() / 1e6,
-                   builds=aopass.GetNumberOfVolumeBuilds())
+                   builds=aopass.GetNumberOfVolumeBuilds(),
+                   on_gpu=int(volume.GetLastBuildOnGPU()))
     window.RemoveRenderer(renderer)
     renderer.ReleaseGraphicsResources(window)
     return row
@@ -176,7 +181,7 @@ def main():
                           if key in row)), flush=True)
     fields = ["particles", "size", "mode", "first_frame_s", "rotating_s", "static_s", "series_s",
               "ratio_vs_opaque", "sort_gpu_s", "gather_s", "voxelise_s", "mip_s", "upload_s",
-              "trace_s", "dims", "texture_mb", "builds"]
+              "trace_s", "dims", "texture_mb", "builds", "on_gpu"]
     with open(os.path.join(args.out, "voxel_cone_benchmark.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         writer.writeheader()
@@ -193,7 +198,8 @@ def plot(rows, out):
     counts = sorted({r["particles"] for r in rows})
     fig, axes = plt.subplots(1, 2, figsize=(13, 4.8))
     ax = axes[0]
-    for mode, colour in zip(MODES, ("tab:gray", "tab:blue", "tab:red", "tab:orange")):
+    for mode, colour in zip(MODES, ("tab:gray", "tab:blue", "tab:red", "tab:orange",
+                                    "tab:purple")):
         pts = sorted([r for r in rows if r["mode"] == mode], key=lambda r: r["particles"])
         ax.plot([r["particles"] for r in pts], [r["rotating_s"] for r in pts], "o-",
                 color=colour, label=mode + " (rotating)")
@@ -206,14 +212,17 @@ def plot(rows, out):
     ax.legend(fontsize=7)
     ax = axes[1]
     stages = ("sort_gpu_s", "gather_s", "voxelise_s", "mip_s", "upload_s", "trace_s")
-    vc = sorted([r for r in rows if r["mode"] == "transparent+vc"], key=lambda r: r["particles"])
+    vc = sorted([r for r in rows if r["mode"] in ("transparent+vc", "transparent+vc-cpu")],
+                key=lambda r: (r["particles"], r["mode"]))
+    labels = ["%d\n%s" % (r["particles"], "CPU" if r["mode"].endswith("-cpu") else "GPU")
+              for r in vc]
     bottom = np.zeros(len(vc))
     for stage in stages:
         values = np.array([max(0.0, float(r.get(stage, 0.0) or 0.0)) for r in vc])
-        ax.bar([str(r["particles"]) for r in vc], values, bottom=bottom, label=stage[:-2])
+        ax.bar(labels, values, bottom=bottom, label=stage[:-2])
         bottom += values
     ax.set_ylabel("seconds per stage (time-series frame; trace from the rotating frames)")
-    ax.set_xlabel("particles (transparency + voxel-cone AO, per fragment)")
+    ax.set_xlabel("particles, voxelised on the GPU (compute) or the CPU (per fragment)")
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "voxel_cone_benchmark.png"), dpi=110)

@@ -7,11 +7,16 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkParticleComputeProgram.h"
 #include "vtkParticleMemory.h"
+#include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
@@ -21,6 +26,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -90,6 +96,24 @@ class vtkParticleAmbientVolume::vtkInternals
 public:
   std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> Props;
   std::vector<std::vector<float>> Levels;
+  std::vector<Sphere> Spheres; // the last PrepareSpheres(), voxel units
+
+  // GPU voxelisation: the four compute stages, their buffers, the pyramid's float offsets
+  vtkNew<vtkParticleComputeProgram> Weights;
+  vtkNew<vtkParticleComputeProgram> Deposit;
+  vtkNew<vtkParticleComputeProgram> Mip;
+  vtkNew<vtkParticleComputeProgram> Store;
+  vtkSmartPointer<vtkOpenGLBufferObject> Geometry = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Material = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Items = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Sums = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Accumulator =
+    vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  size_t AccumulatorFloats = 0;
+  std::vector<size_t> Offsets;
+  vtkOpenGLRenderWindow* Context = nullptr;
+  bool WarnedNoCompute = false;
+  unsigned int TextureHandle = 0; // the texture AllocateTexture() made all levels of
 };
 
 //------------------------------------------------------------------------------
@@ -210,7 +234,8 @@ bool vtkParticleAmbientVolume::SetUpGrid(
       }
     }
     const double voxels = static_cast<double>(dims[0]) * dims[1] * dims[2];
-    const double bytes = voxels * 8.0 * 8.0 / 7.0; // RGBA16F with all mips
+    // RGBA16F with all mips, and the float pyramid it is built from (16 bytes per voxel)
+    const double bytes = voxels * (8.0 + 16.0) * 8.0 / 7.0;
     const bool tooMuch = bytes > this->MaximumMemory * 1048576.0;
     if ((tooLarge || tooMuch) && n > 1)
     {
@@ -227,7 +252,7 @@ bool vtkParticleAmbientVolume::SetUpGrid(
     {
       vtkWarningMacro(<< "The ambient volume of " << wantedDims[0] << "x" << wantedDims[1] << "x"
                       << wantedDims[2] << " voxels (" << wantedBytes / 1048576.0
-                      << " MiB with its mips) exceeds " << reason << ": reduced to " << dims[0]
+                      << " MiB with its mips and their float accumulator) exceeds " << reason << ": reduced to " << dims[0]
                       << "x" << dims[1] << "x" << dims[2] << " voxels (" << bytes / 1048576.0
                       << " MiB).");
     }
@@ -237,7 +262,7 @@ bool vtkParticleAmbientVolume::SetUpGrid(
       this->Origin[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]) - 0.5 * dims[k] * edge;
     }
     this->VoxelSize = edge;
-    this->TextureBytes = bytes;
+    this->TextureBytes = voxels * 8.0 * 8.0 / 7.0;
     int levels = 1;
     while ((std::max(std::max(dims[0], dims[1]), dims[2]) >> (levels - 1)) > 1)
     {
@@ -253,6 +278,25 @@ bool vtkParticleAmbientVolume::Voxelise(const std::vector<double>& centers,
   const std::vector<double>& radii, const std::vector<double>& colors,
   const std::vector<double>& meanOpacities, int deviceAxisLimit)
 {
+  if (!this->PrepareSpheres(centers, radii, colors, meanOpacities, deviceAxisLimit))
+  {
+    return false;
+  }
+  this->DepositOnCPU();
+  const double mipStart = vtkTimerLog::GetUniversalTime();
+  this->BuildMips();
+  this->LastMipSeconds = vtkTimerLog::GetUniversalTime() - mipStart;
+  this->LastBuildOnGPU = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::PrepareSpheres(const std::vector<double>& centers,
+  const std::vector<double>& radii, const std::vector<double>& colors,
+  const std::vector<double>& meanOpacities, int deviceAxisLimit)
+{
+  this->Internals->Spheres.clear();
+  this->Internals->Levels.clear();
   const size_t n = radii.size();
   if (centers.size() != 3 * n || colors.size() != 3 * n || meanOpacities.size() != n)
   {
@@ -291,17 +335,8 @@ bool vtkParticleAmbientVolume::Voxelise(const std::vector<double>& centers,
                        "the ambient volume stays empty.");
     return false;
   }
-  return this->VoxeliseValid(centers, radii, colors, meanOpacities, valid, bounds,
-    radiusSum / static_cast<double>(valid.size()), deviceAxisLimit);
-}
-
-//------------------------------------------------------------------------------
-bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
-  const std::vector<double>& radii, const std::vector<double>& colors,
-  const std::vector<double>& meanOpacities, const std::vector<size_t>& valid,
-  const double bounds[6], double meanRadius, int deviceAxisLimit)
-{
-  const double voxeliseStart = vtkTimerLog::GetUniversalTime();
+  const double meanRadius = radiusSum / static_cast<double>(valid.size());
+  const double prepareStart = vtkTimerLog::GetUniversalTime();
   if (!this->SetUpGrid(bounds, meanRadius, deviceAxisLimit))
   {
     return false;
@@ -311,6 +346,8 @@ bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
   const int nz = this->Dimensions[2];
   const double voxels = static_cast<double>(nx) * ny * nz;
   std::string why;
+  // the float pyramid: in host memory on the CPU path, the accumulator on the GPU path (the
+  // same memory on llvmpipe)
   if (!vtkParticleMemory::CanAllocate(voxels * 4.0 * sizeof(float) * 8.0 / 7.0, why))
   {
     vtkErrorMacro(<< "The " << nx << "x" << ny << "x" << nz << " ambient volume " << why
@@ -321,7 +358,8 @@ bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
 
   // the spheres with their extinction: sigma per voxel edge for w = 1 is
   // (3 / (4 r)) <Theta> edge (number density times cross-section, see the class description)
-  std::vector<Sphere> spheres(valid.size());
+  std::vector<Sphere>& spheres = this->Internals->Spheres;
+  spheres.resize(valid.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(valid.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType j = begin; j < end; ++j)
     {
@@ -338,6 +376,19 @@ bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
     }
   });
 
+  this->LastVoxeliseSeconds = vtkTimerLog::GetUniversalTime() - prepareStart;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::DepositOnCPU()
+{
+  const double voxeliseStart = vtkTimerLog::GetUniversalTime();
+  const std::vector<Sphere>& spheres = this->Internals->Spheres;
+  const int nx = this->Dimensions[0];
+  const int ny = this->Dimensions[1];
+  const int nz = this->Dimensions[2];
+  const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
   // spheres per z slab (each slab is then voxelised by one thread: no races)
   std::vector<vtkIdType> slabStart(nz + 1, 0);
   auto zRange = [&](const Sphere& s, int& z0, int& z1) {
@@ -505,11 +556,7 @@ bool vtkParticleAmbientVolume::VoxeliseValid(const std::vector<double>& centers,
       }
     }
   });
-  const double mipStart = vtkTimerLog::GetUniversalTime();
-  this->LastVoxeliseSeconds = mipStart - voxeliseStart;
-  this->BuildMips();
-  this->LastMipSeconds = vtkTimerLog::GetUniversalTime() - mipStart;
-  return true;
+  this->LastVoxeliseSeconds += vtkTimerLog::GetUniversalTime() - voxeliseStart;
 }
 
 //------------------------------------------------------------------------------
@@ -694,19 +741,71 @@ bool vtkParticleAmbientVolume::EndParticles(
     offset += n;
   }
   this->LastGatherSeconds = vtkTimerLog::GetUniversalTime() - gatherStart;
-  if (!this->Voxelise(centers, radii, colors, opacities,
+  return this->BuildTexture(context, texture, centers, radii, colors, opacities);
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::BuildTexture(vtkOpenGLRenderWindow* context,
+  vtkTextureObject* texture, const std::vector<double>& centers, const std::vector<double>& radii,
+  const std::vector<double>& colors, const std::vector<double>& meanOpacities)
+{
+  if (!context || !texture)
+  {
+    vtkErrorMacro(<< "BuildTexture() needs a context and a texture.");
+    return false;
+  }
+  if (!this->PrepareSpheres(centers, radii, colors, meanOpacities,
         vtkTextureObject::GetMaximumTextureSize3D(context)))
   {
     return false;
   }
-  const double uploadStart = vtkTimerLog::GetUniversalTime();
+  if (this->GPUVoxelisation)
+  {
+    std::string why;
+    if (!vtkParticleComputeProgram::IsSupported(context, &why))
+    {
+      if (!this->Internals->WarnedNoCompute)
+      {
+        vtkWarningMacro(<< why << ": the ambient volume is voxelised on the CPU.");
+        this->Internals->WarnedNoCompute = true;
+      }
+    }
+    else if (this->VoxeliseOnGPU(context, texture))
+    {
+      return true;
+    }
+    else
+    {
+      vtkWarningMacro(<< "The GPU voxelisation failed (see above): voxelising on the CPU.");
+    }
+  }
+  this->DepositOnCPU();
+  const double mipStart = vtkTimerLog::GetUniversalTime();
+  this->BuildMips();
+  this->LastMipSeconds = vtkTimerLog::GetUniversalTime() - mipStart;
+  this->LastBuildOnGPU = false;
+  return this->UploadLevels(context, texture);
+}
 
-  // upload: converted to half floats here, in parallel (a float upload into RGBA16F makes the
-  // driver convert on one core: 1.1 s for 256^3 on llvmpipe); level 0's storage through
-  // vtkTextureObject, the mips' with glTexImage3D
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::AllocateTexture(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  // level 0's storage through vtkTextureObject, the mips' with glTexImage3D (no data); kept when
+  // the grid did not change (a time series overwrites every level: no reallocation)
+  const int* dims = this->Dimensions;
+  if (texture->GetHandle() != 0 && texture->GetContext() == context &&
+    texture->GetTarget() == GL_TEXTURE_3D && texture->GetWidth() == static_cast<unsigned>(dims[0]) &&
+    texture->GetHeight() == static_cast<unsigned>(dims[1]) &&
+    texture->GetDepth() == static_cast<unsigned>(dims[2]) &&
+    texture->GetMaxLevel() == this->NumberOfLevels - 1 &&
+    texture->GetHandle() == this->Internals->TextureHandle)
+  {
+    texture->Bind();
+    return true;
+  }
   texture->SetContext(context);
   texture->SetInternalFormat(GL_RGBA16F);
-  const int* dims = this->Dimensions;
   if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], 4, VTK_FLOAT, nullptr))
   {
     vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
@@ -714,36 +813,15 @@ bool vtkParticleAmbientVolume::EndParticles(
     return false;
   }
   texture->Bind();
-  std::vector<std::uint16_t> half;
   int size[3] = { dims[0], dims[1], dims[2] };
-  for (int level = 0; level < this->NumberOfLevels; ++level)
+  for (int level = 1; level < this->NumberOfLevels; ++level)
   {
-    if (level > 0)
+    for (int k = 0; k < 3; ++k)
     {
-      for (int k = 0; k < 3; ++k)
-      {
-        size[k] = std::max(1, size[k] / 2);
-      }
+      size[k] = std::max(1, size[k] / 2);
     }
-    const std::vector<float>& values = internals.Levels[level];
-    half.resize(values.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType b, vtkIdType e) {
-      for (vtkIdType i = b; i < e; ++i)
-      {
-        half[i] = vtkParticleAmbientVolume::FloatToHalf(values[i]);
-      }
-    });
-    if (level == 0)
-    {
-      // into the storage vtkTextureObject allocated (no second allocation)
-      glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, size[0], size[1], size[2], GL_RGBA,
-        GL_HALF_FLOAT, half.data());
-    }
-    else
-    {
-      glTexImage3D(GL_TEXTURE_3D, level, GL_RGBA16F, size[0], size[1], size[2], 0, GL_RGBA,
-        GL_HALF_FLOAT, half.data());
-    }
+    glTexImage3D(GL_TEXTURE_3D, level, GL_RGBA16F, size[0], size[1], size[2], 0, GL_RGBA,
+      GL_HALF_FLOAT, nullptr);
   }
   texture->SetBaseLevel(0);
   texture->SetMaxLevel(this->NumberOfLevels - 1);
@@ -754,10 +832,306 @@ bool vtkParticleAmbientVolume::EndParticles(
   texture->SetWrapR(vtkTextureObject::ClampToBorder);
   texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
   texture->SendParameters();
+  this->Internals->TextureHandle = texture->GetHandle();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::UploadLevels(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  const double uploadStart = vtkTimerLog::GetUniversalTime();
+  if (!this->AllocateTexture(context, texture))
+  {
+    return false;
+  }
+  // converted to half floats here, in parallel (a float upload into RGBA16F makes the driver
+  // convert on one core: 1.1 s for 256^3 on llvmpipe)
+  std::vector<std::uint16_t> half;
+  int size[3] = { this->Dimensions[0], this->Dimensions[1], this->Dimensions[2] };
+  for (int level = 0; level < this->NumberOfLevels; ++level)
+  {
+    if (level > 0)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        size[k] = std::max(1, size[k] / 2);
+      }
+    }
+    const std::vector<float>& values = this->Internals->Levels[level];
+    half.resize(values.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType b, vtkIdType e) {
+      for (vtkIdType i = b; i < e; ++i)
+      {
+        half[i] = vtkParticleAmbientVolume::FloatToHalf(values[i]);
+      }
+    });
+    glTexSubImage3D(GL_TEXTURE_3D, level, 0, 0, 0, size[0], size[1], size[2], GL_RGBA,
+      GL_HALF_FLOAT, half.data());
+  }
   texture->Deactivate();
   glFinish(); // the upload's cost, not the next draw's
   this->LastUploadSeconds = vtkTimerLog::GetUniversalTime() - uploadStart;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::VoxeliseOnGPU(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::vector<Sphere>& spheres = internals.Spheres;
+  const double uploadStart = vtkTimerLog::GetUniversalTime();
+  vtkParticleComputeProgram* programs[4] = { internals.Weights, internals.Deposit, internals.Mip,
+    internals.Store };
+  const char* variants[4] = { "PR_AMBIENT_WEIGHTS", "PR_AMBIENT_DEPOSIT", "PR_AMBIENT_MIP",
+    "PR_AMBIENT_STORE" };
+  const std::string source = vtkParticleShaders::Get("AmbientVolume");
+  const size_t afterVersion = source.find('\n') + 1;
+  for (int p = 0; p < 4; ++p)
+  {
+    programs[p]->SetSource(source.substr(0, afterVersion) + "#define " + variants[p] + "\n" +
+      source.substr(afterVersion));
+    if (!programs[p]->Build(context))
+    {
+      return false;
+    }
+  }
+  if (internals.Context && internals.Context != context)
+  {
+    this->ReleaseGraphicsResources(internals.Context); // buffers of another context
+    context->MakeCurrent();                            // back to the one drawing now
+    for (int p = 0; p < 4; ++p)
+    {
+      programs[p]->Build(context);
+    }
+  }
+  internals.Context = context;
+
+  // per sphere: centre and radius, emission and extinction (float, voxel units: the grid
+  // coordinates were formed in double, so the scene's distance from the origin does not
+  // matter); per (sphere, slice) item: the pair
+  const size_t n = spheres.size();
+  const int nz = this->Dimensions[2];
+  std::vector<float> geometry(4 * n);
+  std::vector<float> material(4 * n);
+  std::vector<std::uint64_t> itemStart(n + 1, 0);
+  auto zRange = [nz](const Sphere& sp, int& z0, int& z1) {
+    z0 = std::max(0, static_cast<int>(std::floor(sp.Center[2] - sp.Radius)));
+    z1 = std::min(nz - 1, static_cast<int>(std::floor(sp.Center[2] + sp.Radius)));
+  };
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      const Sphere& sp = spheres[j];
+      for (int k = 0; k < 3; ++k)
+      {
+        geometry[4 * j + k] = static_cast<float>(sp.Center[k]);
+        material[4 * j + k] =
+          static_cast<float>(sp.Sigma * this->AmbientEmission * sp.Color[k]);
+      }
+      geometry[4 * j + 3] = static_cast<float>(sp.Radius);
+      material[4 * j + 3] = static_cast<float>(sp.Sigma);
+      int z0, z1;
+      zRange(sp, z0, z1);
+      itemStart[j + 1] = static_cast<std::uint64_t>(std::max(0, z1 - z0 + 1));
+    }
+  });
+  for (size_t j = 0; j < n; ++j)
+  {
+    itemStart[j + 1] += itemStart[j];
+  }
+  const std::uint64_t items = itemStart[n];
+  std::string why;
+  if (items > 0xffffffffull / 64 ||
+    !vtkParticleMemory::CanAllocate(static_cast<double>(items) * 8.0, why))
+  {
+    vtkErrorMacro(<< "The " << items << " sphere slices of the GPU voxelisation "
+                  << (why.empty() ? std::string("are too many") : why) << ".");
+    return false;
+  }
+  std::vector<std::uint32_t> itemData(2 * items);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      int z0, z1;
+      zRange(spheres[j], z0, z1);
+      std::uint32_t* out = &itemData[2 * itemStart[j]];
+      for (int z = z0; z <= z1; ++z, out += 2)
+      {
+        out[0] = static_cast<std::uint32_t>(j);
+        out[1] = static_cast<std::uint32_t>(z);
+      }
+    }
+  });
+
+  // the pyramid's levels in one float buffer
+  std::vector<std::array<int, 3>> dims(this->NumberOfLevels);
+  std::vector<size_t> offsets(this->NumberOfLevels + 1, 0);
+  dims[0] = { this->Dimensions[0], this->Dimensions[1], this->Dimensions[2] };
+  for (int level = 0; level < this->NumberOfLevels; ++level)
+  {
+    if (level > 0)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        dims[level][k] = std::max(1, dims[level - 1][k] / 2);
+      }
+    }
+    offsets[level + 1] =
+      offsets[level] + 4 * static_cast<size_t>(dims[level][0]) * dims[level][1] * dims[level][2];
+  }
+  if (offsets.back() > 0xffffffffull)
+  {
+    vtkErrorMacro(<< "The ambient volume is too large for the GPU voxelisation.");
+    return false;
+  }
+  const size_t level0Bytes = offsets[1] * sizeof(float);
+  if (!vtkParticleComputeProgram::AllocateStorage(internals.Geometry, geometry.size() * 4) ||
+    !vtkParticleComputeProgram::AllocateStorage(internals.Material, material.size() * 4) ||
+    !vtkParticleComputeProgram::AllocateStorage(internals.Items, itemData.size() * 4) ||
+    !vtkParticleComputeProgram::AllocateStorage(internals.Sums, 2 * n * 4) ||
+    (internals.AccumulatorFloats < offsets.back() &&
+      !vtkParticleComputeProgram::AllocateStorage(
+        internals.Accumulator, offsets.back() * sizeof(float))))
+  {
+    vtkErrorMacro(<< "Cannot allocate the GPU buffers of the ambient volume ("
+                  << vtkParticleMemory::FormatBytes(offsets.back() * sizeof(float))
+                  << " for its float pyramid).");
+    internals.AccumulatorFloats = 0;
+    return false;
+  }
+  internals.AccumulatorFloats = std::max(internals.AccumulatorFloats, offsets.back());
+  internals.Offsets = offsets;
+  vtkParticleComputeProgram::UploadStorage(
+    internals.Geometry, 0, geometry.size() * 4, geometry.data());
+  vtkParticleComputeProgram::UploadStorage(
+    internals.Material, 0, material.size() * 4, material.data());
+  vtkParticleComputeProgram::UploadStorage(
+    internals.Items, 0, itemData.size() * 4, itemData.data());
+  vtkParticleComputeProgram::ClearStorage(internals.Sums, 2 * n * 4, 0);
+  vtkParticleComputeProgram::ClearStorage(internals.Accumulator, level0Bytes, 0);
+  glFinish();
+  const double voxeliseStart = vtkTimerLog::GetUniversalTime();
+  this->LastUploadSeconds = voxeliseStart - uploadStart;
+
+  // level 0: the sums of the weights per sphere, then the deposit
+  vtkParticleComputeProgram::BindStorage(0, internals.Geometry);
+  vtkParticleComputeProgram::BindStorage(1, internals.Material);
+  vtkParticleComputeProgram::BindStorage(2, internals.Items);
+  vtkParticleComputeProgram::BindStorage(3, internals.Sums);
+  vtkParticleComputeProgram::BindStorage(4, internals.Accumulator);
+  const unsigned int groups = static_cast<unsigned int>((items + 63) / 64);
+  for (int p = 0; p < 2; ++p)
+  {
+    programs[p]->Use();
+    programs[p]->SetUniformui("count", static_cast<unsigned int>(items));
+    glUniform3i(programs[p]->GetUniformLocation("dimensions"), this->Dimensions[0],
+      this->Dimensions[1], this->Dimensions[2]);
+    programs[p]->SetUniformi("subGrid", this->SubGridSamples);
+    programs[p]->Dispatch(groups);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  glFinish();
+  const double mipStart = vtkTimerLog::GetUniversalTime();
+  this->LastVoxeliseSeconds += mipStart - voxeliseStart;
+
+  // the mips, in float
+  vtkParticleComputeProgram* mip = internals.Mip;
+  mip->Use();
+  for (int level = 1; level < this->NumberOfLevels; ++level)
+  {
+    const size_t voxels = (offsets[level + 1] - offsets[level]) / 4;
+    mip->SetUniformui("count", static_cast<unsigned int>(voxels));
+    mip->SetUniformui("fineOffset", static_cast<unsigned int>(offsets[level - 1]));
+    mip->SetUniformui("coarseOffset", static_cast<unsigned int>(offsets[level]));
+    glUniform3i(mip->GetUniformLocation("fineDimensions"), dims[level - 1][0], dims[level - 1][1],
+      dims[level - 1][2]);
+    glUniform3i(mip->GetUniformLocation("coarseDimensions"), dims[level][0], dims[level][1],
+      dims[level][2]);
+    mip->Dispatch(static_cast<unsigned int>((voxels + 255) / 256));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  // every level into the half-float texture
+  bool ok = this->AllocateTexture(context, texture);
+  if (ok)
+  {
+    vtkParticleComputeProgram* store = internals.Store;
+    store->Use();
+    for (int level = 0; level < this->NumberOfLevels; ++level)
+    {
+      const size_t voxels = (offsets[level + 1] - offsets[level]) / 4;
+      glBindImageTexture(0, texture->GetHandle(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      store->SetUniformui("count", static_cast<unsigned int>(voxels));
+      store->SetUniformui("levelOffset", static_cast<unsigned int>(offsets[level]));
+      glUniform3i(store->GetUniformLocation("levelDimensions"), dims[level][0], dims[level][1],
+        dims[level][2]);
+      store->Dispatch(static_cast<unsigned int>((voxels + 255) / 256));
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    texture->Deactivate();
+  }
+  for (unsigned int binding = 0; binding < 5; ++binding)
+  {
+    vtkParticleComputeProgram::BindStorage(binding, nullptr);
+  }
+  vtkParticleComputeProgram::UseNone();
+  glFinish();
+  this->LastMipSeconds = vtkTimerLog::GetUniversalTime() - mipStart;
+  this->LastBuildOnGPU = ok;
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::ReadLevels(vtkOpenGLRenderWindow* context)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!this->LastBuildOnGPU || !context || context != internals.Context ||
+    internals.Accumulator->GetHandle() == 0 || internals.Offsets.size() < 2)
+  {
+    return !internals.Levels.empty(); // the CPU's, or nothing
+  }
+  context->MakeCurrent();
+  std::vector<float> all(internals.Offsets.back());
+  if (!vtkParticleComputeProgram::DownloadStorage(
+        internals.Accumulator, 0, all.size() * sizeof(float), all.data()))
+  {
+    return false;
+  }
+  internals.Levels.clear();
+  for (size_t level = 0; level + 1 < internals.Offsets.size(); ++level)
+  {
+    internals.Levels.emplace_back(
+      all.begin() + internals.Offsets[level], all.begin() + internals.Offsets[level + 1]);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  for (vtkParticleComputeProgram* program :
+    { internals.Weights.Get(), internals.Deposit.Get(), internals.Mip.Get(),
+      internals.Store.Get() })
+  {
+    program->ReleaseGraphicsResources(window);
+  }
+  const bool current = internals.Context &&
+    vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
+  for (auto* buffer : { &internals.Geometry, &internals.Material, &internals.Items,
+         &internals.Sums, &internals.Accumulator })
+  {
+    if ((*buffer)->GetHandle() != 0)
+    {
+      vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
+    }
+  }
+  internals.Context = nullptr;
+  internals.AccumulatorFloats = 0;
+  internals.Offsets.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -804,6 +1178,8 @@ void vtkParticleAmbientVolume::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SubGridSamples: " << this->SubGridSamples << "\n";
   os << indent << "AmbientEmission: " << this->AmbientEmission << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
+  os << indent << "GPUVoxelisation: " << this->GPUVoxelisation << "\n";
+  os << indent << "LastBuildOnGPU: " << this->LastBuildOnGPU << "\n";
   os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
      << this->Dimensions[2] << "\n";
   os << indent << "VoxelSize: " << this->VoxelSize << "\n";

@@ -36,12 +36,21 @@
  * default) takes a voxel edge of one mean radius, the longest axis clamped to 32...
  * MaximumResolution (default 256) voxels; a user Resolution sets the voxels along the longest
  * axis (rounded up to a power of two). GPU memory of the texture with all mips is about 8/7 x
- * 8 bytes per voxel (RGBA16F): 256^3 takes 153 MB. MaximumMemory (MiB, default 512) bounds it:
+ * 8 bytes per voxel (RGBA16F): 256^3 takes 153 MB; the float pyramid it is built from takes
+ * another 8/7 x 16 bytes per voxel (307 MB at 256^3; kept on the GPU between builds, so that a
+ * time series does not reallocate it). MaximumMemory (MiB, default 512) bounds both together:
  * a larger grid is halved with a warning. The GPU's largest 3D texture bounds every axis.
  *
- * The voxelisation runs on the CPU (vtkSMPTools, slab by slab along z, no races), the mips too;
- * both are converted to half floats in parallel and uploaded level by level into one texture
- * with trilinear mip filtering.
+ * Where it runs (GPUVoxelisation, default on): the voxelisation, the mips and the conversion to
+ * half floats run in OpenGL 4.3 compute shaders (Shaders/AmbientVolume.glsl): only the spheres
+ * (32 bytes each, centres in voxel units formed in double) go to the GPU, one invocation per
+ * sphere and voxel slice sums the sphere's weights and then deposits them with float additions
+ * by compare-and-swap, one per voxel averages 2x2x2 children into the next level, and one per
+ * voxel stores each level into the texture. Off, or in a context below OpenGL 4.3 (with one
+ * warning), the same arithmetic runs on the CPU (vtkSMPTools, slab by slab along z, no races)
+ * and the levels are converted to half floats in parallel and uploaded. The two agree to float
+ * rounding (the order of the GPU's additions varies); Voxelise() is the CPU path without a
+ * texture, for tests.
  *
  * @sa vtkVoxelConeAOPass vtkParticleDensityVolume
  */
@@ -57,6 +66,7 @@ class vtkActor;
 class vtkOpenGLRenderWindow;
 class vtkParticleSphereMapper;
 class vtkTextureObject;
+class vtkWindow;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleAmbientVolume : public vtkObject
 {
@@ -109,6 +119,16 @@ public:
 
   ///@{
   /**
+   * Voxelise, build the mips and fill the texture with compute shaders (default on); off: on the
+   * CPU with an upload (see the class description).
+   */
+  vtkSetMacro(GPUVoxelisation, bool);
+  vtkGetMacro(GPUVoxelisation, bool);
+  vtkBooleanMacro(GPUVoxelisation, bool);
+  ///@}
+
+  ///@{
+  /**
    * Voxelise the particles of several props: BeginParticles() forgets the previous ones,
    * AddParticles() adds the spheres a vtkParticleSphereMapper (or vtkTransparentSphereMapper)
    * draws for an actor (world coordinates, radii as drawn, colours as mapped, Theta_i as
@@ -120,6 +140,31 @@ public:
   vtkIdType GetNumberOfParticles();
   bool EndParticles(vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
   ///@}
+
+  /**
+   * Voxelise given spheres (as Voxelise()) into the texture in the context (made current by the
+   * caller), on the GPU or the CPU as GPUVoxelisation and the context allow. EndParticles()
+   * calls it with the spheres of its props.
+   */
+  bool BuildTexture(vtkOpenGLRenderWindow* context, vtkTextureObject* texture,
+    const std::vector<double>& centers, const std::vector<double>& radii,
+    const std::vector<double>& colors, const std::vector<double>& meanOpacities);
+
+  /**
+   * Whether the last build ran on the GPU.
+   */
+  vtkGetMacro(LastBuildOnGPU, bool);
+
+  /**
+   * After a GPU build: read its float pyramid back (context current), so that GetLevel() shows
+   * it. After a CPU build GetLevel() holds it already. False when there is none.
+   */
+  bool ReadLevels(vtkOpenGLRenderWindow* context);
+
+  /**
+   * Release the compute programs and buffers of the GPU voxelisation.
+   */
+  void ReleaseGraphicsResources(vtkWindow* window);
 
   /**
    * Voxelise given spheres (world coordinates; colours RGB in [0,1], 3 per sphere; opacities are
@@ -157,8 +202,10 @@ public:
   ///@{
   /**
    * Wall times of the stages of the last build, in seconds (for benchmarks): gathering the
-   * spheres from the props (EndParticles), voxelising level 0, building the mips (both
-   * Voxelise), uploading the texture (EndParticles, finished with glFinish).
+   * spheres from the props (EndParticles), voxelising level 0 (grid and sphere set-up included),
+   * building the mips, uploading. On the GPU (each stage finished with glFinish): upload is the
+   * spheres' (and the accumulator's clearing), mips include storing every level into the
+   * texture; on the CPU upload is the conversion to half floats and the texture upload.
    */
   vtkGetMacro(LastGatherSeconds, double);
   vtkGetMacro(LastVoxeliseSeconds, double);
@@ -167,7 +214,8 @@ public:
   ///@}
 
   /**
-   * Level l of the pyramid (RGBA floats, x fastest), as last voxelised on the CPU.
+   * Level l of the pyramid (RGBA floats, x fastest), as last voxelised on the CPU or read back
+   * with ReadLevels(); empty otherwise.
    */
   const std::vector<float>& GetLevel(int level) const;
 
@@ -176,18 +224,26 @@ protected:
   ~vtkParticleAmbientVolume() override;
 
   bool SetUpGrid(const double sphereBounds[6], double meanRadius, int deviceAxisLimit);
-  // the grid for bounds and the level-0 voxels of the spheres listed in valid, then the mips
-  bool VoxeliseValid(const std::vector<double>& centers, const std::vector<double>& radii,
+  // the valid spheres, the grid for their bounds and the spheres in voxel units
+  bool PrepareSpheres(const std::vector<double>& centers, const std::vector<double>& radii,
     const std::vector<double>& colors, const std::vector<double>& meanOpacities,
-    const std::vector<size_t>& valid, const double bounds[6], double meanRadius,
     int deviceAxisLimit);
+  // level 0 of the prepared spheres on the CPU; the mips on the CPU
+  void DepositOnCPU();
   void BuildMips();
+  // the texture's levels (no data) and sampling parameters; the CPU levels into it
+  bool AllocateTexture(vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
+  bool UploadLevels(vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
+  // the prepared spheres voxelised, mipped and stored into the texture by compute shaders
+  bool VoxeliseOnGPU(vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
 
   int Resolution = 0;
   int MaximumResolution = 256;
   int SubGridSamples = 3;
   double AmbientEmission = 1.0;
   double MaximumMemory = 512.0;
+  bool GPUVoxelisation = true;
+  bool LastBuildOnGPU = false;
   int Dimensions[3] = { 0, 0, 0 };
   double Origin[3] = { 0.0, 0.0, 0.0 };
   double VoxelSize = 0.0;

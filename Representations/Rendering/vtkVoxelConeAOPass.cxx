@@ -230,6 +230,13 @@ bool vtkVoxelConeAOPass::SetShaderParameters(
 }
 
 //------------------------------------------------------------------------------
+void vtkVoxelConeAOPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Internals->Volume->ReleaseGraphicsResources(w);
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
 void vtkVoxelConeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

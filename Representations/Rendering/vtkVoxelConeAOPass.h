@@ -57,6 +57,8 @@ public:
   vtkTypeMacro(vtkVoxelConeAOPass, vtkParticleVolumeAOPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
   enum RetrievalModes
   {
     PER_FRAGMENT = 0, // every visible fragment traces its cones around its normal
