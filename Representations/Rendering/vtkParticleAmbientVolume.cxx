@@ -96,6 +96,7 @@ class vtkParticleAmbientVolume::vtkInternals
 public:
   std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> Props;
   std::vector<std::vector<float>> Levels;
+  bool LevelsValid = false; // Levels hold the last build's pyramid
   std::vector<Sphere> Spheres; // the last PrepareSpheres(), voxel units
 
   // GPU voxelisation: the four compute stages, their buffers, the pyramid's float offsets
@@ -296,7 +297,8 @@ bool vtkParticleAmbientVolume::PrepareSpheres(const std::vector<double>& centers
   const std::vector<double>& meanOpacities, int deviceAxisLimit)
 {
   this->Internals->Spheres.clear();
-  this->Internals->Levels.clear();
+  // the CPU pyramid's vectors keep their memory (a time series refills them: no page faults)
+  this->Internals->LevelsValid = false;
   const size_t n = radii.size();
   if (centers.size() != 3 * n || colors.size() != 3 * n || meanOpacities.size() != n)
   {
@@ -508,7 +510,7 @@ void vtkParticleAmbientVolume::DepositOnCPU()
   });
 
   std::vector<std::vector<float>>& levels = this->Internals->Levels;
-  levels.assign(1, std::vector<float>());
+  levels.resize(std::max<size_t>(1, levels.size()));
   std::vector<float>& level0 = levels[0];
   level0.assign(static_cast<size_t>(voxels) * 4, 0.0f);
   vtkSMPTools::For(0, nz, [&](vtkIdType zBegin, vtkIdType zEnd) {
@@ -563,7 +565,7 @@ void vtkParticleAmbientVolume::DepositOnCPU()
 void vtkParticleAmbientVolume::BuildMips()
 {
   std::vector<std::vector<float>>& levels = this->Internals->Levels;
-  levels.resize(1);
+  levels.resize(std::max(1, this->NumberOfLevels));
   int dims[3] = { this->Dimensions[0], this->Dimensions[1], this->Dimensions[2] };
   for (int level = 1; level < this->NumberOfLevels; ++level)
   {
@@ -573,7 +575,8 @@ void vtkParticleAmbientVolume::BuildMips()
       dims[k] = std::max(1, dims[k] / 2);
     }
     const std::vector<float>& fine = levels[level - 1];
-    std::vector<float> coarse(static_cast<size_t>(dims[0]) * dims[1] * dims[2] * 4, 0.0f);
+    std::vector<float>& coarse = levels[level];
+    coarse.assign(static_cast<size_t>(dims[0]) * dims[1] * dims[2] * 4, 0.0f);
     // children per axis: 2, or 1 where the finer level is already 1 voxel thick
     const int sx = child[0] > 1 ? 2 : 1;
     const int sy = child[1] > 1 ? 2 : 1;
@@ -612,8 +615,8 @@ void vtkParticleAmbientVolume::BuildMips()
         }
       }
     });
-    levels.push_back(std::move(coarse));
   }
+  this->Internals->LevelsValid = true;
 }
 
 //------------------------------------------------------------------------------
@@ -621,7 +624,9 @@ const std::vector<float>& vtkParticleAmbientVolume::GetLevel(int level) const
 {
   static const std::vector<float> none;
   const auto& levels = this->Internals->Levels;
-  return level >= 0 && level < static_cast<int>(levels.size()) ? levels[level] : none;
+  return this->Internals->LevelsValid && level >= 0 && level < static_cast<int>(levels.size())
+    ? levels[level]
+    : none;
 }
 
 //------------------------------------------------------------------------------
@@ -1091,7 +1096,7 @@ bool vtkParticleAmbientVolume::ReadLevels(vtkOpenGLRenderWindow* context)
   if (!this->LastBuildOnGPU || !context || context != internals.Context ||
     internals.Accumulator->GetHandle() == 0 || internals.Offsets.size() < 2)
   {
-    return !internals.Levels.empty(); // the CPU's, or nothing
+    return internals.LevelsValid; // the CPU's, or nothing
   }
   context->MakeCurrent();
   std::vector<float> all(internals.Offsets.back());
@@ -1100,12 +1105,13 @@ bool vtkParticleAmbientVolume::ReadLevels(vtkOpenGLRenderWindow* context)
   {
     return false;
   }
-  internals.Levels.clear();
+  internals.Levels.resize(internals.Offsets.size() - 1);
   for (size_t level = 0; level + 1 < internals.Offsets.size(); ++level)
   {
-    internals.Levels.emplace_back(
+    internals.Levels[level].assign(
       all.begin() + internals.Offsets[level], all.begin() + internals.Offsets[level + 1]);
   }
+  internals.LevelsValid = true;
   return true;
 }
 

@@ -29,11 +29,12 @@
  * renders the scene); the mappers' //PR::AmbientOcclusion::Impl hook receives the cone tracing. The volume is
  * rebuilt only when the particles (positions, radii, colours, opacities), the set of particle
  * props, their matrices or the volume's settings change -- a camera move re-traces the cones
- * only (GetNumberOfVolumeBuilds counts). Needs no compute shaders (the voxelisation and the mips
- * are built on the CPU with vtkSMPTools and uploaded).
+ * only (GetNumberOfVolumeBuilds counts). The voxelisation, the mips and the texture are made
+ * by compute shaders (OpenGL 4.3); in a context without them the volume says so once and builds
+ * on the CPU (vtkSMPTools) and uploads -- the same picture, slower per time step.
  *
- * Memory: see vtkParticleAmbientVolume (256^3 voxels with mips: 153 MB as RGBA16F;
- * MaximumMemory bounds it with a warning).
+ * Memory: see vtkParticleAmbientVolume (256^3 voxels with mips: 153 MB as RGBA16F, plus 307 MB
+ * for the float pyramid it is built from; MaximumMemory bounds both with a warning).
  *
  * Accuracy (Benchmarks/README.md): against vtkParticleReferenceRenderer's transparency-aware
  * ray-traced Eq. 5/7, RMSE 0.036-0.048 of the pixel on translucent LAMMPS scenes at the defaults
