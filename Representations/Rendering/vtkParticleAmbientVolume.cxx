@@ -891,24 +891,26 @@ bool vtkParticleAmbientVolume::VoxeliseOnGPU(
     internals.Store };
   const char* variants[4] = { "PR_AMBIENT_WEIGHTS", "PR_AMBIENT_DEPOSIT", "PR_AMBIENT_MIP",
     "PR_AMBIENT_STORE" };
-  const std::string source = vtkParticleShaders::Get("AmbientVolume");
-  const size_t afterVersion = source.find('\n') + 1;
+  if (internals.Context && internals.Context != context)
+  {
+    this->ReleaseGraphicsResources(internals.Context); // programs and buffers of another
+    context->MakeCurrent();                            // back to the one drawing now
+  }
+  if (!programs[0]->IsBuilt())
+  {
+    const std::string source = vtkParticleShaders::Get("AmbientVolume");
+    const size_t afterVersion = source.find('\n') + 1;
+    for (int p = 0; p < 4; ++p)
+    {
+      programs[p]->SetSource(source.substr(0, afterVersion) + "#define " + variants[p] + "\n" +
+        source.substr(afterVersion));
+    }
+  }
   for (int p = 0; p < 4; ++p)
   {
-    programs[p]->SetSource(source.substr(0, afterVersion) + "#define " + variants[p] + "\n" +
-      source.substr(afterVersion));
     if (!programs[p]->Build(context))
     {
       return false;
-    }
-  }
-  if (internals.Context && internals.Context != context)
-  {
-    this->ReleaseGraphicsResources(internals.Context); // buffers of another context
-    context->MakeCurrent();                            // back to the one drawing now
-    for (int p = 0; p < 4; ++p)
-    {
-      programs[p]->Build(context);
     }
   }
   internals.Context = context;
@@ -1138,6 +1140,7 @@ void vtkParticleAmbientVolume::ReleaseGraphicsResources(vtkWindow* window)
   internals.Context = nullptr;
   internals.AccumulatorFloats = 0;
   internals.Offsets.clear();
+  internals.TextureHandle = 0; // the pass releases the texture with us
 }
 
 //------------------------------------------------------------------------------

@@ -164,9 +164,9 @@ void vtkParticleComputeProgram::SetSource(const std::string& source)
 //------------------------------------------------------------------------------
 bool vtkParticleComputeProgram::Build(vtkOpenGLRenderWindow* context)
 {
-  if (this->Handle != 0 && !this->SourceChanged)
+  if (this->Handle != 0 && !this->SourceChanged && this->Internals->Context == context)
   {
-    return true;
+    return true; // (a program of another context is released below and built again)
   }
   std::string reason;
   if (!vtkParticleComputeProgram::IsSupported(context, &reason))

@@ -108,8 +108,8 @@ public:
   ///@}
 
   /**
-   * Compile and link the source in the context (once; again when the source changed or after
-   * ReleaseGraphicsResources()). Compile and link logs are reported with vtkErrorMacro (with the
+   * Compile and link the source in the context (once; again when the source changed, after
+   * ReleaseGraphicsResources() or in another context, the old context's program released). Compile and link logs are reported with vtkErrorMacro (with the
    * numbered source on a compile error). Returns false on failure or when the context is below
    * OpenGL 4.3.
    */

@@ -339,6 +339,12 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
     vtkErrorMacro(<< (voxels == 0 ? std::string("No grid (SetUpGrid).") : why));
     return false;
   }
+  if (internals.Context && internals.Context != context)
+  {
+    this->ReleaseGraphicsResources(internals.Context); // programs and buffers of another
+    context->MakeCurrent();                            // back to the one drawing now
+  }
+  internals.Context = context;
   if (!internals.Splat->IsBuilt() || !internals.Convert->IsBuilt())
   {
     const std::string source = vtkParticleShaders::Get("DensityVolume");
@@ -351,12 +357,6 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   {
     return false;
   }
-  if (internals.Context && internals.Context != context)
-  {
-    this->ReleaseGraphicsResources(internals.Context); // buffers of another context
-    context->MakeCurrent();                            // back to the one drawing now
-  }
-  internals.Context = context;
   if (internals.Capacity < voxels)
   {
     if (!vtkParticleComputeProgram::AllocateStorage(internals.Counts, voxels * sizeof(GLuint)) ||
