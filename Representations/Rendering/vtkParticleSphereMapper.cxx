@@ -979,8 +979,7 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
     vtkParticleOcclusionCuller* culler = internals.Culler;
     if (internals.CullerBuildTime < this->VBOBuildTime)
     {
-      culler->Build(
-        ren, internals.UploadedPositions, internals.UploadedRadii->GetPointer(0), numPts);
+      culler->Build(ren, internals.UploadedPositions, this->GetCullingRadii(), numPts);
       internals.CullerBuildTime.Modified();
     }
     culler->Draw(ren, cellBO.Program, internals.DrawWCDC,
@@ -1089,6 +1088,25 @@ vtkDataArray* vtkParticleSphereMapper::StrideForUpload(vtkDataArray* array)
   });
   internals.StrideArrays.push_back(subset);
   return subset;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkParticleSphereMapper::GetUploadedPositions()
+{
+  return this->Internals->UploadedPositions;
+}
+
+//------------------------------------------------------------------------------
+vtkFloatArray* vtkParticleSphereMapper::GetUploadedRadii()
+{
+  return this->Internals->UploadedRadii;
+}
+
+//------------------------------------------------------------------------------
+const float* vtkParticleSphereMapper::GetCullingRadii()
+{
+  vtkFloatArray* radii = this->Internals->UploadedRadii;
+  return radii ? radii->GetPointer(0) : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -331,6 +331,21 @@ protected:
   virtual void CacheParticleAttributes(vtkRenderer*, vtkActor*) {}
 
   /**
+   * The particles in the vertex buffers (every GetParticleStride()-th of the input): positions
+   * and radii (model coordinates, 0 for skipped particles), valid from CacheParticleAttributes()
+   * on until the next upload.
+   */
+  vtkDataArray* GetUploadedPositions();
+  vtkFloatArray* GetUploadedRadii();
+
+  /**
+   * The radius (model coordinates, before RadiusScaleFactor) of the sphere each uploaded
+   * particle's imposter covers, for the occlusion culler: the particle radii here; a subclass
+   * that draws larger imposters returns those.
+   */
+  virtual const float* GetCullingRadii();
+
+  /**
    * Modification time of what the uploaded particle buffers depend on: the mapper's MTime (which
    * includes the lookup table's) except when its last change was RadiusScaleFactor alone.
    */

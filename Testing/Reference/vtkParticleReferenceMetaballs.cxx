@@ -112,6 +112,7 @@ class vtkParticleReferenceMetaballs::vtkInternals
 public:
   std::vector<prReference::SphereVC> Influence; // centre and influence radius k R
   std::vector<double> Radii;
+  std::vector<vtkIdType> Input; // index of each kept particle in SetParticles()' centres
   prReference::SphereGrid Grid;
   bool GridValid = false;
   double GridFactor = 0.0;
@@ -142,6 +143,7 @@ void vtkParticleReferenceMetaballs::SetParticles(vtkPoints* centers, vtkDataArra
   vtkInternals& internals = *this->Internals;
   internals.Influence.clear();
   internals.Radii.clear();
+  internals.Input.clear();
   internals.GridValid = false;
   const vtkIdType n = centers ? centers->GetNumberOfPoints() : 0;
   if (radii && radii->GetNumberOfTuples() < n)
@@ -162,6 +164,7 @@ void vtkParticleReferenceMetaballs::SetParticles(vtkPoints* centers, vtkDataArra
     s.R = r; // scaled by the influence factor when the grid is built
     internals.Influence.push_back(s);
     internals.Radii.push_back(r);
+    internals.Input.push_back(i);
   }
   this->Modified();
 }
@@ -250,17 +253,9 @@ double vtkParticleReferenceMetaballs::FirstNonNegative(const double c[5], double
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
-  const double direction[3], double tMin, double tMax, double& t, double normal[3], bool& inside)
+void vtkParticleReferenceMetaballs::Prepare()
 {
   vtkInternals& internals = *this->Internals;
-  inside = false;
-  this->LastCandidates = 0;
-  const double length = std::sqrt(prReference::Dot(direction, direction));
-  if (!(length > 0.0) || !std::isfinite(length) || internals.Radii.empty() || !(tMax >= tMin))
-  {
-    return false;
-  }
   const double k = this->InfluenceFactor;
   if (!internals.GridValid || internals.GridFactor != k)
   {
@@ -273,6 +268,39 @@ bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
     internals.GridValid = true;
     internals.GridFactor = k;
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
+  const double direction[3], double tMin, double tMax, double& t, double normal[3], bool& inside)
+{
+  this->Prepare();
+  vtkIdType candidates = 0;
+  const bool hit =
+    this->IntersectRay(origin, direction, tMin, tMax, t, normal, inside, nullptr, candidates);
+  this->LastCandidates = candidates;
+  return hit;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
+  const double direction[3], double tMin, double tMax, double& t, double normal[3], bool& inside,
+  std::vector<Contribution>* contributions, vtkIdType& candidateCount) const
+{
+  const vtkInternals& internals = *this->Internals;
+  inside = false;
+  candidateCount = 0;
+  if (contributions)
+  {
+    contributions->clear();
+  }
+  const double length = std::sqrt(prReference::Dot(direction, direction));
+  if (!(length > 0.0) || !std::isfinite(length) || internals.Radii.empty() || !(tMax >= tMin) ||
+    !internals.GridValid || internals.GridFactor != this->InfluenceFactor)
+  {
+    return false;
+  }
+  const double k = this->InfluenceFactor;
   const double d[3] = { direction[0] / length, direction[1] / length, direction[2] / length };
   const double t0 = tMin * length;
   const double t1 = tMax * length;
@@ -313,7 +341,7 @@ bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
       }
     }
   }
-  this->LastCandidates = static_cast<vtkIdType>(intervals.size());
+  candidateCount = static_cast<vtkIdType>(intervals.size());
   if (intervals.empty())
   {
     return false;
@@ -391,6 +419,10 @@ bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
       for (int j = 0; j < 3; ++j)
       {
         gradient[j] += -4.0 * c * q * x[j] / in.Influence2;
+      }
+      if (contributions)
+      {
+        contributions->push_back({ internals.Input[in.Index], c * q * q });
       }
     }
   }

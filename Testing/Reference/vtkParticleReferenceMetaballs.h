@@ -40,6 +40,8 @@
 #include "vtkObject.h"
 #include "vtkParticleRenderingReferenceModule.h" // for export macro
 
+#include <vector> // for std::vector
+
 class vtkDataArray;
 class vtkPoints;
 
@@ -94,6 +96,32 @@ public:
    */
   bool IntersectRay(const double origin[3], const double direction[3], double tMin, double tMax,
     double& t, double normal[3], bool& inside);
+
+  /**
+   * Build the search grid for the current particles and InfluenceFactor (IntersectRay() does
+   * it when needed; call it before using the thread-safe form below from several threads).
+   */
+  void Prepare();
+
+#ifndef __VTK_WRAP__
+  /**
+   * A particle's share of the field at a point: its index in SetParticles()' centres and D_i.
+   */
+  struct Contribution
+  {
+    vtkIdType Particle;
+    double Weight;
+  };
+
+  /**
+   * IntersectRay() for many threads at once (after Prepare(), without changing the particles or
+   * settings meanwhile): also the particles contributing to the field at the hit with their
+   * D_i (when `contributions` is given) and the number of influence intervals examined.
+   */
+  bool IntersectRay(const double origin[3], const double direction[3], double tMin, double tMax,
+    double& t, double normal[3], bool& inside, std::vector<Contribution>* contributions,
+    vtkIdType& candidates) const;
+#endif
 
   /**
    * Number of particles kept (valid), and the number of influence intervals the last

@@ -9,10 +9,13 @@
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMetaballMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkParticleMemory.h"
 #include "vtkParticleReferenceEmissionAbsorption.h"
 #include "vtkParticleReferenceFrame.h"
+#include "vtkParticleReferenceMetaballPass.h"
+#include "vtkParticleReferenceMetaballs.h"
 #include "vtkParticleReferenceRays.h"
 #include "vtkParticleReferenceShading.h"
 #include "vtkParticleSphereMapper.h"
@@ -638,6 +641,30 @@ bool vtkParticleReferenceRenderer::Render()
   frame.AmbientIllumination = this->AmbientIllumination;
   frame.AmbientEmission = this->AmbientEmission;
   property->GetColor(frame.PropertyColor);
+
+  if (auto* metaballMapper = vtkMetaballMapper::SafeDownCast(mapper))
+  {
+    // the exact metaball surface of the same spheres (vtkParticleReferenceMetaballs)
+    vtkNew<vtkPoints> centers;
+    centers->SetDataTypeToDouble();
+    centers->SetNumberOfPoints(static_cast<vtkIdType>(frame.Spheres.size()));
+    vtkNew<vtkDoubleArray> sphereRadii;
+    sphereRadii->SetNumberOfTuples(static_cast<vtkIdType>(frame.Spheres.size()));
+    for (size_t i = 0; i < frame.Spheres.size(); ++i)
+    {
+      centers->SetPoint(static_cast<vtkIdType>(i), frame.Spheres[i].C);
+      sphereRadii->SetValue(static_cast<vtkIdType>(i), frame.Spheres[i].R);
+    }
+    vtkNew<vtkParticleReferenceMetaballs> surface;
+    surface->SetInfluenceFactor(metaballMapper->GetInfluenceFactor());
+    surface->SetIsoValue(metaballMapper->GetIsoValue());
+    surface->SetParticles(centers, sphereRadii);
+    surface->Prepare();
+    RenderMetaballs(frame, surface);
+    this->LastRenderSeconds = vtkTimerLog::GetUniversalTime() - startTime;
+    this->Modified();
+    return true;
+  }
 
   if (transparent)
   {

@@ -66,6 +66,13 @@
  * No output value is ever NaN: a non-finite shading result (degenerate lights) is treated like the
  * GPU's discard (background).
  *
+ * Metaball mode: when the actor's mapper is a vtkMetaballMapper, Render() draws the exact metaball
+ * surface of the same spheres (vtkParticleReferenceMetaballs with the mapper's InfluenceFactor and
+ * IsoValue): per pixel the first crossing between the near and far planes, the gradient normal,
+ * the colour blended from the contributing particles' 8-bit colours by their field share D_j,
+ * lit as in the opaque mode; the id image holds the particle with the largest share. Pixels
+ * whose ray starts inside the surface (the near plane cuts it) are background with Inside = 1.
+ *
  * Transparent mode: when the actor's mapper is a vtkTransparentSphereMapper, Render() evaluates
  * the emission-absorption model of that class (Staib et al. 2015, Sec. 3.1 and 4) exactly, in
  * double, and composites every particle a pixel ray meets:

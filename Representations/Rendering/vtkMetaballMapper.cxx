@@ -1,0 +1,742 @@
+#include "vtkMetaballMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleMemory.h"
+#include "vtkParticleShaderHooks.h"
+#include "vtkParticleShaders.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkMetaballMapper);
+
+namespace
+{
+// storage binding points of the lists (the fragment lists of the transparent mapper use 4-7)
+const unsigned int RangeBinding = 0;
+const unsigned int EntryBinding = 1;
+const unsigned int IdBinding = 2;
+const unsigned int ColorBinding = 3;
+const char* const ExtensionLine = "#extension GL_ARB_shader_storage_buffer_object : require\n";
+// bytes of a list entry (centre offset and radius, neighbour index) and per particle (range)
+const double EntryBytes = 20.0;
+const double ParticleBytes = 8.0;
+}
+
+//------------------------------------------------------------------------------
+class vtkMetaballMapper::vtkInternals
+{
+public:
+  explicit vtkInternals(vtkObject* self)
+    : Hooks(self)
+  {
+  }
+  vtkParticleShaderHooks Hooks;
+
+  // what the lists were built from
+  struct Signature
+  {
+    vtkDataArray* Positions = nullptr;
+    vtkMTimeType PositionsTime = 0;
+    vtkFloatArray* Radii = nullptr;
+    vtkMTimeType RadiiTime = 0;
+    vtkIdType Count = -1;
+    double Scale = 0.0;
+    double Influence = 0.0;
+    int MaximumNeighbors = 0;
+    double MaximumMemory = 0.0;
+    bool operator==(const Signature& o) const
+    {
+      return Positions == o.Positions && PositionsTime == o.PositionsTime && Radii == o.Radii &&
+        RadiiTime == o.RadiiTime && Count == o.Count && Scale == o.Scale &&
+        Influence == o.Influence && MaximumNeighbors == o.MaximumNeighbors &&
+        MaximumMemory == o.MaximumMemory;
+    }
+  };
+  Signature Built;
+  bool HaveLists = false;
+
+  // the lists on the CPU
+  std::vector<std::int32_t> Ranges; // first, count per uploaded particle
+  std::vector<float> Entries;       // offset (3), radius per entry
+  std::vector<std::int32_t> Ids;    // neighbour per entry
+  vtkNew<vtkFloatArray> Flags;      // 1: has neighbours (the vertex attribute metaballMC)
+  vtkNew<vtkFloatArray> NoFlags;    // all 0: without shader storage every particle is a sphere
+  std::vector<float> CullingRadii;
+  std::string LastListWarning;
+  std::string LastSupportWarning;
+
+  // the lists on the GPU
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
+  vtkSmartPointer<vtkOpenGLBufferObject> RangeBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> EntryBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> IdBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> ColorBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  bool ListsUploaded = false;
+  bool Supported = true; // the context has shader storage buffers (OpenGL 4.3)
+  bool ColorsInShader = false;
+
+  void ReleaseBuffers(bool current)
+  {
+    vtkParticleComputeProgram::ReleaseStorage(this->RangeBuffer, current);
+    vtkParticleComputeProgram::ReleaseStorage(this->EntryBuffer, current);
+    vtkParticleComputeProgram::ReleaseStorage(this->IdBuffer, current);
+    vtkParticleComputeProgram::ReleaseStorage(this->ColorBuffer, current);
+    this->ListsUploaded = false;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkMetaballMapper::vtkMetaballMapper()
+  : Internals(new vtkInternals(this))
+{
+  this->Internals->Flags->SetName("metaballMC");
+}
+
+//------------------------------------------------------------------------------
+vtkMetaballMapper::~vtkMetaballMapper()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+double vtkMetaballMapper::KernelScale(double influenceFactor)
+{
+  const double f = 1.0 - 1.0 / (influenceFactor * influenceFactor);
+  return 1.0 / (f * f);
+}
+
+//------------------------------------------------------------------------------
+double vtkMetaballMapper::IsolatedRadiusFactor(double influenceFactor, double isoValue)
+{
+  const double ratio = isoValue / KernelScale(influenceFactor);
+  if (!(ratio < 1.0))
+  {
+    return 0.0;
+  }
+  return influenceFactor * std::sqrt(1.0 - std::sqrt(ratio));
+}
+
+//------------------------------------------------------------------------------
+double* vtkMetaballMapper::GetBounds()
+{
+  this->Superclass::GetBounds();
+  if (!vtkMath::AreBoundsInitialized(this->Bounds))
+  {
+    return this->Bounds;
+  }
+  vtkFloatArray* radii = this->GetParticleRadii();
+  double range[2] = { 0.0, 0.0 };
+  if (radii && radii->GetNumberOfTuples() > 0)
+  {
+    radii->GetRange(range, 0);
+  }
+  // the superclass grew the centres by the largest radius; the surface reaches k R
+  const double scale = std::abs(this->RadiusScaleFactor);
+  const double extra = std::max(0.0, this->InfluenceFactor - 1.0) * range[1] * scale;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Bounds[2 * k] -= extra;
+    this->Bounds[2 * k + 1] += extra;
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+bool vtkMetaballMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act)
+{
+  if (this->Superclass::GetNeedToRebuildBufferObjects(ren, act))
+  {
+    return true;
+  }
+  // the lists (and the per-particle flags) also depend on these
+  const vtkInternals::Signature& built = this->Internals->Built;
+  return !this->Internals->HaveLists || built.Scale != std::abs(this->RadiusScaleFactor) ||
+    built.Influence != this->InfluenceFactor ||
+    built.MaximumNeighbors != this->MaximumNumberOfNeighbors ||
+    built.MaximumMemory != this->MaximumListMemory;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::UpdateNeighborLists()
+{
+  vtkInternals& internals = *this->Internals;
+  vtkDataArray* positions = this->GetUploadedPositions();
+  vtkFloatArray* radii = this->GetUploadedRadii();
+  const vtkIdType n = radii ? radii->GetNumberOfTuples() : 0;
+
+  vtkInternals::Signature signature;
+  signature.Positions = positions;
+  signature.PositionsTime = positions ? positions->GetMTime() : 0;
+  signature.Radii = radii;
+  signature.RadiiTime = radii ? radii->GetMTime() : 0;
+  signature.Count = n;
+  signature.Scale = std::abs(this->RadiusScaleFactor);
+  signature.Influence = this->InfluenceFactor;
+  signature.MaximumNeighbors = this->MaximumNumberOfNeighbors;
+  signature.MaximumMemory = this->MaximumListMemory;
+  if (internals.HaveLists && internals.Built == signature)
+  {
+    return;
+  }
+  const double start = vtkTimerLog::GetUniversalTime();
+  internals.Built = signature;
+  internals.HaveLists = true;
+  internals.ListsUploaded = false;
+  ++this->NumberOfListBuilds;
+
+  internals.Ranges.assign(2 * static_cast<size_t>(n), 0);
+  internals.Entries.clear();
+  internals.Ids.clear();
+  internals.Flags->SetNumberOfTuples(n);
+  internals.CullingRadii.assign(static_cast<size_t>(n), 0.0f);
+  this->NumberOfListEntries = 0;
+  this->NumberOfIsolatedParticles = 0;
+  this->NumberOfTruncatedLists = 0;
+  if (n == 0 || !positions)
+  {
+    this->LastListBuildSeconds = vtkTimerLog::GetUniversalTime() - start;
+    return;
+  }
+
+  const float* r = radii->GetPointer(0);
+  const double scale = signature.Scale;
+  const double k = this->InfluenceFactor;
+  const int maxNeighbors = this->MaximumNumberOfNeighbors;
+  float largest = 0.0f;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    largest = std::max(largest, r[i]);
+  }
+  const double rMax = largest * scale;
+
+  // The locator over the uploaded positions (skipped particles sit on a valid one with radius 0
+  // and are never neighbours).
+  vtkNew<vtkPoints> points;
+  points->SetData(positions);
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+
+  // Per particle the M + 1 nearest centres (itself among them). Every particle whose influence
+  // sphere can overlap lies within k (R_i + R_max); when the farthest of them is beyond that,
+  // the list is complete, else it may have been cut. One query per particle whatever the
+  // density: a huge influence radius costs O(N M), not O(N^2).
+  struct Chunk
+  {
+    vtkIdType Begin = 0;
+    std::vector<std::int32_t> Counts;
+    std::vector<std::int32_t> Neighbors;
+    vtkIdType Truncated = 0;
+  };
+  vtkSMPThreadLocal<std::vector<Chunk>> chunks;
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    Chunk chunk;
+    chunk.Begin = begin;
+    chunk.Counts.resize(static_cast<size_t>(end - begin));
+    vtkNew<vtkIdList> nearest;
+    double ci[3];
+    double cj[3];
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      std::int32_t count = 0;
+      if (r[i] > 0.0f)
+      {
+        positions->GetTuple(i, ci);
+        locator->FindClosestNPoints(maxNeighbors + 1, ci, nearest);
+        const double ri = r[i] * scale;
+        const vtkIdType found = nearest->GetNumberOfIds();
+        double farthest2 = 0.0;
+        for (vtkIdType m = 0; m < found; ++m)
+        {
+          const vtkIdType j = nearest->GetId(m);
+          positions->GetTuple(j, cj);
+          const double d2 = vtkMath::Distance2BetweenPoints(ci, cj);
+          farthest2 = std::max(farthest2, d2);
+          if (j == i || !(r[j] > 0.0f) || count >= maxNeighbors)
+          {
+            continue;
+          }
+          const double reach = k * (ri + r[j] * scale);
+          if (d2 < reach * reach)
+          {
+            chunk.Neighbors.push_back(static_cast<std::int32_t>(j));
+            ++count;
+          }
+        }
+        const double searchRadius = k * (ri + rMax);
+        if (found == maxNeighbors + 1 && farthest2 < searchRadius * searchRadius)
+        {
+          ++chunk.Truncated;
+        }
+      }
+      chunk.Counts[i - begin] = count;
+    }
+    chunks.Local().push_back(std::move(chunk));
+  });
+
+  std::vector<Chunk*> ordered;
+  for (std::vector<Chunk>& local : chunks)
+  {
+    for (Chunk& chunk : local)
+    {
+      ordered.push_back(&chunk);
+    }
+  }
+  std::sort(ordered.begin(), ordered.end(),
+    [](const Chunk* a, const Chunk* b) { return a->Begin < b->Begin; });
+
+  // The memory bound: every list cut to the share that fits.
+  double total = 0.0;
+  vtkIdType listed = 0;
+  vtkIdType truncated = 0;
+  for (const Chunk* chunk : ordered)
+  {
+    total += static_cast<double>(chunk->Neighbors.size());
+    truncated += chunk->Truncated;
+    for (std::int32_t c : chunk->Counts)
+    {
+      listed += c > 0 ? 1 : 0;
+    }
+  }
+  const double budget = this->MaximumListMemory * 1048576.0;
+  std::int32_t cap = maxNeighbors;
+  std::ostringstream warning;
+  if (n * ParticleBytes + total * EntryBytes > budget || total > 2147483647.0)
+  {
+    const double entries =
+      std::min(2147483647.0, std::max(0.0, (budget - n * ParticleBytes) / EntryBytes));
+    cap = static_cast<std::int32_t>(std::max(0.0, std::floor(entries / std::max<vtkIdType>(1, listed))));
+    warning << "The neighbour lists of " << n << " particles would take "
+            << (n * ParticleBytes + total * EntryBytes) / 1048576.0
+            << " MiB, more than MaximumListMemory (" << this->MaximumListMemory
+            << " MiB): every list keeps its " << cap
+            << " nearest neighbours; the surface is approximate where particles have more. ";
+  }
+  std::string why;
+  if (!vtkParticleMemory::CanAllocate(
+        std::min(total, static_cast<double>(cap) * listed) * EntryBytes, why))
+  {
+    warning << "The neighbour lists cannot be allocated (" << why
+            << "): the particles are drawn as spheres. ";
+    cap = 0;
+  }
+
+  // Offsets, then the entries (centre offsets formed in double: exact far from the origin).
+  std::vector<vtkIdType> chunkOffsets(ordered.size() + 1, 0);
+  vtkIdType cut = 0;
+  for (size_t c = 0; c < ordered.size(); ++c)
+  {
+    vtkIdType sum = 0;
+    for (std::int32_t count : ordered[c]->Counts)
+    {
+      sum += std::min(count, cap);
+      cut += count > cap ? 1 : 0;
+    }
+    chunkOffsets[c + 1] = chunkOffsets[c] + sum;
+  }
+  const vtkIdType entries = chunkOffsets.back();
+  internals.Entries.resize(4 * static_cast<size_t>(entries));
+  internals.Ids.resize(static_cast<size_t>(entries));
+  float* flags = internals.Flags->GetPointer(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ordered.size()), [&](vtkIdType cb, vtkIdType ce) {
+    double ci[3];
+    double cj[3];
+    for (vtkIdType c = cb; c < ce; ++c)
+    {
+      const Chunk& chunk = *ordered[c];
+      vtkIdType out = chunkOffsets[c];
+      size_t in = 0;
+      for (size_t m = 0; m < chunk.Counts.size(); ++m)
+      {
+        const vtkIdType i = chunk.Begin + static_cast<vtkIdType>(m);
+        const std::int32_t count = chunk.Counts[m];
+        const std::int32_t kept = std::min(count, cap);
+        internals.Ranges[2 * i] = static_cast<std::int32_t>(out);
+        internals.Ranges[2 * i + 1] = kept;
+        flags[i] = kept > 0 ? 1.0f : 0.0f;
+        // the culler tests a sphere containing the imposter: the influence sphere (the
+        // iso-sphere of an isolated particle is inside it for every IsoValue)
+        internals.CullingRadii[i] = static_cast<float>(k * r[i]);
+        if (kept > 0)
+        {
+          positions->GetTuple(i, ci);
+        }
+        for (std::int32_t e = 0; e < kept; ++e)
+        {
+          const std::int32_t j = chunk.Neighbors[in + e];
+          positions->GetTuple(j, cj);
+          float* entry = &internals.Entries[4 * static_cast<size_t>(out)];
+          entry[0] = static_cast<float>(cj[0] - ci[0]);
+          entry[1] = static_cast<float>(cj[1] - ci[1]);
+          entry[2] = static_cast<float>(cj[2] - ci[2]);
+          entry[3] = r[j];
+          internals.Ids[static_cast<size_t>(out)] = j;
+          ++out;
+        }
+        in += static_cast<size_t>(count);
+      }
+    }
+  });
+  internals.Flags->Modified();
+
+  vtkIdType isolated = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    isolated += (r[i] > 0.0f && internals.Ranges[2 * i + 1] == 0) ? 1 : 0;
+  }
+  this->NumberOfListEntries = entries;
+  this->NumberOfIsolatedParticles = isolated;
+  this->NumberOfTruncatedLists = std::max(truncated, cut);
+  if (truncated > 0)
+  {
+    warning << truncated << " of " << n << " particles have more than MaximumNumberOfNeighbors ("
+            << maxNeighbors << ") particles within their influence radius (InfluenceFactor " << k
+            << "): their " << maxNeighbors
+            << " nearest are used; the surface there is approximate. Lower InfluenceFactor or "
+               "raise MaximumNumberOfNeighbors (at most 255). ";
+  }
+  this->WarnOnChange(warning.str(), internals.LastListWarning);
+  this->LastListBuildSeconds = vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::CacheParticleAttributes(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::CacheParticleAttributes(ren, act);
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* context = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+
+  std::string reason;
+  internals.Supported = context && vtkParticleComputeProgram::IsSupported(context, &reason);
+  std::string supportWarning;
+  if (!internals.Supported)
+  {
+    supportWarning = "Metaballs need shader storage buffers in the fragment stage: " + reason +
+      ". Every particle is drawn as its sphere.";
+    if (supportWarning != internals.LastSupportWarning)
+    {
+      vtkErrorMacro(<< supportWarning);
+    }
+  }
+  internals.LastSupportWarning = supportWarning;
+
+  this->UpdateNeighborLists();
+  if (!internals.Supported)
+  {
+    // every particle through the sphere path
+    internals.NoFlags->SetNumberOfTuples(internals.Flags->GetNumberOfTuples());
+    internals.NoFlags->FillValue(0.0f);
+    this->VBOs->CacheDataArray("metaballMC", internals.NoFlags, ren, VTK_FLOAT);
+    return;
+  }
+  this->VBOs->CacheDataArray("metaballMC", internals.Flags, ren, VTK_FLOAT);
+
+  // the lists and the colours into shader storage (the context is current while buffers build)
+  if (internals.Context != context)
+  {
+    internals.ReleaseBuffers(false);
+    internals.Context = context;
+  }
+  auto upload = [](vtkOpenGLBufferObject* buffer, const void* data, size_t bytes) {
+    static const std::int32_t zeros[4] = { 0, 0, 0, 0 };
+    const size_t size = std::max<size_t>(bytes, sizeof(zeros));
+    return vtkParticleComputeProgram::AllocateStorage(buffer, size) &&
+      vtkParticleComputeProgram::UploadStorage(buffer, 0, bytes > 0 ? bytes : sizeof(zeros),
+        bytes > 0 ? data : zeros);
+  };
+  if (!internals.ListsUploaded)
+  {
+    const bool ok =
+      upload(internals.RangeBuffer, internals.Ranges.data(), internals.Ranges.size() * 4) &&
+      upload(internals.EntryBuffer, internals.Entries.data(), internals.Entries.size() * 4) &&
+      upload(internals.IdBuffer, internals.Ids.data(), internals.Ids.size() * 4);
+    if (!ok)
+    {
+      vtkErrorMacro(<< "The neighbour lists could not be uploaded (" << internals.Entries.size() / 4
+                    << " entries).");
+    }
+    internals.ListsUploaded = true;
+  }
+  // colours of the drawn particles (RGBA8, r in the low byte), when scalars colour them
+  vtkUnsignedCharArray* colors = this->Colors;
+  const vtkIdType n = this->GetUploadedRadii() ? this->GetUploadedRadii()->GetNumberOfTuples() : 0;
+  vtkDataArray* strided = nullptr;
+  vtkPolyData* input = this->GetInput();
+  if (colors && input && colors->GetNumberOfTuples() == input->GetNumberOfPoints() &&
+    colors->GetNumberOfComponents() == 4)
+  {
+    strided = this->StrideForUpload(colors);
+  }
+  if (strided && strided->GetNumberOfTuples() == n)
+  {
+    upload(internals.ColorBuffer, strided->GetVoidPointer(0), static_cast<size_t>(n) * 4);
+  }
+  else
+  {
+    upload(internals.ColorBuffer, nullptr, 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+const float* vtkMetaballMapper::GetCullingRadii()
+{
+  vtkInternals& internals = *this->Internals;
+  vtkFloatArray* radii = this->GetUploadedRadii();
+  if (!radii || internals.CullingRadii.size() != static_cast<size_t>(radii->GetNumberOfTuples()))
+  {
+    return this->Superclass::GetCullingRadii();
+  }
+  return internals.CullingRadii.data();
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  vtkInternals& internals = *this->Internals;
+
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string gs = shaders[vtkShader::Geometry]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkParticleShaderHooks& hooks = internals.Hooks;
+  hooks.Begin(vs, gs, fs);
+  using Hooks = vtkParticleShaderHooks;
+
+  // The imposter: the influence sphere (k R) with neighbours, else the iso-sphere.
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec",
+    "in float metaballMC;\n"
+    "uniform float prInfluenceFactor;\n"
+    "uniform float prIsolatedScale;");
+  hooks.AddSphereVarying("float", "prMetaball");
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
+    "radiusVC *= metaballMC > 0.5 ? prInfluenceFactor : prIsolatedScale;\n"
+    "  centerRadiusVCVSOutput.w = radiusVC;\n"
+    "  prMetaballVSOutput = metaballMC;");
+
+  internals.ColorsInShader = false;
+  if (internals.Supported)
+  {
+    const bool colors = fs.find("vertexColorVSOutput") != std::string::npos;
+    internals.ColorsInShader = colors;
+    std::ostringstream dec;
+    dec << "#define PR_METABALL_KERNELS " << this->MaximumNumberOfNeighbors + 1 << "\n";
+    if (colors)
+    {
+      dec << "#define PR_METABALL_COLORS\n";
+    }
+    dec << "//PR::Include Metaballs";
+    hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", dec.str());
+    vtkParticleShaders::ReplaceHook(
+      fs, "//VTK::System::Dec", std::string("//VTK::System::Dec\n") + ExtensionLine);
+
+    std::ostringstream surface;
+    surface
+      << "bool prMetaballInside = false;\n"
+         "  vec4 prMetaballRGBA = "
+      << (colors ? "vertexColorVSOutput" : "vec4(1.0)")
+      << ";\n"
+         "  if (prHit && prMetaballVSOutput > 0.5)\n"
+         "  {\n"
+         "    float prRadius = radiusVC / prInfluenceFactor;\n"
+         "    // the search starts where the chord enters the influence sphere, or on the near\n"
+         "    // plane when that cuts it (clip z + w = 0, affine along the ray)\n"
+         "    vec2 prZW0 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
+         "      centerOffsetVCVSOutput + prRayS, VCDCMatrix);\n"
+         "    vec2 prZW1 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
+         "      centerOffsetVCVSOutput + prRayS + prRayD, VCDCMatrix);\n"
+         "    float prF0 = prZW0.x + prZW0.y;\n"
+         "    float prF1 = (prZW1.x + prZW1.y) - prF0;\n"
+         "    float prTLo = prT0;\n"
+         "    bool prNearCut = false;\n"
+         "    if (prF1 > 0.0 && -prF0 / prF1 > prT0)\n"
+         "    {\n"
+         "      prTLo = -prF0 / prF1;\n"
+         "      prNearCut = true;\n"
+         "    }\n"
+         "    prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD);\n"
+         "    float prTHit;\n"
+         "    prHit = prTLo < prT1 &&\n"
+         "      prMetaballSearch(prTLo, prT1, prRadius, prTHit, prMetaballInside) &&\n"
+         "      (prNearCut || !prMetaballInside);\n"
+         "    if (prHit)\n"
+         "    {\n"
+         "      prT0 = prTHit;\n"
+         "      prT1 = prTHit;\n";
+    if (colors)
+    {
+      surface << "      prMetaballRGBA = prMetaballColor(prRayS + prTHit * prRayD, "
+                 "vertexColorVSOutput);\n";
+    }
+    surface << "    }\n"
+               "  }";
+    hooks.Insert(Hooks::Fragment, "//PR::Surface::Impl", surface.str());
+    hooks.Insert(Hooks::Fragment, "//PR::Surface::Normal",
+      "if (prMetaballVSOutput > 0.5)\n"
+      "  {\n"
+      "    normalVCVSOutput = prMetaballNormal(hitRel);\n"
+      "    if (dot(normalVCVSOutput, prRayD) > 0.0)\n"
+      "    {\n"
+      "      normalVCVSOutput = -normalVCVSOutput;\n"
+      "    }\n"
+      "    prInside = prInside || prMetaballInside;\n"
+      "  }");
+    if (colors)
+    {
+      // VTK's colour code reads the blended colour
+      const std::string::size_type main = fs.find("void main()");
+      if (main != std::string::npos)
+      {
+        std::string body = fs.substr(main);
+        vtkShaderProgram::Substitute(body, "vertexColorVSOutput.", "prMetaballRGBA.", true);
+        fs = fs.substr(0, main) + body;
+      }
+    }
+  }
+
+  for (std::string* source : { &vs, &gs, &fs })
+  {
+    *source = vtkParticleShaders::ResolveIncludes(*source);
+  }
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Geometry]->SetSource(gs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program)
+  {
+    return;
+  }
+  vtkInternals& internals = *this->Internals;
+  const double k = this->InfluenceFactor;
+  program->SetUniformf("prInfluenceFactor", static_cast<float>(k));
+  program->SetUniformf(
+    "prIsolatedScale", static_cast<float>(IsolatedRadiusFactor(k, this->IsoValue)));
+  if (!internals.Supported || !program->IsUniformUsed("prKernelScale"))
+  {
+    return;
+  }
+  program->SetUniformf("prKernelScale", static_cast<float>(KernelScale(k)));
+  program->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
+  program->SetUniformf("prTolerance", static_cast<float>(this->Tolerance));
+  program->SetUniformi("prIterationLimit", this->IterationLimit);
+  program->SetUniformi("prRefinementSteps", this->RefinementSteps);
+  program->SetUniformf("prNeighbourRadiusScale", static_cast<float>(this->GetRadiusScaleVC(act)));
+  // model -> view, linear part (the list offsets are model-coordinate differences)
+  vtkNew<vtkMatrix4x4> modelToView;
+  vtkMatrix4x4* view = ren->GetActiveCamera()->GetModelViewTransformMatrix();
+  if (act->GetIsIdentity())
+  {
+    modelToView->DeepCopy(view);
+  }
+  else
+  {
+    vtkMatrix4x4::Multiply4x4(view, act->GetMatrix(), modelToView);
+  }
+  float linear[9]; // column-major
+  for (int col = 0; col < 3; ++col)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      linear[3 * col + row] = static_cast<float>(modelToView->GetElement(row, col));
+    }
+  }
+  program->SetUniformMatrix3x3("prModelToViewLinear", linear);
+
+  // the storage blocks
+  const GLuint handle = static_cast<GLuint>(program->GetHandle());
+  const std::pair<const char*, unsigned int> blocks[4] = { { "prMetaballRangeBlock", RangeBinding },
+    { "prMetaballEntryBlock", EntryBinding }, { "prMetaballIdBlock", IdBinding },
+    { "prMetaballColorBlock", ColorBinding } };
+  for (const auto& block : blocks)
+  {
+    const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, block.first);
+    if (index != GL_INVALID_INDEX)
+    {
+      glShaderStorageBlockBinding(handle, index, block.second);
+    }
+  }
+  vtkParticleComputeProgram::BindStorage(RangeBinding, internals.RangeBuffer);
+  vtkParticleComputeProgram::BindStorage(EntryBinding, internals.EntryBuffer);
+  vtkParticleComputeProgram::BindStorage(IdBinding, internals.IdBuffer);
+  vtkParticleComputeProgram::BindStorage(ColorBinding, internals.ColorBuffer);
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceDraw(ren, act);
+  if (this->Internals->Supported)
+  {
+    for (unsigned int binding : { RangeBinding, EntryBinding, IdBinding, ColorBinding })
+    {
+      vtkParticleComputeProgram::BindStorage(binding, nullptr);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* context = internals.Context;
+  const bool current = context && vtkParticleComputeProgram::MakeCurrentForRelease(context);
+  internals.ReleaseBuffers(current);
+  (void)window;
+  internals.Context = nullptr;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "InfluenceFactor: " << this->InfluenceFactor << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "RefinementSteps: " << this->RefinementSteps << "\n";
+  os << indent << "IterationLimit: " << this->IterationLimit << "\n";
+  os << indent << "MaximumNumberOfNeighbors: " << this->MaximumNumberOfNeighbors << "\n";
+  os << indent << "MaximumListMemory: " << this->MaximumListMemory << "\n";
+  os << indent << "NumberOfListBuilds: " << this->NumberOfListBuilds << "\n";
+  os << indent << "LastListBuildSeconds: " << this->LastListBuildSeconds << "\n";
+  os << indent << "NumberOfListEntries: " << this->NumberOfListEntries << "\n";
+  os << indent << "NumberOfIsolatedParticles: " << this->NumberOfIsolatedParticles << "\n";
+  os << indent << "NumberOfTruncatedLists: " << this->NumberOfTruncatedLists << "\n";
+}

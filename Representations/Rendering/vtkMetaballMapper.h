@@ -1,0 +1,210 @@
+/**
+ * @class   vtkMetaballMapper
+ * @brief   draws the metaball surface of particles: isolated particles stay their spheres,
+ *          neighbouring ones merge into closed shapes (Mueller, Grottel, Ertl 2007)
+ *
+ * vtkMetaballMapper draws the iso-surface D = IsoValue of the sum over all particles of the
+ * kernel of Mueller et al. 2007, Eq. 2, with the influence radius K = k R generalised from the
+ * paper's 2 R to InfluenceFactor k:
+ *
+ *   D_i(r) = c (1 - (r / (k R_i))^2)^2 for r <= k R_i, 0 beyond,  c = 1 / (1 - 1/k^2)^2
+ *
+ * (k = 2: c = 16/9, Eq. 2). D_i(R_i) = 1, so with IsoValue 1 an isolated particle is exactly its
+ * sphere. It is a vtkParticleSphereMapper: the same input handling (radius array or constant,
+ * RadiusScaleFactor, bad positions and radii skipped with a warning), colouring, lights and
+ * material, picking (the particle whose influence sphere drew the pixel), clipping planes and
+ * the shader hooks through which the AO passes reach it (vtkParticleShaderHooks).
+ *
+ * Method: the paper's "vicinity" approach (Sec. 3.1), with an exact search along the ray instead
+ * of fixed samples.
+ * - Per particle a view-independent list of the particles whose influence spheres overlap its
+ *   own (|c_i - c_j| < k (R_i + R_j)), built on the CPU with vtkStaticPointLocator and
+ *   vtkSMPTools, kept in shader storage buffers (entries: the neighbour's centre relative to
+ *   the particle, formed in double, and its radius). Rebuilt only when the positions, the radii,
+ *   RadiusScaleFactor, InfluenceFactor or MaximumNumberOfNeighbors change; never when the camera,
+ *   IsoValue, colours or material change.
+ * - A particle without neighbours is drawn by the plain sphere imposter of the core, with the
+ *   radius of its own iso-sphere, k R sqrt(1 - sqrt(IsoValue / c)) (R for IsoValue 1): exact.
+ * - The others draw their influence sphere. The fragment gathers the kernels its ray meets and
+ *   finds the first crossing of the iso-value in the ray's chord through the influence sphere
+ *   (Shaders/Metaballs.glsl). Along a ray every kernel is unimodal, so every interval has
+ *   certified bounds of the field (the sums of the kernels' maxima and minima over it). The
+ *   chord is subdivided depth first, left half first: an interval that cannot hold a crossing
+ *   is passed whole, the others are halved down to Tolerance x R, where the field at the
+ *   interval's end decides: across, the first crossing is in it (it is bisected
+ *   RefinementSteps times and finished with a secant step); not across, it is passed. Unlike
+ *   the paper's fixed samples (its Fig. 11 holes), no part of the surface thicker than
+ *   Tolerance x R along the ray is missed. The depth test keeps the nearest crossing over all
+ *   influence spheres, which is the surface: outside every influence sphere the field is 0.
+ * - Normals: the field's analytic gradient at the hit (the paper interpolates the particles'
+ *   normals by their density share; the gradient is the surface's true normal and costs the
+ *   same). Colour: the scalar colours of the particles blended by their field contribution D_j
+ *   at the hit (the paper's weights), so colour by type shows which atoms form which part.
+ * - True depth is written (composites with other geometry; ambient occlusion passes see it).
+ * - Where the near plane cuts a metaball the search starts on the near plane and, inside,
+ *   finds the exit: the inner side is shown, lit facing the viewer (as the sphere core does).
+ *
+ * Settings that bound the cost:
+ * - MaximumNumberOfNeighbors (default 64): a list keeps at most this many, the nearest (a
+ *   warning counts the particles that had more: a huge InfluenceFactor makes every particle a
+ *   neighbour of every other, which this bounds to O(N M) time and memory).
+ * - MaximumListMemory (MiB, default 1024): the lists together; beyond, every list is cut to the
+ *   share that fits, with a warning.
+ * - IterationLimit (default 100) bounds the intervals examined per fragment: a fragment that
+ *   runs out of them before it finds its bracket draws nothing (a grazing ray that stays just
+ *   below the iso-value over a long stretch is the costly case); RefinementSteps (default 6)
+ *   bisections follow a bracket.
+ *
+ * Needs OpenGL 4.3 (shader storage buffers in the fragment stage). Below it an error says so
+ * once and every particle is drawn as its plain sphere.
+ *
+ * Occlusion culling (vtkParticleOcclusionCuller) tests each particle with the sphere it draws
+ * (its influence sphere when it has neighbours).
+ *
+ * Not done (yet): the paper's "walking depth plane" (Sec. 3.2) as a second method; translucent
+ * metaballs.
+ *
+ * @sa vtkParticleSphereMapper vtkParticleReferenceMetaballs vtkParticleShaderHooks
+ */
+#ifndef vtkMetaballMapper_h
+#define vtkMetaballMapper_h
+
+#include "vtkParticleRenderingModule.h" // for export macro
+#include "vtkParticleSphereMapper.h"
+
+class VTKPARTICLERENDERING_EXPORT vtkMetaballMapper : public vtkParticleSphereMapper
+{
+public:
+  static vtkMetaballMapper* New();
+  vtkTypeMacro(vtkMetaballMapper, vtkParticleSphereMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Influence radius over particle radius, k (the paper: 2). Larger values merge particles
+   * farther apart and make the neighbour lists longer. Default 2, clamped to [1.05, 10].
+   */
+  vtkSetClampMacro(InfluenceFactor, double, 1.05, 10.0);
+  vtkGetMacro(InfluenceFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * The iso-value of the surface (the paper's threshold t). 1 (default): an isolated particle
+   * is its sphere; smaller values grow and merge the shapes, larger ones shrink them (an
+   * isolated particle vanishes at c = 1 / (1 - 1/k^2)^2 and above). Clamped to [1e-3, 1e3].
+   */
+  vtkSetClampMacro(IsoValue, double, 1e-3, 1e3);
+  vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /**
+   * The search's resolution along the ray, in units of the drawing particle's radius: a part of
+   * the surface thinner than this along the ray can be missed, nothing thicker; the bracket of
+   * the crossing has this width before its refinement. Default 0.01, clamped to [1e-6, 0.5].
+   */
+  vtkSetClampMacro(Tolerance, double, 1e-6, 0.5);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Bisections of the bracket before the final secant step (the depth error falls about 4x per
+   * step on smooth parts). Default 6, clamped to [0, 30].
+   */
+  vtkSetClampMacro(RefinementSteps, int, 0, 30);
+  vtkGetMacro(RefinementSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Most intervals the search examines per fragment. Default 100, clamped to [1, 10000].
+   */
+  vtkSetClampMacro(IterationLimit, int, 1, 10000);
+  vtkGetMacro(IterationLimit, int);
+  ///@}
+
+  ///@{
+  /**
+   * Most neighbours per list (the nearest are kept). Default 64, clamped to [1, 255]; it is
+   * also the size of the fragment stage's kernel array.
+   */
+  vtkSetClampMacro(MaximumNumberOfNeighbors, int, 1, 255);
+  vtkGetMacro(MaximumNumberOfNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * Most memory of the neighbour lists, in MiB (20 bytes per entry, 8 per particle).
+   * Default 1024.
+   */
+  vtkSetClampMacro(MaximumListMemory, double, 1.0, 1e7);
+  vtkGetMacro(MaximumListMemory, double);
+  ///@}
+
+  ///@{
+  /**
+   * Statistics of the last neighbour-list build: builds so far, its CPU seconds, list entries,
+   * particles drawn as plain spheres (no neighbour), particles whose list was cut (more
+   * neighbours than MaximumNumberOfNeighbors or than MaximumListMemory allows).
+   */
+  vtkGetMacro(NumberOfListBuilds, vtkIdType);
+  vtkGetMacro(LastListBuildSeconds, double);
+  vtkGetMacro(NumberOfListEntries, vtkIdType);
+  vtkGetMacro(NumberOfIsolatedParticles, vtkIdType);
+  vtkGetMacro(NumberOfTruncatedLists, vtkIdType);
+  ///@}
+
+  /**
+   * The kernel scale c = 1 / (1 - 1/k^2)^2 for influence factor k, and the radius of an
+   * isolated particle's iso-sphere over its radius, k sqrt(1 - sqrt(iso / c)) (0 when iso >= c).
+   */
+  static double KernelScale(double influenceFactor);
+  static double IsolatedRadiusFactor(double influenceFactor, double isoValue);
+
+  /**
+   * Bounds of the surface: the centres grown by the largest influence radius.
+   */
+  using Superclass::GetBounds;
+  double* GetBounds() override;
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkMetaballMapper();
+  ~vtkMetaballMapper() override;
+
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
+  const float* GetCullingRadii() override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  // (re)build the neighbour lists of the uploaded particles when what they depend on changed
+  void UpdateNeighborLists();
+
+  double InfluenceFactor = 2.0;
+  double IsoValue = 1.0;
+  double Tolerance = 0.01;
+  int RefinementSteps = 6;
+  int IterationLimit = 100;
+  int MaximumNumberOfNeighbors = 64;
+  double MaximumListMemory = 1024.0;
+  vtkIdType NumberOfListBuilds = 0;
+  double LastListBuildSeconds = 0.0;
+  vtkIdType NumberOfListEntries = 0;
+  vtkIdType NumberOfIsolatedParticles = 0;
+  vtkIdType NumberOfTruncatedLists = 0;
+
+private:
+  vtkMetaballMapper(const vtkMetaballMapper&) = delete;
+  void operator=(const vtkMetaballMapper&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif
