@@ -14,7 +14,7 @@ layout(triangle_strip, max_vertices = 3) out;
 uniform mat4 VCDCMatrix;
 uniform mat4 DCVCMatrix;
 uniform int cameraParallel;
-#ifdef PR_OCCLUSION_CULLING
+#if defined(PR_OCCLUSION_CULLING) || defined(PR_CONSERVATIVE_DEPTH)
 // clip-space z and w of the MC->VC translation (see prDepthOfSplitPointVC)
 uniform vec2 clipZWOfTranslation;
 #endif
@@ -35,8 +35,10 @@ out vec3 rayVCGSOutput;
 //VTK::PrimID::Dec
 
 //PR::Include SphereImposter
-#ifdef PR_OCCLUSION_CULLING
+#if defined(PR_OCCLUSION_CULLING) || defined(PR_CONSERVATIVE_DEPTH)
 //PR::Include RaySphere
+#endif
+#ifdef PR_OCCLUSION_CULLING
 //PR::Include OcclusionCull
 #endif
 //PR::Sphere::Dec
@@ -66,6 +68,19 @@ void main()
   }
 #endif
   //PR::Sphere::Cull
+#ifdef PR_CONSERVATIVE_DEPTH
+  // The triangle at the window depth of the sphere's nearest point (its largest view z, a
+  // little beyond; on the near plane when that is in front of it), so that with the fragment
+  // stage's depth_greater layout the depth test can reject hidden fragments before they run.
+  // The split form keeps it below the written depths with the camera far away.
+  vec2 prNearZW = prClipZWOfSplitPointVC(clipZWOfTranslation,
+    centerOffsetVCVSOutput[0] + vec3(0.0, 0.0, 1.001 * radiusVC), VCDCMatrix);
+  float prNearNDC = prNearZW.y > 0.0 ? max(prNearZW.x / prNearZW.y, -1.0) : -1.0;
+  for (int corner = 0; corner < 3; ++corner)
+  {
+    cornersDC[corner].z = prNearNDC * cornersDC[corner].w;
+  }
+#endif
   int i = 0; // the input vertex, for VTK's pass-through replacements
   for (int corner = 0; corner < 3; ++corner)
   {

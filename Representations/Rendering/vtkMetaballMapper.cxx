@@ -44,7 +44,8 @@ const unsigned int RangeBinding = 0;
 const unsigned int EntryBinding = 1;
 const unsigned int IdBinding = 2;
 const unsigned int ColorBinding = 3;
-const char* const ExtensionLine = "#extension GL_ARB_shader_storage_buffer_object : require\n";
+const char* const ExtensionLine = "#extension GL_ARB_shader_storage_buffer_object : require\n"
+                                  "#extension GL_ARB_conservative_depth : require\n";
 // bytes of a list entry (centre offset and radius, neighbour index) and per particle (range)
 const double EntryBytes = 20.0;
 const double ParticleBytes = 8.0;
@@ -239,18 +240,46 @@ void vtkMetaballMapper::UpdateNeighborLists()
 
   // The locator over the uploaded positions (skipped particles sit on a valid one with radius 0
   // and are never neighbours).
+  // (on a copy: the locator's bounds computation touches the array it is given, which would
+  // make the input look modified and re-upload it every frame)
+  vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(positions->NewInstance());
+  copy->DeepCopy(positions);
   vtkNew<vtkPoints> points;
-  points->SetData(positions);
+  points->SetData(copy);
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(points);
   vtkNew<vtkStaticPointLocator> locator;
   locator->SetDataSet(cloud);
   locator->BuildLocator();
 
-  // Per particle the M + 1 nearest centres (itself among them). Every particle whose influence
-  // sphere can overlap lies within k (R_i + R_max); when the farthest of them is beyond that,
-  // the list is complete, else it may have been cut. One query per particle whatever the
-  // density: a huge influence radius costs O(N M), not O(N^2).
+  // Candidates: the centres within k (R_i + R_max) of each particle (every particle whose
+  // influence sphere can overlap its own). A sample of the particles first measures how many
+  // that is; when crowded (a huge InfluenceFactor makes every particle a neighbour of every
+  // other), the query radius shrinks so that a query returns about 2 (M + 1) centres: the cost
+  // stays O(N M) instead of O(N^2), and the lists, possibly incomplete, are counted as cut.
+  double radiusFactor = 1.0;
+  {
+    vtkNew<vtkIdList> found;
+    double ci[3];
+    double sum = 0.0;
+    vtkIdType sampled = 0;
+    const vtkIdType step = std::max<vtkIdType>(1, n / 256);
+    for (vtkIdType i = 0; i < n; i += step)
+    {
+      if (r[i] > 0.0f)
+      {
+        positions->GetTuple(i, ci);
+        locator->FindPointsWithinRadius(k * (r[i] * scale + rMax), ci, found);
+        sum += static_cast<double>(found->GetNumberOfIds());
+        ++sampled;
+      }
+    }
+    const double mean = sampled > 0 ? sum / sampled : 0.0;
+    if (mean > 4.0 * (maxNeighbors + 1))
+    {
+      radiusFactor = std::cbrt(2.0 * (maxNeighbors + 1) / mean);
+    }
+  }
   struct Chunk
   {
     vtkIdType Begin = 0;
@@ -263,7 +292,8 @@ void vtkMetaballMapper::UpdateNeighborLists()
     Chunk chunk;
     chunk.Begin = begin;
     chunk.Counts.resize(static_cast<size_t>(end - begin));
-    vtkNew<vtkIdList> nearest;
+    vtkNew<vtkIdList> found;
+    std::vector<std::pair<double, std::int32_t>> overlapping;
     double ci[3];
     double cj[3];
     for (vtkIdType i = begin; i < end; ++i)
@@ -272,29 +302,34 @@ void vtkMetaballMapper::UpdateNeighborLists()
       if (r[i] > 0.0f)
       {
         positions->GetTuple(i, ci);
-        locator->FindClosestNPoints(maxNeighbors + 1, ci, nearest);
         const double ri = r[i] * scale;
-        const vtkIdType found = nearest->GetNumberOfIds();
-        double farthest2 = 0.0;
-        for (vtkIdType m = 0; m < found; ++m)
+        locator->FindPointsWithinRadius(radiusFactor * k * (ri + rMax), ci, found);
+        overlapping.clear();
+        const vtkIdType candidates = found->GetNumberOfIds();
+        for (vtkIdType m = 0; m < candidates; ++m)
         {
-          const vtkIdType j = nearest->GetId(m);
-          positions->GetTuple(j, cj);
-          const double d2 = vtkMath::Distance2BetweenPoints(ci, cj);
-          farthest2 = std::max(farthest2, d2);
-          if (j == i || !(r[j] > 0.0f) || count >= maxNeighbors)
+          const vtkIdType j = found->GetId(m);
+          if (j == i || !(r[j] > 0.0f))
           {
             continue;
           }
+          positions->GetTuple(j, cj);
+          const double d2 = vtkMath::Distance2BetweenPoints(ci, cj);
           const double reach = k * (ri + r[j] * scale);
           if (d2 < reach * reach)
           {
-            chunk.Neighbors.push_back(static_cast<std::int32_t>(j));
-            ++count;
+            overlapping.emplace_back(d2, static_cast<std::int32_t>(j));
           }
         }
-        const double searchRadius = k * (ri + rMax);
-        if (found == maxNeighbors + 1 && farthest2 < searchRadius * searchRadius)
+        // the nearest M (by centre distance), nearest first
+        const size_t keep = std::min<size_t>(overlapping.size(), maxNeighbors);
+        std::partial_sort(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
+        for (size_t m = 0; m < keep; ++m)
+        {
+          chunk.Neighbors.push_back(overlapping[m].second);
+        }
+        count = static_cast<std::int32_t>(keep);
+        if (overlapping.size() > keep || radiusFactor < 1.0)
         {
           ++chunk.Truncated;
         }
@@ -421,6 +456,7 @@ void vtkMetaballMapper::UpdateNeighborLists()
   {
     warning << truncated << " of " << n << " particles have more than MaximumNumberOfNeighbors ("
             << maxNeighbors << ") particles within their influence radius (InfluenceFactor " << k
+            << (radiusFactor < 1.0 ? "; so crowded that only the nearest were searched" : "")
             << "): their " << maxNeighbors
             << " nearest are used; the surface there is approximate. Lower InfluenceFactor or "
                "raise MaximumNumberOfNeighbors (at most 255). ";
@@ -555,10 +591,14 @@ void vtkMetaballMapper::ReplaceShaderValues(
     {
       dec << "#define PR_METABALL_COLORS\n";
     }
-    dec << "//PR::Include Metaballs";
+    dec << "//PR::Include Metaballs\n"
+           "layout(depth_greater) out float gl_FragDepth;";
     hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", dec.str());
     vtkParticleShaders::ReplaceHook(
       fs, "//VTK::System::Dec", std::string("//VTK::System::Dec\n") + ExtensionLine);
+    // the imposters at their nearest depth, written depths only greater (early depth tests)
+    vtkParticleShaders::ReplaceHook(
+      gs, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_CONSERVATIVE_DEPTH");
 
     std::ostringstream surface;
     surface
