@@ -14,6 +14,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
+#include "vtkMetaballMapper.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkTransparentSphereMapper.h"
 #include "vtkPointData.h"
@@ -66,6 +67,8 @@ vtkSmartPointer<vtkParticleSphereMapper> vtkParticleRepresentation::NewMapper(in
 {
   switch (technique)
   {
+    case METABALLS:
+      return vtkSmartPointer<vtkMetaballMapper>::New();
     case SPHERES:
     default:
       return vtkSmartPointer<vtkTransparentSphereMapper>::New();
@@ -75,7 +78,7 @@ vtkSmartPointer<vtkParticleSphereMapper> vtkParticleRepresentation::NewMapper(in
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetTechnique(int technique)
 {
-  if (technique != SPHERES)
+  if (technique != SPHERES && technique != METABALLS)
   {
     vtkErrorMacro(<< "Unknown particle technique " << technique << ": keeping " << this->Technique
                   << ".");
@@ -121,6 +124,58 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     transparent->SetOverlapTolerance(this->OverlapTolerance);
     transparent->SetOpacityReference(this->OpacityReference);
   }
+  if (auto* metaballs = vtkMetaballMapper::SafeDownCast(this->Mapper))
+  {
+    metaballs->SetInfluenceFactor(this->InfluenceFactor);
+    metaballs->SetIsoValue(this->IsoValue);
+    metaballs->SetTolerance(this->MetaballTolerance);
+    metaballs->SetRefinementSteps(this->RefinementSteps);
+    metaballs->SetIterationLimit(this->IterationLimit);
+    metaballs->SetMaximumNumberOfNeighbors(this->MaximumNumberOfNeighbors);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetInfluenceFactor(double factor)
+{
+  this->InfluenceFactor = factor;
+  this->ApplyMapperSettings();
+  this->MarkModified(); // the bounds grow with it
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetIsoValue(double value)
+{
+  this->IsoValue = value;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetMetaballTolerance(double tolerance)
+{
+  this->MetaballTolerance = tolerance;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetRefinementSteps(int steps)
+{
+  this->RefinementSteps = steps;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetIterationLimit(int limit)
+{
+  this->IterationLimit = limit;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetMaximumNumberOfNeighbors(int count)
+{
+  this->MaximumNumberOfNeighbors = count;
+  this->ApplyMapperSettings();
 }
 
 //------------------------------------------------------------------------------
@@ -291,7 +346,9 @@ void vtkParticleRepresentation::ComputeSphereBounds(vtkPolyData* particles, doub
       maxRadius = range[0] <= range[1] ? std::max(0.0, range[1]) : 0.0;
     }
   }
-  const double grow = maxRadius * std::abs(this->Mapper->GetRadiusScaleFactor());
+  // (metaball surfaces reach the influence radius k R)
+  const double reach = this->Technique == METABALLS ? this->InfluenceFactor : 1.0;
+  const double grow = reach * maxRadius * std::abs(this->Mapper->GetRadiusScaleFactor());
   for (int k = 0; k < 3; ++k)
   {
     bounds[2 * k] = centers[2 * k] - grow;

@@ -115,6 +115,19 @@ public:
 
   ///@{
   /**
+   * Metaballs (vtkMetaballMapper; used with the METABALLS technique): influence factor k,
+   * iso-value, search tolerance, refinement steps, iteration limit, neighbour list bound.
+   */
+  void SetInfluenceFactor(double factor);
+  void SetIsoValue(double value);
+  void SetMetaballTolerance(double tolerance);
+  void SetRefinementSteps(int steps);
+  void SetIterationLimit(int limit);
+  void SetMaximumNumberOfNeighbors(int count);
+  ///@}
+
+  ///@{
+  /**
    * Which values of the opacity array map to opacity 0 and 1: OPACITY_RANGE_DATA (default) the
    * finite range of the chosen array in the current data (all processes), so that it follows
    * the array and the time step; OPACITY_RANGE_CUSTOM the OpacityArrayRange values (e.g. to keep
@@ -170,13 +183,15 @@ public:
    * The drawing technique, i.e. which mapper draws the particles. Every technique's mapper is a
    * vtkParticleSphereMapper (same input handling, radii, colours); NewMapper() is the one place
    * that maps a technique to its mapper, and switching re-applies every setting the
-   * representation holds. SPHERES (the only one today): vtkTransparentSphereMapper, which draws
-   * opaque spheres as its superclass does and translucent ones exactly (Staib et al. 2015).
-   * The metaball mapper joins here.
+   * representation holds. SPHERES: vtkTransparentSphereMapper, which draws opaque spheres as
+   * its superclass does and translucent ones exactly (Staib et al. 2015). METABALLS:
+   * vtkMetaballMapper (Mueller et al. 2007), the "Metaballs" entry of the Representation
+   * drop-down (the same proxy with Technique 1, see Plugin/ParticleRendering.xml).
    */
   enum ParticleTechniques
   {
-    SPHERES = 0
+    SPHERES = 0,
+    METABALLS = 1
   };
   void SetTechnique(int technique);
   vtkGetMacro(Technique, int);
@@ -240,6 +255,13 @@ protected:
   int OverlapCompositing = 0;
   double FragmentListMemory = 256.0;
   double OverlapTolerance = 0.25;
+  // settings of the metaball technique (vtkMetaballMapper's defaults)
+  double InfluenceFactor = 2.0;
+  double IsoValue = 1.0;
+  double MetaballTolerance = 0.01;
+  int RefinementSteps = 6;
+  int IterationLimit = 100;
+  int MaximumNumberOfNeighbors = 64;
   int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;
