@@ -1,0 +1,321 @@
+"""Metaballs (vtkMetaballMapper, Mueller et al. 2007) measured against the exact surface
+(vtkParticleReferenceRenderer, metaball mode) and against the peer a ParaView user has today:
+the field on a grid and a contour.
+
+Tables (Benchmarks/results/metaball_*.csv, plot metaball_benchmark.png):
+- metaball_frames.csv: per scene (the LAMMPS droplets tiled 1x and 2x, 1.1e4 and 8.8e4 atoms; a
+  gas with 10 % or 90 % of the atoms in clusters, the paper's Sim-1 / Sim-3 contrast) the frame
+  time of the opaque sphere core and of the metaballs while only the camera moves, the
+  neighbour-list build (the per-time-step cost besides the upload) and the list size.
+- metaball_accuracy.csv: depth error (units of the radius) and normal error (degrees) of the
+  metaballs against the exact surface, and the frame time, versus Tolerance, RefinementSteps
+  and IterationLimit (droplets, 1.1e4 atoms).
+- metaball_peer.csv: the peer at grid resolutions 64..256: vtkGaussianSplatter (ParaView's
+  "Gaussian Resampling") onto the grid, vtkFlyingEdges3D, rendering; its time per time step and
+  the depth error of contouring the exact metaball field sampled on that grid (the best a grid
+  method of that resolution can do), against the same reference.
+
+usage: python3 metaball_benchmark.py [--out Benchmarks/results] [--quick]
+       python3 metaball_benchmark.py --plot-only      (the PNG from Benchmarks/results)
+(run under Scripts/with_xvfb.sh with PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython)
+"""
+import argparse
+import csv
+import os
+import time
+
+import numpy as np
+
+import particlerendering as pr
+from prMetaballTesting import compare
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkLookupTable, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
+from vtkmodules.vtkImagingHybrid import vtkGaussianSplatter
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(HERE, "..", "Testing", "Data", "lj_droplets.vtp")
+SIZE = (480, 360)
+
+
+def polydata(xyz, radius, kind):
+    out = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz, dtype=np.float64), deep=True))
+    out.SetPoints(points)
+    for name, values in (("radius", radius), ("type", kind)):
+        array = numpy_to_vtk(np.ascontiguousarray(values, dtype=np.float32), deep=True)
+        array.SetName(name)
+        out.GetPointData().AddArray(array)
+    return out
+
+
+def droplets(k):
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(DATA)
+    reader.Update()
+    data = reader.GetOutput()
+    xyz = vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64)
+    radius = vtk_to_numpy(data.GetPointData().GetArray("radius"))
+    kind = vtk_to_numpy(data.GetPointData().GetArray("type"))
+    size = xyz.max(axis=0) - xyz.min(axis=0)
+    shifts = [np.array([i, j, l]) * size for i in range(k) for j in range(k) for l in range(k)]
+    return (np.concatenate([xyz + s for s in shifts]), np.tile(radius, len(shifts)),
+            np.tile(kind, len(shifts)))
+
+
+def clustered(n, share, seed=1):
+    """n atoms of radius 0.5 in a box at liquid spacing inside clusters of ~200 atoms holding
+    `share` of them, the rest a dilute gas (the paper's Sim-1: few clustered, Sim-3: most)."""
+    rng = np.random.default_rng(seed)
+    side = (n / 0.02) ** (1.0 / 3.0)
+    n_cl = int(n * share)
+    centres = rng.uniform(0.1 * side, 0.9 * side, (max(1, n_cl // 200), 3))
+    member = rng.integers(0, len(centres), n_cl)
+    offsets = rng.normal(0.0, 1.0, (n_cl, 3))
+    offsets *= (3.0 * np.cbrt(rng.random(n_cl)) / np.linalg.norm(offsets, axis=1))[:, None]
+    cl = centres[member] + offsets * 3.4  # ~200 atoms in a ball of radius ~3.4 sigma
+    gas = rng.uniform(0, side, (n - n_cl, 3))
+    xyz = np.vstack([cl, gas])
+    return xyz, np.full(n, 0.5), np.r_[np.full(n_cl, 2.0), np.ones(n - n_cl)]
+
+
+def view(mapper, data):
+    mapper.SetInputData(data)
+    mapper.SetRadiusArrayName("radius")
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("type")
+    lut = vtkLookupTable()
+    lut.SetNumberOfTableValues(2)
+    lut.SetTableValue(0, 0.85, 0.33, 0.10)
+    lut.SetTableValue(1, 0.12, 0.47, 0.80)
+    lut.SetTableRange(1, 2)
+    lut.Build()
+    mapper.SetLookupTable(lut)
+    mapper.SetUseLookupTableScalarRange(1)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)  # one sample per pixel, like the reference
+    window.SetSize(*SIZE)
+    window.AddRenderer(renderer)
+    renderer.GetActiveCamera().SetPosition(-1.0, -1.4, 1.2)
+    renderer.ResetCamera()
+    renderer.GetActiveCamera().Zoom(1.6)
+    return actor, renderer, window
+
+
+def frame_seconds(window, renderer, frames):
+    window.Render()
+    start = time.time()
+    for _ in range(frames):
+        renderer.GetActiveCamera().Azimuth(0.5)
+        window.Render()
+    return (time.time() - start) / frames
+
+
+def exact_field_grid(xyz, radius, k, bounds, resolution):
+    """The metaball field sum_i c (1 - r^2/(k R_i)^2)^2 sampled on a resolution^3 grid."""
+    c = 1.0 / (1.0 - 1.0 / k ** 2) ** 2
+    lo = np.array(bounds[0::2])
+    hi = np.array(bounds[1::2])
+    spacing = (hi - lo) / (resolution - 1)
+    field = np.zeros((resolution,) * 3)
+    for p, r in zip(xyz, radius):
+        reach = k * r
+        i0 = np.maximum(np.floor((p - reach - lo) / spacing).astype(int), 0)
+        i1 = np.minimum(np.ceil((p + reach - lo) / spacing).astype(int), resolution - 1)
+        axes = [lo[a] + spacing[a] * np.arange(i0[a], i1[a] + 1) - p[a] for a in range(3)]
+        d2 = (axes[0][:, None, None] ** 2 + axes[1][None, :, None] ** 2 +
+              axes[2][None, None, :] ** 2)
+        q = np.maximum(1.0 - d2 / reach ** 2, 0.0)
+        field[i0[0]:i1[0] + 1, i0[1]:i1[1] + 1, i0[2]:i1[2] + 1] += c * q * q
+    image = vtkImageData()
+    image.SetDimensions(resolution, resolution, resolution)
+    image.SetOrigin(*lo)
+    image.SetSpacing(*spacing)
+    # VTK's x-fastest order
+    image.GetPointData().SetScalars(numpy_to_vtk(field.transpose(2, 1, 0).ravel().copy(), deep=1))
+    return image
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--out", default=os.path.join(HERE, "results"))
+    parser.add_argument("--quick", action="store_true")
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    frames = 2 if args.quick else 4
+
+    # ---- frames and list builds
+    scenes = [("droplets 1x", droplets(1)), ("droplets 2x", droplets(2)),
+              ("Sim-1-like 10 % clustered", clustered(20000, 0.1)),
+              ("Sim-3-like 90 % clustered", clustered(20000, 0.9))]
+    rows = []
+    for name, (xyz, radius, kind) in scenes:
+        data = polydata(xyz, radius, kind)
+        core = pr.vtkParticleSphereMapper()
+        _, renderer, window = view(core, data)
+        core_s = frame_seconds(window, renderer, frames)
+        metaballs = pr.vtkMetaballMapper()
+        _, renderer, window = view(metaballs, data)
+        metaball_s = frame_seconds(window, renderer, frames)
+        rows.append({"scene": name, "atoms": len(xyz), "core_frame_s": round(core_s, 4),
+                     "metaball_frame_s": round(metaball_s, 4),
+                     "ratio": round(metaball_s / core_s, 2),
+                     "list_build_s": round(metaballs.GetLastListBuildSeconds(), 4),
+                     "list_entries": metaballs.GetNumberOfListEntries(),
+                     "isolated": metaballs.GetNumberOfIsolatedParticles()})
+        print(rows[-1], flush=True)
+    with open(os.path.join(args.out, "metaball_frames.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+
+    # ---- accuracy versus the knobs (droplets 1x)
+    xyz, radius, kind = droplets(1)
+    data = polydata(xyz, radius, kind)
+    r_mean = float(np.mean(radius))
+    settings = [("Tolerance", v) for v in (0.2, 0.05, 0.01, 0.001)] + \
+               [("RefinementSteps", v) for v in (0, 2, 6, 12)] + \
+               [("IterationLimit", v) for v in (10, 20, 40, 100)]
+    rows = []
+    for knob, value in settings:
+        mapper = pr.vtkMetaballMapper()
+        getattr(mapper, "Set" + knob)(value)
+        actor, renderer, window = view(mapper, data)
+        seconds = frame_seconds(window, renderer, frames)
+        r = compare(window, renderer, actor, r_mean, normals=True)
+        rows.append({"knob": knob, "value": value, "frame_s": round(seconds, 4),
+                     "depth_mean_R": "%.3g" % r["mean"], "depth_p99_R": "%.3g" % r["p99"],
+                     "depth_max_smooth_R": "%.3g" % r["max_smooth"],
+                     "missing_pixels": r["only_ref"], "extra_pixels": r["only_gpu"],
+                     "covered": r["covered"], "normal_mean_deg": "%.3g" % r["normal_mean"]})
+        print(rows[-1], flush=True)
+    with open(os.path.join(args.out, "metaball_accuracy.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+
+    # ---- the peer: a grid and a contour, at several resolutions (droplets 1x)
+    mapper = pr.vtkMetaballMapper()
+    actor, renderer, window = view(mapper, data)
+    window.Render()
+    reference = pr.vtkParticleReferenceRenderer()
+    reference.SetRenderer(renderer)
+    reference.SetActor(actor)
+    reference.SetImageSize(*SIZE)
+    reference.Render()
+    ref_t = vtk_to_numpy(reference.GetViewDepthImage().GetPointData().GetScalars()).copy()
+    bounds = mapper.GetBounds()
+    rows = []
+    for resolution in ((64, 128) if args.quick else (64, 128, 192, 256)):
+        splat = vtkGaussianSplatter()
+        splat.SetInputData(data)
+        splat.SetSampleDimensions(resolution, resolution, resolution)
+        splat.SetModelBounds(bounds)
+        splat.SetRadius(2.0 * r_mean / (bounds[1] - bounds[0]))
+        splat.ScalarWarpingOff()
+        start = time.time()
+        splat.Update()
+        splat_s = time.time() - start
+        grid = exact_field_grid(xyz, radius, 2.0, bounds, resolution)
+        contour = vtkFlyingEdges3D()
+        contour.SetInputData(grid)
+        contour.SetValue(0, 1.0)
+        contour.ComputeNormalsOn()
+        start = time.time()
+        contour.Update()
+        contour_s = time.time() - start
+        surface = vtkPolyDataMapper()
+        surface.SetInputData(contour.GetOutput())
+        surface.ScalarVisibilityOff()
+        actor.SetMapper(surface)
+        start = time.time()
+        window.Render()
+        render_s = time.time() - start
+        gt = __import__("prMetaballTesting").gpu_view_depth(window, reference)
+        both = (gt >= 0) & (ref_t >= 0)
+        err = np.abs(gt - ref_t)[both] / r_mean
+        rows.append({"resolution": resolution, "splat_s": round(splat_s, 3),
+                     "contour_s": round(contour_s, 3), "render_s": round(render_s, 3),
+                     "step_s": round(splat_s + contour_s + render_s, 3),
+                     "triangles": contour.GetOutput().GetNumberOfCells(),
+                     "depth_mean_R": "%.3g" % err.mean(), "depth_p99_R":
+                     "%.3g" % np.percentile(err, 99),
+                     "coverage_differs": int(((gt >= 0) != (ref_t >= 0)).sum())})
+        print(rows[-1], flush=True)
+        actor.SetMapper(mapper)
+    with open(os.path.join(args.out, "metaball_peer.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    return args.out
+
+
+def plot(out):
+    """metaball_benchmark.png from the three tables: frame-time ratios, error versus frame time
+    per knob, the peer's error and time per step versus the metaballs'."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def read(name):
+        with open(os.path.join(out, name)) as f:
+            return list(csv.DictReader(f))
+    frames = read("metaball_frames.csv")
+    accuracy = read("metaball_accuracy.csv")
+    peer = read("metaball_peer.csv")
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
+    ax = axes[0]
+    ax.bar(range(len(frames)), [float(r["ratio"]) for r in frames])
+    ax.set_xticks(range(len(frames)))
+    ax.set_xticklabels(["%s\n%s atoms" % (r["scene"], r["atoms"]) for r in frames], fontsize=7)
+    ax.set_ylabel("metaball frame / opaque sphere core frame")
+    ax.set_title("camera-only frames, llvmpipe, %dx%d" % SIZE)
+    ax = axes[1]
+    for knob in ("Tolerance", "RefinementSteps", "IterationLimit"):
+        rows = [r for r in accuracy if r["knob"] == knob]
+        ax.plot([float(r["frame_s"]) for r in rows],
+                [max(float(r["depth_mean_R"]), 1e-7) for r in rows], "o-", label=knob)
+        for r in rows:
+            ax.annotate(r["value"], (float(r["frame_s"]), max(float(r["depth_mean_R"]), 1e-7)),
+                        fontsize=7)
+    ax.set_yscale("log")
+    ax.set_xlabel("frame time (s)")
+    ax.set_ylabel("mean depth error (R) vs the exact surface")
+    ax.set_title("droplets 1x: error vs time per knob")
+    ax.legend(fontsize=8)
+    ax = axes[2]
+    ax.plot([float(r["step_s"]) for r in peer], [float(r["depth_mean_R"]) for r in peer], "s-",
+            label="grid + vtkFlyingEdges3D (peer)")
+    for r in peer:
+        ax.annotate("%s^3" % r["resolution"], (float(r["step_s"]), float(r["depth_mean_R"])),
+                    fontsize=7)
+    mine = [r for r in accuracy if r["knob"] == "Tolerance" and r["value"] == "0.01"]
+    droplet = frames[0]
+    if mine:
+        ax.plot([float(droplet["list_build_s"]) + float(mine[0]["frame_s"])],
+                [max(float(mine[0]["depth_mean_R"]), 1e-7)], "r*", markersize=12,
+                label="vtkMetaballMapper (list build + frame)")
+    ax.set_yscale("log")
+    ax.set_xlabel("time per time step (s)")
+    ax.set_ylabel("mean depth error (R)")
+    ax.set_title("a time step of the droplets: peer vs metaballs")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "metaball_benchmark.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    if "--plot-only" in os.sys.argv:
+        plot(os.path.join(HERE, "results"))
+    else:
+        plot(main())
