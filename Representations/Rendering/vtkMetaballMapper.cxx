@@ -26,8 +26,6 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 
-#include "vtk_glew.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -720,22 +718,12 @@ void vtkMetaballMapper::SetMapperShaderParameters(
   program->SetUniformMatrix3x3("prModelToViewLinear", linear);
 
   // the storage blocks
-  const GLuint handle = static_cast<GLuint>(program->GetHandle());
-  const std::pair<const char*, unsigned int> blocks[4] = { { "prMetaballRangeBlock", RangeBinding },
-    { "prMetaballEntryBlock", EntryBinding }, { "prMetaballIdBlock", IdBinding },
-    { "prMetaballColorBlock", ColorBinding } };
-  for (const auto& block : blocks)
-  {
-    const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, block.first);
-    if (index != GL_INVALID_INDEX)
-    {
-      glShaderStorageBlockBinding(handle, index, block.second);
-    }
-  }
-  vtkParticleComputeProgram::BindStorage(RangeBinding, internals.RangeBuffer);
-  vtkParticleComputeProgram::BindStorage(EntryBinding, internals.EntryBuffer);
-  vtkParticleComputeProgram::BindStorage(IdBinding, internals.IdBuffer);
-  vtkParticleComputeProgram::BindStorage(ColorBinding, internals.ColorBuffer);
+  const unsigned int handle = static_cast<unsigned int>(program->GetHandle());
+  using Program = vtkParticleComputeProgram;
+  Program::BindStorageBlock(handle, "prMetaballRangeBlock", RangeBinding, internals.RangeBuffer);
+  Program::BindStorageBlock(handle, "prMetaballEntryBlock", EntryBinding, internals.EntryBuffer);
+  Program::BindStorageBlock(handle, "prMetaballIdBlock", IdBinding, internals.IdBuffer);
+  Program::BindStorageBlock(handle, "prMetaballColorBlock", ColorBinding, internals.ColorBuffer);
 }
 
 //------------------------------------------------------------------------------

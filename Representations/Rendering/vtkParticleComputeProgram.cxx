@@ -439,6 +439,18 @@ void vtkParticleComputeProgram::BindStorage(unsigned int binding, vtkOpenGLBuffe
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleComputeProgram::BindStorageBlock(
+  unsigned int program, const char* block, unsigned int binding, vtkOpenGLBufferObject* buffer)
+{
+  const GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, block);
+  if (index != GL_INVALID_INDEX)
+  {
+    glShaderStorageBlockBinding(program, index, binding);
+  }
+  BindStorage(binding, buffer);
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleComputeProgram::UploadStorage(
   vtkOpenGLBufferObject* buffer, std::size_t offset, std::size_t bytes, const void* data)
 {

@@ -98,6 +98,15 @@ public:
   static bool ClearStorage(vtkOpenGLBufferObject* buffer, std::size_t bytes, unsigned int value);
   ///@}
 
+  /**
+   * For a program that declares storage blocks without layout(binding) (VTK's GLSL 1.50
+   * shaders with the storage extension): give its block `block` the binding point `binding`
+   * (glShaderStorageBlockBinding; nothing when the program has no such active block) and bind
+   * `buffer` there (BindStorage).
+   */
+  static void BindStorageBlock(
+    unsigned int program, const char* block, unsigned int binding, vtkOpenGLBufferObject* buffer);
+
   ///@{
   /**
    * The complete GLSL source, including the `#version` line. Changing it makes the next Build()

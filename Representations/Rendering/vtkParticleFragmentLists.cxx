@@ -129,21 +129,11 @@ void vtkParticleFragmentLists::PrepareProgram(vtkShaderProgram* program)
 void vtkParticleFragmentLists::PrepareProgram(unsigned int handle)
 {
   vtkInternals& internals = *this->Internals;
-  const std::pair<const char*, unsigned int> blocks[4] = { { "prListHeadBlock", HeadBinding },
-    { "prListNodeBlock", NodeBinding }, { "prListCounterBlock", CounterBinding },
-    { "prListDeferredBlock", DeferredBinding } };
-  for (const auto& block : blocks)
-  {
-    const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, block.first);
-    if (index != GL_INVALID_INDEX)
-    {
-      glShaderStorageBlockBinding(handle, index, block.second);
-    }
-  }
-  vtkParticleComputeProgram::BindStorage(HeadBinding, internals.Heads);
-  vtkParticleComputeProgram::BindStorage(NodeBinding, internals.Nodes);
-  vtkParticleComputeProgram::BindStorage(CounterBinding, internals.Counters);
-  vtkParticleComputeProgram::BindStorage(DeferredBinding, internals.Deferred);
+  using Program = vtkParticleComputeProgram;
+  Program::BindStorageBlock(handle, "prListHeadBlock", HeadBinding, internals.Heads);
+  Program::BindStorageBlock(handle, "prListNodeBlock", NodeBinding, internals.Nodes);
+  Program::BindStorageBlock(handle, "prListCounterBlock", CounterBinding, internals.Counters);
+  Program::BindStorageBlock(handle, "prListDeferredBlock", DeferredBinding, internals.Deferred);
   // the program is bound (glUniform acts on it)
   const GLint width = glGetUniformLocation(handle, "prListWidth");
   const GLint capacity = glGetUniformLocation(handle, "prListCapacity");
