@@ -27,15 +27,15 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare
+from prMetaballTesting import compare, gpu_view_depth, type_lookup_table
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkLookupTable, vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 from vtkmodules.vtkImagingHybrid import vtkGaussianSplatter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "Testing", "Data", "lj_droplets.vtp")
@@ -89,13 +89,7 @@ def view(mapper, data):
     mapper.SetRadiusArrayName("radius")
     mapper.SetScalarModeToUsePointFieldData()
     mapper.SelectColorArray("type")
-    lut = vtkLookupTable()
-    lut.SetNumberOfTableValues(2)
-    lut.SetTableValue(0, 0.85, 0.33, 0.10)
-    lut.SetTableValue(1, 0.12, 0.47, 0.80)
-    lut.SetTableRange(1, 2)
-    lut.Build()
-    mapper.SetLookupTable(lut)
+    mapper.SetLookupTable(type_lookup_table(1, 2))
     mapper.SetUseLookupTableScalarRange(1)
     actor = vtkActor()
     actor.SetMapper(mapper)
@@ -241,7 +235,7 @@ def main():
         start = time.time()
         window.Render()
         render_s = time.time() - start
-        gt = __import__("prMetaballTesting").gpu_view_depth(window, reference)
+        gt = gpu_view_depth(window, reference)
         both = (gt >= 0) & (ref_t >= 0)
         err = np.abs(gt - ref_t)[both] / r_mean
         rows.append({"resolution": resolution, "splat_s": round(splat_s, 3),

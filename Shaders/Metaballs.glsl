@@ -69,8 +69,6 @@ vec3 prKernelRay[PR_METABALL_KERNELS];
 vec4 prKernelCenter[PR_METABALL_KERNELS];
 int prKernelId[PR_METABALL_KERNELS];
 int prKernelCount = 0;
-// iterations of the last search (for the iteration-count debug output)
-int prMetaballIterations = 0;
 
 void prAddKernel(vec3 offsetVC, float influenceRadius, int id, vec3 s, vec3 d)
 {
@@ -188,7 +186,6 @@ bool prMetaballSearch(float tLo, float tHi, float radiusVC, out float tHit, out 
         }
         float w = gb - ga;
         tHit = w > 0.0 ? a + (b - a) * clamp(-ga / w, 0.0, 1.0) : b;
-        prMetaballIterations = it + 1;
         return true;
       }
       certified = true; // thinner than the tolerance (or a near miss): passed
@@ -202,7 +199,6 @@ bool prMetaballSearch(float tLo, float tHi, float radiusVC, out float tHit, out 
     ++top;
     ends[top] = 0.5 * (a + b);
   }
-  prMetaballIterations = it;
   return false;
 }
 

@@ -100,7 +100,6 @@ public:
   vtkSmartPointer<vtkOpenGLBufferObject> ColorBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   bool ListsUploaded = false;
   bool Supported = true; // the context has shader storage buffers (OpenGL 4.3)
-  bool ColorsInShader = false;
 
   void ReleaseBuffers(bool current)
   {
@@ -578,11 +577,9 @@ void vtkMetaballMapper::ReplaceShaderValues(
     "  centerRadiusVCVSOutput.w = radiusVC;\n"
     "  prMetaballVSOutput = metaballMC;");
 
-  internals.ColorsInShader = false;
   if (internals.Supported)
   {
     const bool colors = fs.find("vertexColorVSOutput") != std::string::npos;
-    internals.ColorsInShader = colors;
     std::ostringstream dec;
     dec << "#define PR_METABALL_KERNELS " << this->MaximumNumberOfNeighbors + 1 << "\n";
     if (colors)

@@ -28,10 +28,9 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare
+from prMetaballTesting import compare, type_lookup_table
 from prVTKTesting import Messages, actor_view, check, finish, grab_image, particles_from, picked_ids
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkLookupTable
 
 NO_STORAGE = "--no-storage" in sys.argv
 
@@ -117,12 +116,7 @@ xyz, kind = droplet()
 mapper, actor, renderer, window = metaball_view(xyz, (400, 400), kind=kind)
 mapper.SetScalarModeToUsePointFieldData()
 mapper.SelectColorArray("kind")
-lut = vtkLookupTable()
-lut.SetNumberOfTableValues(2)
-lut.SetTableValue(0, 0.85, 0.33, 0.10)
-lut.SetTableValue(1, 0.12, 0.47, 0.80)
-lut.SetTableRange(0, 1)
-lut.Build()
+lut = type_lookup_table(0, 1)
 mapper.SetLookupTable(lut)
 mapper.SetScalarRange(0, 1)
 camera = renderer.GetActiveCamera()

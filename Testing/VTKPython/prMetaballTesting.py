@@ -5,9 +5,21 @@ import numpy as np
 
 import particlerendering as pr
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLookupTable, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkRenderingOpenGL2 import vtkLightingMapPass
+
+
+def type_lookup_table(first, last):
+    """The two-colour table of the metaball tests and benchmarks: orange for the type `first`,
+    blue for `last`."""
+    lut = vtkLookupTable()
+    lut.SetNumberOfTableValues(2)
+    lut.SetTableValue(0, 0.85, 0.33, 0.10)
+    lut.SetTableValue(1, 0.12, 0.47, 0.80)
+    lut.SetTableRange(first, last)
+    lut.Build()
+    return lut
 
 
 def gpu_view_depth(window, reference):
@@ -58,9 +70,8 @@ def compare(window, renderer, actor, radius, normals=False):
     reference.SetImageSize(width, height)
     reference.Render()
     gt = gpu_view_depth(window, reference)
-    width_, height_ = window.GetSize()
     zbuffer = vtkFloatArray()
-    window.GetZbufferData(0, 0, width_ - 1, height_ - 1, zbuffer)
+    window.GetZbufferData(0, 0, width - 1, height - 1, zbuffer)
     gz = vtk_to_numpy(zbuffer).astype(np.float64)
     rz = vtk_to_numpy(reference.GetDepthImage().GetPointData().GetScalars())
     rt = vtk_to_numpy(reference.GetViewDepthImage().GetPointData().GetScalars()).copy()
