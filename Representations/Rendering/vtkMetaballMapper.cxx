@@ -6,10 +6,12 @@
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMetaballWalkingPlane.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleMemory.h"
@@ -29,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -100,6 +103,16 @@ public:
   vtkSmartPointer<vtkOpenGLBufferObject> ColorBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   bool ListsUploaded = false;
   bool Supported = true; // the context has shader storage buffers (OpenGL 4.3)
+
+  // the method the vertex buffers and attributes were built for
+  int BuiltMethod = -1;
+  // the walking depth plane: its buffers, the pass being drawn (0: the final draw), whether the
+  // shaders blend scalar colours, the smallest positive radius (model units, before scaling)
+  vtkNew<vtkMetaballWalkingPlane> Plane;
+  int Pass = 0;
+  bool WalkingColors = false;
+  double SmallestRadius = 0.0;
+  double AnchorMC[3] = { 0.0, 0.0, 0.0 }; // lambda's origin: the centre of the positions' bounds
 
   void ReleaseBuffers(bool current)
   {
@@ -174,9 +187,13 @@ bool vtkMetaballMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor
   {
     return true;
   }
+  if (this->Method == WALKING_DEPTH_PLANE)
+  {
+    return this->Internals->BuiltMethod != this->Method;
+  }
   // the lists (and the per-particle flags) also depend on these
   const vtkInternals::Signature& built = this->Internals->Built;
-  return !this->Internals->HaveLists || built.Scale != std::abs(this->RadiusScaleFactor) ||
+  return this->Internals->BuiltMethod != this->Method || !this->Internals->HaveLists || built.Scale != std::abs(this->RadiusScaleFactor) ||
     built.Influence != this->InfluenceFactor ||
     built.MaximumNeighbors != this->MaximumNumberOfNeighbors ||
     built.MaximumMemory != this->MaximumListMemory;
@@ -468,6 +485,37 @@ void vtkMetaballMapper::CacheParticleAttributes(vtkRenderer* ren, vtkActor* act)
   this->Superclass::CacheParticleAttributes(ren, act);
   vtkInternals& internals = *this->Internals;
   vtkOpenGLRenderWindow* context = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  internals.BuiltMethod = this->Method;
+  if (this->Method == WALKING_DEPTH_PLANE)
+  {
+    // no lists; the largest step follows the smallest radius (Sec. 3.2.3)
+    vtkFloatArray* radii = this->GetUploadedRadii();
+    const vtkIdType n = radii ? radii->GetNumberOfTuples() : 0;
+    float smallest = std::numeric_limits<float>::max();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const float r = radii->GetValue(i);
+      if (r > 0.0f && r < smallest)
+      {
+        smallest = r;
+      }
+    }
+    internals.SmallestRadius = smallest < std::numeric_limits<float>::max() ? smallest : 0.0;
+    vtkDataArray* positions = this->GetUploadedPositions();
+    for (int k = 0; k < 3; ++k)
+    {
+      double range[2] = { 0.0, 0.0 };
+      if (positions && n > 0)
+      {
+        positions->GetRange(range, k);
+      }
+      internals.AnchorMC[k] = 0.5 * (range[0] + range[1]);
+    }
+    internals.NoFlags->SetNumberOfTuples(n);
+    internals.NoFlags->FillValue(0.0f);
+    this->VBOs->CacheDataArray("metaballMC", internals.NoFlags, ren, VTK_FLOAT);
+    return;
+  }
 
   std::string reason;
   internals.Supported = context && vtkParticleComputeProgram::IsSupported(context, &reason);
@@ -562,10 +610,105 @@ void vtkMetaballMapper::ReplaceShaderValues(
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
-  vtkParticleShaderHooks& hooks = internals.Hooks;
-  hooks.Begin(vs, gs, fs);
-  using Hooks = vtkParticleShaderHooks;
+  internals.Hooks.Begin(vs, gs, fs);
+  if (this->Method == WALKING_DEPTH_PLANE)
+  {
+    this->ReplaceWalkingShaderValues(vs, fs);
+  }
+  else
+  {
+    this->ReplaceVicinityShaderValues(vs, gs, fs);
+  }
+  for (std::string* source : { &vs, &gs, &fs })
+  {
+    *source = vtkParticleShaders::ResolveIncludes(*source);
+  }
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Geometry]->SetSource(gs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
 
+//------------------------------------------------------------------------------
+namespace
+{
+// VTK's colour code in main() reads the blended colour prMetaballRGBA
+void ReadBlendedColor(std::string& fs)
+{
+  const std::string::size_type main = fs.find("void main()");
+  if (main != std::string::npos)
+  {
+    std::string body = fs.substr(main);
+    vtkShaderProgram::Substitute(body, "vertexColorVSOutput.", "prMetaballRGBA.", true);
+    fs = fs.substr(0, main) + body;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string& fs)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkParticleShaderHooks& hooks = internals.Hooks;
+  using Hooks = vtkParticleShaderHooks;
+  // every particle draws its influence sphere
+  // and gives the view depth of its centre from the anchor, formed from the small difference
+  // of the centre and the anchor (lambda's origin, near the data, see SetWalkingShaderParameters)
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec",
+    "uniform float prInfluenceFactor;\n"
+    "uniform vec3 prWalkingAnchor;");
+  hooks.AddSphereVarying("float", "prWalkingCenterZ");
+  hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
+    "radiusVC *= prInfluenceFactor;\n"
+    "  centerRadiusVCVSOutput.w = radiusVC;\n"
+    "  prWalkingCenterZVSOutput = (mat3(MCVCMatrix) * (vertexMC.xyz - prWalkingAnchor)).z;");
+  const bool colors = fs.find("vertexColorVSOutput") != std::string::npos;
+  internals.WalkingColors = colors;
+  hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "//PR::Include MetaballWalking");
+  // the splat passes return early with their contribution; the final draw puts the point
+  // where the plane is
+  std::ostringstream surface;
+  surface << "vec4 prMetaballRGBA = " << (colors ? "vertexColorVSOutput" : "vec4(1.0)")
+          << ";\n"
+             "  if (prWalkingPass != 0)\n"
+             "  {\n"
+             "    vec4 prSplat;\n"
+             "    if (!prHit || !prWalkingSplat(prRayS, prRayD, prT0, prT1,\n"
+             "      prWalkingCenterZVSOutput, radiusVC, prMetaballRGBA, prSplat))\n"
+             "    {\n"
+             "      discard;\n"
+             "    }\n"
+             "    gl_FragData[0] = prSplat;\n"
+             "    gl_FragDepth = 0.5;\n"
+             "    return;\n"
+             "  }\n"
+             "  if (prHit)\n"
+             "  {\n"
+             "    float prTWalk;\n"
+             "    prHit = prWalkingSurface(prRayS, prRayD, prT0, prT1, prWalkingCenterZVSOutput,\n"
+             "      prTWalk);\n"
+             "    prT0 = prTWalk;\n"
+             "    prT1 = prTWalk;\n"
+             "  }";
+  if (colors)
+  {
+    surface << "\n  prMetaballRGBA = prWalkingColor(prMetaballRGBA);";
+  }
+  hooks.Insert(Hooks::Fragment, "//PR::Surface::Impl", surface.str());
+  hooks.Insert(Hooks::Fragment, "//PR::Surface::Normal",
+    "normalVCVSOutput = prWalkingNormal(prRayD, normalVCVSOutput);");
+  if (colors)
+  {
+    ReadBlendedColor(fs);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string& gs, std::string& fs)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkParticleShaderHooks& hooks = internals.Hooks;
+  using Hooks = vtkParticleShaderHooks;
+  (void)vs;
   // The imposter: the influence sphere (k R) with neighbours, else the iso-sphere.
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec",
     "in float metaballMC;\n"
@@ -648,24 +791,9 @@ void vtkMetaballMapper::ReplaceShaderValues(
       "  }");
     if (colors)
     {
-      // VTK's colour code reads the blended colour
-      const std::string::size_type main = fs.find("void main()");
-      if (main != std::string::npos)
-      {
-        std::string body = fs.substr(main);
-        vtkShaderProgram::Substitute(body, "vertexColorVSOutput.", "prMetaballRGBA.", true);
-        fs = fs.substr(0, main) + body;
-      }
+      ReadBlendedColor(fs);
     }
   }
-
-  for (std::string* source : { &vs, &gs, &fs })
-  {
-    *source = vtkParticleShaders::ResolveIncludes(*source);
-  }
-  shaders[vtkShader::Vertex]->SetSource(vs);
-  shaders[vtkShader::Geometry]->SetSource(gs);
-  shaders[vtkShader::Fragment]->SetSource(fs);
 }
 
 //------------------------------------------------------------------------------
@@ -681,6 +809,11 @@ void vtkMetaballMapper::SetMapperShaderParameters(
   vtkInternals& internals = *this->Internals;
   const double k = this->InfluenceFactor;
   program->SetUniformf("prInfluenceFactor", static_cast<float>(k));
+  if (this->Method == WALKING_DEPTH_PLANE)
+  {
+    this->SetWalkingShaderParameters(program, ren, act);
+    return;
+  }
   program->SetUniformf(
     "prIsolatedScale", static_cast<float>(IsolatedRadiusFactor(k, this->IsoValue)));
   if (!internals.Supported || !program->IsUniformUsed("prKernelScale"))
@@ -724,8 +857,142 @@ void vtkMetaballMapper::SetMapperShaderParameters(
 }
 
 //------------------------------------------------------------------------------
+void vtkMetaballMapper::SetWalkingShaderParameters(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkMetaballWalkingPlane* plane = internals.Plane;
+  program->SetUniformi("prWalkingPass", internals.Pass);
+  program->SetUniformf("prKernelScale", static_cast<float>(KernelScale(this->InfluenceFactor)));
+  program->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
+  program->SetUniformf("prWalkingTolerance", static_cast<float>(this->WalkingTolerance));
+  program->SetUniformf("prWalkingStepMax", static_cast<float>(plane->GetMaximumStep()));
+  // lambda's origin, the anchor: the centre of the particles' bounds in vertex-buffer
+  // coordinates, rounded to float as the shader sees it; lambda of the near plane
+  // (z = -near in view coordinates) from its view depth in double
+  vtkNew<vtkMatrix4x4> bufferToModel;
+  vtkMatrix4x4::Transpose(this->VBOShiftScale, bufferToModel); // stored transposed
+  bufferToModel->Invert();
+  double anchor[4] = { internals.AnchorMC[0], internals.AnchorMC[1], internals.AnchorMC[2], 1.0 };
+  bufferToModel->MultiplyPoint(anchor, anchor); // (now model -> buffer)
+  float anchorFloat[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    anchorFloat[i] = static_cast<float>(anchor[i]);
+    anchor[i] = anchorFloat[i];
+  }
+  program->SetUniform3f("prWalkingAnchor", anchorFloat);
+  vtkNew<vtkMatrix4x4> bufferToView;
+  this->GetBufferToViewMatrix(ren, act, bufferToView);
+  double anchorVC[4];
+  bufferToView->MultiplyPoint(anchor, anchorVC);
+  const double nearDistance = ren->GetActiveCamera()->GetClippingRange()[0];
+  program->SetUniformf("prWalkingNear", static_cast<float>(nearDistance + anchorVC[2]));
+  int origin[2] = { 0, 0 };
+  if (internals.Pass == 0)
+  {
+    origin[0] = plane->GetViewport()[0];
+    origin[1] = plane->GetViewport()[1];
+  }
+  program->SetUniform2i("prWalkingOrigin", origin);
+  const std::pair<const char*, vtkTextureObject*> samplers[] = {
+    { "prWalkingPlaneTexture", plane->GetPlaneTexture() },
+    { "prWalkingGradientTexture", plane->GetGradientTexture() },
+    { "prWalkingColorTexture", plane->GetColorTexture() },
+  };
+  for (const auto& sampler : samplers)
+  {
+    if (sampler.second->GetTextureUnit() >= 0)
+    {
+      program->SetUniformi(sampler.first, sampler.second->GetTextureUnit());
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkMetaballWalkingPlane* plane = internals.Plane;
+  if (!(internals.SmallestRadius > 0.0))
+  {
+    return; // nothing drawn
+  }
+  plane->SetIsoValue(this->IsoValue);
+  const double smallest = internals.SmallestRadius * std::abs(this->GetRadiusScaleVC(act));
+  plane->SetMaximumStep(smallest * this->MaximumStepFactor);
+  plane->SetDepthTolerance(smallest * this->WalkingTolerance);
+  plane->SetDensityTolerance(this->WalkingTolerance);
+  plane->SetStepOracle(this->StepOracle);
+  plane->SetMaximumPasses(this->MaximumPasses);
+  plane->SetTimeBudget(this->TimeBudget);
+  plane->SetFinishedShare(this->FinishedShare);
+
+  // the splat passes need every particle: no occlusion culling (see GetOcclusionCullingCompiled)
+  const bool culling = this->OcclusionCulling;
+  this->OcclusionCulling = false;
+  vtkTextureObject* planeTexture = plane->GetPlaneTexture();
+  if (plane->Begin(ren))
+  {
+    internals.Pass = 1;
+    plane->StartInitialization();
+    this->Superclass::RenderPieceDraw(ren, act);
+    planeTexture->Activate();
+    internals.Pass = 2;
+    while (plane->StartDensity())
+    {
+      this->Superclass::RenderPieceDraw(ren, act);
+      plane->Step();
+    }
+    internals.Pass = 3;
+    plane->StartShading(false);
+    this->Superclass::RenderPieceDraw(ren, act);
+    if (internals.WalkingColors)
+    {
+      internals.Pass = 4;
+      plane->StartShading(true);
+      this->Superclass::RenderPieceDraw(ren, act);
+    }
+    plane->End();
+
+    // the final draw
+    internals.Pass = 0;
+    plane->GetGradientTexture()->Activate();
+    if (internals.WalkingColors)
+    {
+      plane->GetColorTexture()->Activate();
+    }
+    this->Superclass::RenderPieceDraw(ren, act);
+    planeTexture->Deactivate();
+    plane->GetGradientTexture()->Deactivate();
+    if (internals.WalkingColors)
+    {
+      plane->GetColorTexture()->Deactivate();
+    }
+  }
+  this->OcclusionCulling = culling;
+}
+
+//------------------------------------------------------------------------------
+bool vtkMetaballMapper::GetOcclusionCullingCompiled(vtkRenderer* ren)
+{
+  return this->Method != WALKING_DEPTH_PLANE && this->Superclass::GetOcclusionCullingCompiled(ren);
+}
+
+//------------------------------------------------------------------------------
+vtkMetaballWalkingPlane* vtkMetaballMapper::GetWalkingPlane()
+{
+  return this->Internals->Plane;
+}
+
+//------------------------------------------------------------------------------
 void vtkMetaballMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
+  if (this->Method == WALKING_DEPTH_PLANE)
+  {
+    this->RenderWalkingPlane(ren, act);
+    return;
+  }
   this->Superclass::RenderPieceDraw(ren, act);
   if (this->Internals->Supported)
   {
@@ -743,7 +1010,7 @@ void vtkMetaballMapper::ReleaseGraphicsResources(vtkWindow* window)
   vtkOpenGLRenderWindow* context = internals.Context;
   const bool current = context && vtkParticleComputeProgram::MakeCurrentForRelease(context);
   internals.ReleaseBuffers(current);
-  (void)window;
+  internals.Plane->ReleaseGraphicsResources(window);
   internals.Context = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -752,6 +1019,8 @@ void vtkMetaballMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkMetaballMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << (this->Method == WALKING_DEPTH_PLANE ? "WalkingDepthPlane" : "Vicinity")
+     << "\n";
   os << indent << "InfluenceFactor: " << this->InfluenceFactor << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
@@ -759,6 +1028,14 @@ void vtkMetaballMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IterationLimit: " << this->IterationLimit << "\n";
   os << indent << "MaximumNumberOfNeighbors: " << this->MaximumNumberOfNeighbors << "\n";
   os << indent << "MaximumListMemory: " << this->MaximumListMemory << "\n";
+  os << indent << "WalkingTolerance: " << this->WalkingTolerance << "\n";
+  os << indent << "StepOracle: " << this->StepOracle << "\n";
+  os << indent << "MaximumStepFactor: " << this->MaximumStepFactor << "\n";
+  os << indent << "MaximumPasses: " << this->MaximumPasses << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "FinishedShare: " << this->FinishedShare << "\n";
+  os << indent << "WalkingPlane:\n";
+  this->Internals->Plane->PrintSelf(os, indent.GetNextIndent());
   os << indent << "NumberOfListBuilds: " << this->NumberOfListBuilds << "\n";
   os << indent << "LastListBuildSeconds: " << this->LastListBuildSeconds << "\n";
   os << indent << "NumberOfListEntries: " << this->NumberOfListEntries << "\n";

@@ -15,8 +15,11 @@
  * material, picking (the particle whose influence sphere drew the pixel), clipping planes and
  * the shader hooks through which the AO passes reach it (vtkParticleShaderHooks).
  *
- * Method: the paper's "vicinity" approach (Sec. 3.1), with an exact search along the ray instead
- * of fixed samples.
+ * Method (SetMethod): VICINITY (default) or WALKING_DEPTH_PLANE, the paper's two.
+ *
+ * VICINITY, the paper's Sec. 3.1, with an exact search along the ray instead of fixed samples:
+ * one pass, per-particle neighbour lists (memory O(N M), rebuilt per time step), exact for
+ * isolated particles, the cost per fragment grows with the neighbours the ray meets.
  * - Per particle a view-independent list of the particles whose influence spheres overlap its
  *   own (|c_i - c_j| < k (R_i + R_j)), built on the CPU with vtkStaticPointLocator and
  *   vtkSMPTools, kept in shader storage buffers (entries: the neighbour's centre relative to
@@ -44,7 +47,30 @@
  * - Where the near plane cuts a metaball the search starts on the near plane and, inside,
  *   finds the exit: the inner side is shown, lit facing the viewer (as the sphere core does).
  *
- * Settings that bound the cost:
+ * WALKING_DEPTH_PLANE, the paper's Sec. 3.2 (vtkMetaballWalkingPlane holds its buffers and
+ * loop): no lists and no shader storage (OpenGL 3.2 is enough), memory O(pixels), nothing to
+ * rebuild per time step; every particle's influence sphere is drawn once per pass, and the
+ * number of passes grows with the depth the plane has to walk. Per pixel a plane depth lambda
+ * starts at the nearest front of an influence sphere (not before the near plane); each pass
+ * sums the kernels at lambda and at two deeper samples by additive blending, and a step pass
+ * moves lambda with the oracle (StepOracle: the paper's Sec. 3.2.3 attenuation, or by default
+ * the secant crossing between the samples that bracket the iso-value, else MaximumStepFactor
+ * times the smallest radius); a pixel is finished when Newton's estimate of its distance to the
+ * surface is at most WalkingTolerance times the smallest radius (where the field does not rise
+ * with depth, a ray touching the surface: when |D/t - 1| <= WalkingTolerance). The
+ * walk stops (Sec. 3.2.4) when no pixel is active, when FinishedShare of the covered pixels are
+ * finished, after MaximumPasses, or after TimeBudget seconds. Shading is deferred
+ * (Sec. 3.2.5): one more pass sums the field's gradient (the normal) and one the colours
+ * weighted by the kernels; the final draw is the core's imposter draw, each fragment placing
+ * its point where lambda is when its influence sphere holds it, so lights, AO hooks, picking
+ * and depth are the core's. Differences from VICINITY: isolated particles are found to the
+ * tolerance, not exactly; a part of the surface thinner than half of the largest step along
+ * the ray can be missed (the paper's remark); where the near plane cuts a metaball the pixels
+ * stay empty; occlusion culling is off (the splat passes need every particle). lambda is a view
+ * depth measured from the vertex buffer's origin, so the method keeps float precision with the
+ * camera far away and the data far from the origin.
+ *
+ * Settings that bound the cost of VICINITY:
  * - MaximumNumberOfNeighbors (default 64): a list keeps at most this many, the nearest (a
  *   warning counts the particles that had more: a huge InfluenceFactor makes every particle a
  *   neighbour of every other, which this bounds to O(N M) time and memory).
@@ -55,16 +81,16 @@
  *   below the iso-value over a long stretch is the costly case); RefinementSteps (default 6)
  *   bisections follow a bracket.
  *
- * Needs OpenGL 4.3 (shader storage buffers in the fragment stage). Below it an error says so
- * once and every particle is drawn as its plain sphere.
+ * VICINITY needs OpenGL 4.3 (shader storage buffers in the fragment stage). Below it an error
+ * says so once and every particle is drawn as its plain sphere; WALKING_DEPTH_PLANE works there.
  *
  * Occlusion culling (vtkParticleOcclusionCuller) tests each particle with the sphere it draws
  * (its influence sphere when it has neighbours).
  *
- * Not done (yet): the paper's "walking depth plane" (Sec. 3.2) as a second method; translucent
- * metaballs.
+ * Not done (yet): translucent metaballs.
  *
- * @sa vtkParticleSphereMapper vtkParticleReferenceMetaballs vtkParticleShaderHooks
+ * @sa vtkParticleSphereMapper vtkMetaballWalkingPlane vtkParticleReferenceMetaballs
+ * vtkParticleShaderHooks
  */
 #ifndef vtkMetaballMapper_h
 #define vtkMetaballMapper_h
@@ -72,12 +98,38 @@
 #include "vtkParticleRenderingModule.h" // for export macro
 #include "vtkParticleSphereMapper.h"
 
+#include <string> // for std::string
+
+class vtkMetaballWalkingPlane;
+
 class VTKPARTICLERENDERING_EXPORT vtkMetaballMapper : public vtkParticleSphereMapper
 {
 public:
   static vtkMetaballMapper* New();
   vtkTypeMacro(vtkMetaballMapper, vtkParticleSphereMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum MethodType
+  {
+    VICINITY = 0,
+    WALKING_DEPTH_PLANE = 1
+  };
+  enum StepOracleType
+  {
+    PAPER_ORACLE = 0,
+    BRACKETING_ORACLE = 1
+  };
+
+  ///@{
+  /**
+   * The method: VICINITY (default, neighbour lists, one pass) or WALKING_DEPTH_PLANE (no lists,
+   * several passes). See the class comment for the trade-off.
+   */
+  vtkSetClampMacro(Method, int, VICINITY, WALKING_DEPTH_PLANE);
+  vtkGetMacro(Method, int);
+  void SetMethodToVicinity() { this->SetMethod(VICINITY); }
+  void SetMethodToWalkingDepthPlane() { this->SetMethod(WALKING_DEPTH_PLANE); }
+  ///@}
 
   ///@{
   /**
@@ -145,6 +197,54 @@ public:
 
   ///@{
   /**
+   * Walking depth plane: a pixel is finished when Newton's estimate of its distance to the
+   * surface, |IsoValue - D| / (dD/dlambda), is at most this times the smallest radius (or, where
+   * the field does not rise with depth, when |D / IsoValue - 1| is at most this). Default 1e-3,
+   * clamped to [1e-6, 0.5].
+   */
+  vtkSetClampMacro(WalkingTolerance, double, 1e-6, 0.5);
+  vtkGetMacro(WalkingTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Walking depth plane: the step oracle, BRACKETING_ORACLE (default) or PAPER_ORACLE.
+   */
+  vtkSetClampMacro(StepOracle, int, PAPER_ORACLE, BRACKETING_ORACLE);
+  vtkGetMacro(StepOracle, int);
+  ///@}
+
+  ///@{
+  /**
+   * Walking depth plane: the largest step over the smallest particle radius (the paper: 1).
+   * Default 1, clamped to [0.01, 10].
+   */
+  vtkSetClampMacro(MaximumStepFactor, double, 0.01, 10.0);
+  vtkGetMacro(MaximumStepFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Walking depth plane: most passes per frame (default 100, clamped to [1, 10000]), most
+   * seconds of walking per frame (default 1: the paper's minimum frame rate of 1 FPS; 0 is
+   * one pass), the share of covered pixels whose finishing ends the walk (default 1: all).
+   */
+  vtkSetClampMacro(MaximumPasses, int, 1, 10000);
+  vtkGetMacro(MaximumPasses, int);
+  vtkSetClampMacro(TimeBudget, double, 0.0, 1e6);
+  vtkGetMacro(TimeBudget, double);
+  vtkSetClampMacro(FinishedShare, double, 0.0, 1.0);
+  vtkGetMacro(FinishedShare, double);
+  ///@}
+
+  /**
+   * The walking depth plane's buffers and the statistics of the last walk (passes, seconds,
+   * covered and active pixels, why it stopped).
+   */
+  vtkMetaballWalkingPlane* GetWalkingPlane();
+
+  ///@{
+  /**
    * Statistics of the last neighbour-list build: builds so far, its CPU seconds, list entries,
    * particles drawn as plain spheres (no neighbour), particles whose list was cut (more
    * neighbours than MaximumNumberOfNeighbors or than MaximumListMemory allows).
@@ -181,11 +281,21 @@ protected:
   bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
   void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
   const float* GetCullingRadii() override;
+  bool GetOcclusionCullingCompiled(vtkRenderer* ren) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  // the shader replacements of each method
+  void ReplaceWalkingShaderValues(std::string& vs, std::string& fs);
+  void ReplaceVicinityShaderValues(std::string& vs, std::string& gs, std::string& fs);
+
+  // the walking depth plane: its uniforms; its passes, then the final draw
+  void SetWalkingShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
+  void RenderWalkingPlane(vtkRenderer* ren, vtkActor* act);
 
   // (re)build the neighbour lists of the uploaded particles when what they depend on changed
   void UpdateNeighborLists();
 
+  int Method = VICINITY;
   double InfluenceFactor = 2.0;
   double IsoValue = 1.0;
   double Tolerance = 0.01;
@@ -193,6 +303,12 @@ protected:
   int IterationLimit = 100;
   int MaximumNumberOfNeighbors = 64;
   double MaximumListMemory = 1024.0;
+  double WalkingTolerance = 1e-3;
+  int StepOracle = BRACKETING_ORACLE;
+  double MaximumStepFactor = 1.0;
+  int MaximumPasses = 100;
+  double TimeBudget = 1.0;
+  double FinishedShare = 1.0;
   vtkIdType NumberOfListBuilds = 0;
   double LastListBuildSeconds = 0.0;
   vtkIdType NumberOfListEntries = 0;

@@ -28,29 +28,11 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare, type_lookup_table
-from prVTKTesting import Messages, actor_view, check, finish, grab_image, particles_from, picked_ids
+from prMetaballTesting import compare, droplet, metaball_view, type_lookup_table
+from prVTKTesting import Messages, check, finish, grab_image, picked_ids
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 NO_STORAGE = "--no-storage" in sys.argv
-
-
-def metaball_view(xyz, size=(300, 300), radius=1.0, **arrays):
-    """A vtkMetaballMapper of the particles xyz with constant `radius` and point arrays."""
-    mapper = pr.vtkMetaballMapper()
-    mapper.SetInputData(particles_from(np.asarray(xyz, dtype=np.float64), **arrays))
-    mapper.SetRadius(radius)
-    actor, renderer, window = actor_view(mapper, size)
-    return mapper, actor, renderer, window
-
-
-def droplet(seed=3):
-    rng = np.random.default_rng(seed)
-    g = np.mgrid[-3:4, -3:4, -3:4].reshape(3, -1).T * 1.9
-    g = g[np.linalg.norm(g, axis=1) < 6.0]
-    g = g + rng.normal(0, 0.25, g.shape)
-    vapour = rng.uniform(-14, 14, (60, 3))
-    return np.vstack([g, vapour]), np.r_[np.zeros(len(g)), np.ones(len(vapour))]
 
 
 if NO_STORAGE:

@@ -10,6 +10,28 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkRenderingOpenGL2 import vtkLightingMapPass
 
 
+def metaball_view(xyz, size=(300, 300), radius=1.0, **arrays):
+    """A vtkMetaballMapper of the particles xyz with constant `radius` and point arrays, in an
+    offscreen window: (mapper, actor, renderer, window)."""
+    from prVTKTesting import actor_view, particles_from
+    mapper = pr.vtkMetaballMapper()
+    mapper.SetInputData(particles_from(np.asarray(xyz, dtype=np.float64), **arrays))
+    mapper.SetRadius(radius)
+    actor, renderer, window = actor_view(mapper, size)
+    return mapper, actor, renderer, window
+
+
+def droplet(seed=3):
+    """The tests' droplet: 291 particles on a jittered lattice within 6 R, and 60 vapour atoms
+    in a 28 R box; returns the positions and the type (0 droplet, 1 vapour)."""
+    rng = np.random.default_rng(seed)
+    g = np.mgrid[-3:4, -3:4, -3:4].reshape(3, -1).T * 1.9
+    g = g[np.linalg.norm(g, axis=1) < 6.0]
+    g = g + rng.normal(0, 0.25, g.shape)
+    vapour = rng.uniform(-14, 14, (60, 3))
+    return np.vstack([g, vapour]), np.r_[np.zeros(len(g)), np.ones(len(vapour))]
+
+
 def type_lookup_table(first, last):
     """The two-colour table of the metaball tests and benchmarks: orange for the type `first`,
     blue for `last`."""

@@ -1,0 +1,404 @@
+#include "vtkMetaballWalkingPlane.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkParticleShaders.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <string>
+
+vtkStandardNewMacro(vtkMetaballWalkingPlane);
+
+namespace
+{
+enum Target
+{
+  PlaneTarget = 0,
+  DensityTarget = 1,
+  GradientTarget = 2,
+  ColorTarget = 3,
+  NumberOfTargets = 4
+};
+}
+
+//------------------------------------------------------------------------------
+class vtkMetaballWalkingPlane::vtkInternals
+{
+public:
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkOpenGLState* State = nullptr;
+  // one framebuffer per texture: a texture sampled by a pass is never attached to the
+  // framebuffer it draws into
+  vtkNew<vtkTextureObject> Textures[NumberOfTargets];
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffers[NumberOfTargets];
+  std::unique_ptr<vtkOpenGLQuadHelper> StepQuad;
+  bool Allocated = false;
+  bool Active = false;
+  // the occlusion queries of the step passes (the active pixels), read before the next pass
+  unsigned int Queries[2] = { 0, 0 };
+  int Issued = 0; // step passes issued in this walk
+  double Start = 0.0;
+
+  bool Allocate(vtkOpenGLRenderWindow* ctx, int w, int h)
+  {
+    if (this->Allocated && this->Context == ctx)
+    {
+      for (auto& texture : this->Textures)
+      {
+        if (texture->GetWidth() != static_cast<unsigned int>(w) ||
+          texture->GetHeight() != static_cast<unsigned int>(h))
+        {
+          texture->Resize(w, h);
+        }
+      }
+      return true;
+    }
+    this->Context = ctx;
+    this->State->PushFramebufferBindings();
+    bool ok = true;
+    for (int i = 0; i < NumberOfTargets && ok; ++i)
+    {
+      vtkTextureObject* texture = this->Textures[i];
+      texture->SetContext(ctx);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->SetWrapS(vtkTextureObject::ClampToEdge);
+      texture->SetWrapT(vtkTextureObject::ClampToEdge);
+      texture->SetInternalFormat(GL_RGBA32F);
+      texture->SetFormat(GL_RGBA);
+      texture->SetDataType(GL_FLOAT);
+      ok = texture->Allocate2D(w, h, 4, VTK_FLOAT);
+      if (ok)
+      {
+        this->Framebuffers[i]->SetContext(ctx);
+        this->Framebuffers[i]->Bind();
+        this->Framebuffers[i]->AddColorAttachment(0, texture);
+        this->Framebuffers[i]->ActivateDrawBuffer(0);
+      }
+    }
+    this->State->PopFramebufferBindings();
+    if (ok && !this->Queries[0])
+    {
+      glGenQueries(2, this->Queries);
+    }
+    this->Allocated = ok;
+    return ok;
+  }
+
+  // bind a target for drawing with additive (or MIN) blending, cleared to (clear, clear, 0, 0)
+  // unless keep
+  void Bind(int target, float clear, bool minimum, bool keep = false)
+  {
+    vtkOpenGLState* ostate = this->State;
+    this->Framebuffers[target]->Bind();
+    this->Framebuffers[target]->ActivateDrawBuffer(0);
+    if (!keep)
+    {
+      ostate->vtkglClearColor(clear, clear, 0.0f, 0.0f);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    }
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendEquation(minimum ? GL_MIN : GL_FUNC_ADD);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  }
+
+  // the result of the step pass issued `index` (0-based) in this walk (the last two are kept)
+  long long Count(int index)
+  {
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(this->Queries[index % 2], GL_QUERY_RESULT, &samples);
+    return static_cast<long long>(samples);
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkMetaballWalkingPlane::vtkMetaballWalkingPlane()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkMetaballWalkingPlane::~vtkMetaballWalkingPlane()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+bool vtkMetaballWalkingPlane::Begin(vtkRenderer* ren)
+{
+  vtkInternals& internals = *this->Internals;
+  this->Termination = NOT_RUN;
+  this->NumberOfPasses = 0;
+  this->CoveredPixels = 0;
+  this->ActivePixels = 0;
+  this->Seconds = 0.0;
+  vtkOpenGLRenderWindow* ctx = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!ctx)
+  {
+    vtkErrorMacro(<< "An OpenGL render window is required.");
+    return false;
+  }
+  if (internals.Context && internals.Context != ctx)
+  {
+    this->ReleaseGraphicsResources(internals.Context);
+    ctx->MakeCurrent();
+  }
+  vtkOpenGLState* ostate = ctx->GetState();
+  internals.State = ostate;
+  ostate->vtkglGetIntegerv(GL_VIEWPORT, this->Viewport);
+  const int w = this->Viewport[2];
+  const int h = this->Viewport[3];
+  if (w <= 0 || h <= 0)
+  {
+    return false;
+  }
+  ostate->Push(); // everything back in End()
+  if (!internals.Allocate(ctx, w, h))
+  {
+    vtkErrorMacro(<< "Cannot allocate the " << w << "x" << h
+                  << " float buffers of the walking depth plane.");
+    ostate->Pop();
+    return false;
+  }
+  internals.Active = true;
+  internals.Issued = 0;
+  internals.Start = vtkTimerLog::GetUniversalTime();
+  ostate->vtkglViewport(0, 0, w, h);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballWalkingPlane::StartInitialization()
+{
+  this->Internals->Bind(PlaneTarget, std::numeric_limits<float>::max(), true);
+}
+
+//------------------------------------------------------------------------------
+bool vtkMetaballWalkingPlane::StartDensity()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Active)
+  {
+    return false;
+  }
+  // the active pixels of the last step (the occlusion query waits for it: one small stall per
+  // pass, which lets the walk stop as soon as it may)
+  const int issued = internals.Issued;
+  if (issued >= 1)
+  {
+    this->ActivePixels = internals.Count(issued - 1);
+    if (issued == 1)
+    {
+      // the first step saw every covered pixel active
+      this->CoveredPixels = this->ActivePixels;
+    }
+  }
+  if (issued >= 1)
+  {
+    const double finished = this->CoveredPixels > 0
+      ? 1.0 - static_cast<double>(this->ActivePixels) / this->CoveredPixels
+      : 1.0;
+    int termination = NOT_RUN;
+    if (this->ActivePixels == 0)
+    {
+      termination = CONVERGED;
+    }
+    else if (finished >= this->FinishedShare)
+    {
+      termination = FINISHED_SHARE;
+    }
+    else if (this->NumberOfPasses >= this->MaximumPasses)
+    {
+      termination = PASS_LIMIT;
+    }
+    else if (vtkTimerLog::GetUniversalTime() - internals.Start >= this->TimeBudget)
+    {
+      termination = TIME_BUDGET;
+    }
+    if (termination != NOT_RUN)
+    {
+      this->Termination = termination;
+      this->Seconds = vtkTimerLog::GetUniversalTime() - internals.Start;
+      return false;
+    }
+  }
+  internals.Bind(DensityTarget, 0.0f, false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballWalkingPlane::Step()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Active)
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* ctx = internals.Context;
+  if (!internals.StepQuad)
+  {
+    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
+      vtkParticleShaders::Get("MetaballWalkingStep") + "\nuniform sampler2D prDensity;\n");
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl",
+      "  vec4 density = texture(prDensity, texCoord);\n"
+      "  if (!(density.w > 0.5))\n"
+      "  {\n"
+      "    discard;\n"
+      "  }\n"
+      "  gl_FragData[0] = prWalkingStep(density);\n");
+    internals.StepQuad.reset(new vtkOpenGLQuadHelper(ctx, nullptr, fs.c_str(), nullptr));
+  }
+  else
+  {
+    ctx->GetShaderCache()->ReadyShaderProgram(internals.StepQuad->Program);
+  }
+  vtkShaderProgram* program = internals.StepQuad->Program;
+  ++this->NumberOfPasses;
+  if (!program)
+  {
+    vtkErrorMacro(<< "The step program of the walking depth plane does not compile.");
+    internals.Active = false;
+    this->Termination = PASS_LIMIT;
+    return;
+  }
+  // into the plane, additively: the step is added to lambda, the finished flag set
+  internals.Bind(PlaneTarget, 0.0f, false, true);
+  vtkTextureObject* density = internals.Textures[DensityTarget];
+  density->Activate();
+  program->SetUniformi("prDensity", density->GetTextureUnit());
+  program->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
+  program->SetUniformf("prDepthTolerance", static_cast<float>(this->DepthTolerance));
+  program->SetUniformf("prDensityTolerance", static_cast<float>(this->DensityTolerance));
+  program->SetUniformf("prMaximumStep", static_cast<float>(this->MaximumStep));
+  program->SetUniformi("prOracle", this->StepOracle);
+  glBeginQuery(GL_SAMPLES_PASSED, internals.Queries[internals.Issued % 2]);
+  internals.StepQuad->Render();
+  glEndQuery(GL_SAMPLES_PASSED);
+  density->Deactivate();
+  ++internals.Issued;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballWalkingPlane::StartShading(bool color)
+{
+  this->Internals->Bind(color ? ColorTarget : GradientTarget, 0.0f, false);
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballWalkingPlane::End()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Active)
+  {
+    return;
+  }
+  internals.Active = false;
+  if (this->Termination == NOT_RUN)
+  {
+    this->Seconds = vtkTimerLog::GetUniversalTime() - internals.Start;
+  }
+  internals.State->Pop();
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkMetaballWalkingPlane::GetPlaneTexture()
+{
+  return this->Internals->Textures[PlaneTarget];
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkMetaballWalkingPlane::GetGradientTexture()
+{
+  return this->Internals->Textures[GradientTarget];
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkMetaballWalkingPlane::GetColorTexture()
+{
+  return this->Internals->Textures[ColorTarget];
+}
+
+//------------------------------------------------------------------------------
+const char* vtkMetaballWalkingPlane::GetTerminationAsString(int termination)
+{
+  switch (termination)
+  {
+    case CONVERGED:
+      return "converged";
+    case FINISHED_SHARE:
+      return "finished share";
+    case PASS_LIMIT:
+      return "pass limit";
+    case TIME_BUDGET:
+      return "time budget";
+    default:
+      return "not run";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballWalkingPlane::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkInternals& internals = *this->Internals;
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!context || context != internals.Context)
+  {
+    return;
+  }
+  context->MakeCurrent();
+  if (internals.StepQuad)
+  {
+    internals.StepQuad->ReleaseGraphicsResources(window);
+    internals.StepQuad.reset();
+  }
+  for (int i = 0; i < NumberOfTargets; ++i)
+  {
+    internals.Textures[i]->ReleaseGraphicsResources(window);
+    internals.Framebuffers[i]->ReleaseGraphicsResources(window);
+  }
+  if (internals.Queries[0])
+  {
+    glDeleteQueries(2, internals.Queries);
+    internals.Queries[0] = internals.Queries[1] = 0;
+  }
+  internals.Allocated = false;
+  internals.Context = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballWalkingPlane::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "MaximumStep: " << this->MaximumStep << "\n";
+  os << indent << "DepthTolerance: " << this->DepthTolerance << "\n";
+  os << indent << "DensityTolerance: " << this->DensityTolerance << "\n";
+  os << indent << "StepOracle: " << this->StepOracle << "\n";
+  os << indent << "MaximumPasses: " << this->MaximumPasses << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "FinishedShare: " << this->FinishedShare << "\n";
+  os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
+  os << indent << "Seconds: " << this->Seconds << "\n";
+  os << indent << "CoveredPixels: " << this->CoveredPixels << "\n";
+  os << indent << "ActivePixels: " << this->ActivePixels << "\n";
+  os << indent << "Termination: " << GetTerminationAsString(this->Termination) << "\n";
+}
