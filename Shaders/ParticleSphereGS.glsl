@@ -81,6 +81,14 @@ void main()
     cornersDC[corner].z = prNearNDC * cornersDC[corner].w;
   }
 #endif
+#ifdef PR_FLAT_DEPTH
+  // every triangle at window depth 0.5 (never clipped by the near or far plane): for passes
+  // that test against a mask in the depth buffer instead of depth (vtkMetaballWalkingPlane)
+  for (int corner = 0; corner < 3; ++corner)
+  {
+    cornersDC[corner].z = 0.0;
+  }
+#endif
   int i = 0; // the input vertex, for VTK's pass-through replacements
   for (int corner = 0; corner < 3; ++corner)
   {

@@ -132,6 +132,10 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     metaballs->SetRefinementSteps(this->RefinementSteps);
     metaballs->SetIterationLimit(this->IterationLimit);
     metaballs->SetMaximumNumberOfNeighbors(this->MaximumNumberOfNeighbors);
+    metaballs->SetMethod(this->MetaballMethod);
+    metaballs->SetWalkingTolerance(this->WalkingTolerance);
+    metaballs->SetMaximumPasses(this->MaximumPasses);
+    metaballs->SetTimeBudget(this->TimeBudget);
   }
 }
 
@@ -175,6 +179,34 @@ void vtkParticleRepresentation::SetIterationLimit(int limit)
 void vtkParticleRepresentation::SetMaximumNumberOfNeighbors(int count)
 {
   this->MaximumNumberOfNeighbors = count;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetMetaballMethod(int method)
+{
+  this->MetaballMethod = method;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetWalkingTolerance(double tolerance)
+{
+  this->WalkingTolerance = tolerance;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetMaximumPasses(int passes)
+{
+  this->MaximumPasses = passes;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetTimeBudget(double seconds)
+{
+  this->TimeBudget = seconds;
   this->ApplyMapperSettings();
 }
 

@@ -116,7 +116,9 @@ public:
   ///@{
   /**
    * Metaballs (vtkMetaballMapper; used with the METABALLS technique): influence factor k,
-   * iso-value, search tolerance, refinement steps, iteration limit, neighbour list bound.
+   * iso-value, search tolerance, refinement steps, iteration limit, neighbour list bound
+   * (vicinity method); the method; tolerance, pass limit and time budget of the walking depth
+   * plane.
    */
   void SetInfluenceFactor(double factor);
   void SetIsoValue(double value);
@@ -124,6 +126,10 @@ public:
   void SetRefinementSteps(int steps);
   void SetIterationLimit(int limit);
   void SetMaximumNumberOfNeighbors(int count);
+  void SetMetaballMethod(int method);
+  void SetWalkingTolerance(double tolerance);
+  void SetMaximumPasses(int passes);
+  void SetTimeBudget(double seconds);
   ///@}
 
   ///@{
@@ -262,6 +268,10 @@ protected:
   int RefinementSteps = 6;
   int IterationLimit = 100;
   int MaximumNumberOfNeighbors = 64;
+  int MetaballMethod = 0;
+  double WalkingTolerance = 1e-3;
+  int MaximumPasses = 100;
+  double TimeBudget = 1.0;
   int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;

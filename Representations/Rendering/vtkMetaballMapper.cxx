@@ -110,6 +110,8 @@ public:
   // shaders blend scalar colours, the smallest positive radius (model units, before scaling)
   vtkNew<vtkMetaballWalkingPlane> Plane;
   int Pass = 0;
+  bool Splat = false;      // the splat passes' shader variant is wanted
+  bool BuiltSplat = false; // and was built
   bool WalkingColors = false;
   double SmallestRadius = 0.0;
   double AnchorMC[3] = { 0.0, 0.0, 0.0 }; // lambda's origin: the centre of the positions' bounds
@@ -613,7 +615,7 @@ void vtkMetaballMapper::ReplaceShaderValues(
   internals.Hooks.Begin(vs, gs, fs);
   if (this->Method == WALKING_DEPTH_PLANE)
   {
-    this->ReplaceWalkingShaderValues(vs, fs);
+    this->ReplaceWalkingShaderValues(vs, gs, fs);
   }
   else
   {
@@ -645,7 +647,7 @@ void ReadBlendedColor(std::string& fs)
 }
 
 //------------------------------------------------------------------------------
-void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string& fs)
+void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string& gs, std::string& fs)
 {
   vtkInternals& internals = *this->Internals;
   vtkParticleShaderHooks& hooks = internals.Hooks;
@@ -663,35 +665,43 @@ void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string&
     "  prWalkingCenterZVSOutput = (mat3(MCVCMatrix) * (vertexMC.xyz - prWalkingAnchor)).z;");
   const bool colors = fs.find("vertexColorVSOutput") != std::string::npos;
   internals.WalkingColors = colors;
+  internals.BuiltSplat = internals.Splat;
   hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "//PR::Include MetaballWalking");
-  // the splat passes return early with their contribution; the final draw puts the point
-  // where the plane is
   std::ostringstream surface;
-  surface << "vec4 prMetaballRGBA = " << (colors ? "vertexColorVSOutput" : "vec4(1.0)")
-          << ";\n"
-             "  if (prWalkingPass != 0)\n"
-             "  {\n"
-             "    vec4 prSplat;\n"
-             "    if (!prHit || !prWalkingSplat(prRayS, prRayD, prT0, prT1,\n"
-             "      prWalkingCenterZVSOutput, radiusVC, prMetaballRGBA, prSplat))\n"
-             "    {\n"
-             "      discard;\n"
-             "    }\n"
-             "    gl_FragData[0] = prSplat;\n"
-             "    gl_FragDepth = 0.5;\n"
-             "    return;\n"
-             "  }\n"
-             "  if (prHit)\n"
-             "  {\n"
-             "    float prTWalk;\n"
-             "    prHit = prWalkingSurface(prRayS, prRayD, prT0, prT1, prWalkingCenterZVSOutput,\n"
-             "      prTWalk);\n"
-             "    prT0 = prTWalk;\n"
-             "    prT1 = prTWalk;\n"
-             "  }";
-  if (colors)
+  surface << "vec4 prMetaballRGBA = " << (colors ? "vertexColorVSOutput" : "vec4(1.0)") << ";\n";
+  if (internals.Splat)
   {
-    surface << "\n  prMetaballRGBA = prWalkingColor(prMetaballRGBA);";
+    // The splat passes' variant returns early with its contribution. It writes no depth and
+    // its triangles are at depth 0.5, so that the depth test rejects the finished pixels
+    // (masked at depth 0 by vtkMetaballWalkingPlane) before the fragment stage runs.
+    vtkParticleShaders::ReplaceHook(
+      fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_NO_DEPTH_WRITE");
+    vtkParticleShaders::ReplaceHook(
+      gs, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_FLAT_DEPTH");
+    surface << "  vec4 prSplat;\n"
+               "  if (!prHit || !prWalkingSplat(prRayS, prRayD, prT0, prT1,\n"
+               "    prWalkingCenterZVSOutput, radiusVC, prMetaballRGBA, prSplat))\n"
+               "  {\n"
+               "    discard;\n"
+               "  }\n"
+               "  gl_FragData[0] = prSplat;\n"
+               "  return;";
+  }
+  else
+  {
+    // the final draw puts the point where the plane is
+    surface << "  if (prHit)\n"
+               "  {\n"
+               "    float prTWalk;\n"
+               "    prHit = prWalkingSurface(prRayS, prRayD, prT0, prT1, prWalkingCenterZVSOutput,\n"
+               "      prTWalk);\n"
+               "    prT0 = prTWalk;\n"
+               "    prT1 = prTWalk;\n"
+               "  }";
+    if (colors)
+    {
+      surface << "\n  prMetaballRGBA = prWalkingColor(prMetaballRGBA);";
+    }
   }
   hooks.Insert(Hooks::Fragment, "//PR::Surface::Impl", surface.str());
   hooks.Insert(Hooks::Fragment, "//PR::Surface::Normal",
@@ -934,6 +944,7 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
   vtkTextureObject* planeTexture = plane->GetPlaneTexture();
   if (plane->Begin(ren))
   {
+    internals.Splat = true;
     internals.Pass = 1;
     plane->StartInitialization();
     this->Superclass::RenderPieceDraw(ren, act);
@@ -956,6 +967,7 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
     plane->End();
 
     // the final draw
+    internals.Splat = false;
     internals.Pass = 0;
     plane->GetGradientTexture()->Activate();
     if (internals.WalkingColors)
@@ -971,6 +983,16 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
     }
   }
   this->OcclusionCulling = culling;
+}
+
+//------------------------------------------------------------------------------
+bool vtkMetaballMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  // the walking depth plane switches between its two variants twice per frame (the shader
+  // cache keeps both programs compiled)
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
+    (this->Method == WALKING_DEPTH_PLANE && this->Internals->Splat != this->Internals->BuiltSplat);
 }
 
 //------------------------------------------------------------------------------

@@ -282,10 +282,11 @@ protected:
   void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
   const float* GetCullingRadii() override;
   bool GetOcclusionCullingCompiled(vtkRenderer* ren) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
   // the shader replacements of each method
-  void ReplaceWalkingShaderValues(std::string& vs, std::string& fs);
+  void ReplaceWalkingShaderValues(std::string& vs, std::string& gs, std::string& fs);
   void ReplaceVicinityShaderValues(std::string& vs, std::string& gs, std::string& fs);
 
   // the walking depth plane: its uniforms; its passes, then the final draw

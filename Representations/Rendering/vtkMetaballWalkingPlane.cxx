@@ -44,7 +44,11 @@ public:
   // framebuffer it draws into
   vtkNew<vtkTextureObject> Textures[NumberOfTargets];
   vtkNew<vtkOpenGLFramebufferObject> Framebuffers[NumberOfTargets];
+  // the finished-pixel mask (the paper's shared depth attachment): 0 finished or inactive, 1
+  // active; the density draws (at depth 0.5, GL_LESS) skip the masked pixels
+  vtkNew<vtkTextureObject> Mask;
   std::unique_ptr<vtkOpenGLQuadHelper> StepQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   bool Allocated = false;
   bool Active = false;
   // the occlusion queries of the step passes (the active pixels), read before the next pass
@@ -56,6 +60,11 @@ public:
   {
     if (this->Allocated && this->Context == ctx)
     {
+      if (this->Mask->GetWidth() != static_cast<unsigned int>(w) ||
+        this->Mask->GetHeight() != static_cast<unsigned int>(h))
+      {
+        this->Mask->Resize(w, h);
+      }
       for (auto& texture : this->Textures)
       {
         if (texture->GetWidth() != static_cast<unsigned int>(w) ||
@@ -68,7 +77,8 @@ public:
     }
     this->Context = ctx;
     this->State->PushFramebufferBindings();
-    bool ok = true;
+    this->Mask->SetContext(ctx);
+    bool ok = this->Mask->AllocateDepth(w, h, vtkTextureObject::Float32);
     for (int i = 0; i < NumberOfTargets && ok; ++i)
     {
       vtkTextureObject* texture = this->Textures[i];
@@ -87,6 +97,10 @@ public:
         this->Framebuffers[i]->Bind();
         this->Framebuffers[i]->AddColorAttachment(0, texture);
         this->Framebuffers[i]->ActivateDrawBuffer(0);
+        if (i == PlaneTarget || i == DensityTarget)
+        {
+          this->Framebuffers[i]->AddDepthAttachment(this->Mask);
+        }
       }
     }
     this->State->PopFramebufferBindings();
@@ -113,6 +127,35 @@ public:
     ostate->vtkglEnable(GL_BLEND);
     ostate->vtkglBlendEquation(minimum ? GL_MIN : GL_FUNC_ADD);
     ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // the mask: tested (not written) by the density draws and the step; off otherwise
+    if (target == DensityTarget || (target == PlaneTarget && keep))
+    {
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+      ostate->vtkglDepthFunc(GL_LESS);
+    }
+    else
+    {
+      ostate->vtkglDisable(GL_DEPTH_TEST);
+    }
+    ostate->vtkglDepthMask(GL_FALSE);
+  }
+
+  vtkOpenGLQuadHelper* Quad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& impl)
+  {
+    if (!quad)
+    {
+      std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
+        vtkParticleShaders::Get("MetaballWalkingStep") + "\nuniform sampler2D prDensity;\n");
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", impl);
+      quad.reset(new vtkOpenGLQuadHelper(this->Context, nullptr, fs.c_str(), nullptr));
+    }
+    else
+    {
+      this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    return quad->Program ? quad.get() : nullptr;
   }
 
   // the result of the step pass issued `index` (0-based) in this walk (the last two are kept)
@@ -241,6 +284,14 @@ bool vtkMetaballWalkingPlane::StartDensity()
     }
   }
   internals.Bind(DensityTarget, 0.0f, false);
+  if (internals.Issued == 0)
+  {
+    // every pixel open
+    internals.State->vtkglDepthMask(GL_TRUE);
+    internals.State->vtkglClearDepth(1.0);
+    internals.State->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    internals.State->vtkglDepthMask(GL_FALSE);
+  }
   return true;
 }
 
@@ -252,30 +303,29 @@ void vtkMetaballWalkingPlane::Step()
   {
     return;
   }
-  vtkOpenGLRenderWindow* ctx = internals.Context;
-  if (!internals.StepQuad)
-  {
-    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
-      vtkParticleShaders::Get("MetaballWalkingStep") + "\nuniform sampler2D prDensity;\n");
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl",
-      "  vec4 density = texture(prDensity, texCoord);\n"
-      "  if (!(density.w > 0.5))\n"
-      "  {\n"
-      "    discard;\n"
-      "  }\n"
-      "  gl_FragData[0] = prWalkingStep(density);\n");
-    internals.StepQuad.reset(new vtkOpenGLQuadHelper(ctx, nullptr, fs.c_str(), nullptr));
-  }
-  else
-  {
-    ctx->GetShaderCache()->ReadyShaderProgram(internals.StepQuad->Program);
-  }
-  vtkShaderProgram* program = internals.StepQuad->Program;
+  // the step: added to the plane in the pixels the mask leaves (counted), then the mask
+  // closed over the pixels that finished or left (lambda past lambda_max: no particle saw them
+  // active)
+  vtkOpenGLQuadHelper* step = internals.Quad(internals.StepQuad,
+    "  vec4 density = texture(prDensity, texCoord);\n"
+    "  if (!(density.w > 0.5))\n"
+    "  {\n"
+    "    discard;\n"
+    "  }\n"
+    "  gl_FragData[0] = prWalkingStep(density);\n");
+  vtkOpenGLQuadHelper* mask = internals.Quad(internals.MaskQuad,
+    "  vec4 density = texture(prDensity, texCoord);\n"
+    "  if (density.w > 0.5 && prWalkingStep(density).z < 0.5)\n"
+    "  {\n"
+    "    discard;\n"
+    "  }\n"
+    "  gl_FragData[0] = vec4(0.0);\n"
+    "  gl_FragDepth = 0.0;\n");
+  vtkShaderProgram* program = step ? step->Program : nullptr;
   ++this->NumberOfPasses;
-  if (!program)
+  if (!program || !mask)
   {
-    vtkErrorMacro(<< "The step program of the walking depth plane does not compile.");
+    vtkErrorMacro(<< "The step programs of the walking depth plane do not compile.");
     internals.Active = false;
     this->Termination = PASS_LIMIT;
     return;
@@ -284,15 +334,29 @@ void vtkMetaballWalkingPlane::Step()
   internals.Bind(PlaneTarget, 0.0f, false, true);
   vtkTextureObject* density = internals.Textures[DensityTarget];
   density->Activate();
-  program->SetUniformi("prDensity", density->GetTextureUnit());
-  program->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
-  program->SetUniformf("prDepthTolerance", static_cast<float>(this->DepthTolerance));
-  program->SetUniformf("prDensityTolerance", static_cast<float>(this->DensityTolerance));
-  program->SetUniformf("prMaximumStep", static_cast<float>(this->MaximumStep));
-  program->SetUniformi("prOracle", this->StepOracle);
+  for (vtkShaderProgram* p : { program, mask->Program })
+  {
+    internals.Context->GetShaderCache()->ReadyShaderProgram(p);
+    p->SetUniformi("prDensity", density->GetTextureUnit());
+    p->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
+    p->SetUniformf("prDepthTolerance", static_cast<float>(this->DepthTolerance));
+    p->SetUniformf("prDensityTolerance", static_cast<float>(this->DensityTolerance));
+    p->SetUniformf("prMaximumStep", static_cast<float>(this->MaximumStep));
+    p->SetUniformi("prOracle", this->StepOracle);
+  }
+  internals.Context->GetShaderCache()->ReadyShaderProgram(program);
   glBeginQuery(GL_SAMPLES_PASSED, internals.Queries[internals.Issued % 2]);
-  internals.StepQuad->Render();
+  step->Render();
   glEndQuery(GL_SAMPLES_PASSED);
+  // the mask (no colour written)
+  vtkOpenGLState* ostate = internals.State;
+  internals.Context->GetShaderCache()->ReadyShaderProgram(mask->Program);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  mask->Render();
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDepthMask(GL_FALSE);
   density->Deactivate();
   ++internals.Issued;
 }
@@ -365,11 +429,15 @@ void vtkMetaballWalkingPlane::ReleaseGraphicsResources(vtkWindow* window)
     return;
   }
   context->MakeCurrent();
-  if (internals.StepQuad)
+  for (auto* quad : { &internals.StepQuad, &internals.MaskQuad })
   {
-    internals.StepQuad->ReleaseGraphicsResources(window);
-    internals.StepQuad.reset();
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(window);
+      quad->reset();
+    }
   }
+  internals.Mask->ReleaseGraphicsResources(window);
   for (int i = 0; i < NumberOfTargets; ++i)
   {
     internals.Textures[i]->ReleaseGraphicsResources(window);
