@@ -5,11 +5,13 @@ the field on a grid and a contour.
 Tables (Benchmarks/results/metaball_*.csv, plot metaball_benchmark.png):
 - metaball_frames.csv: per scene (the LAMMPS droplets tiled 1x and 2x, 1.1e4 and 8.8e4 atoms; a
   gas with 10 % or 90 % of the atoms in clusters, the paper's Sim-1 / Sim-3 contrast) the frame
-  time of the opaque sphere core and of the metaballs while only the camera moves, the
-  neighbour-list build (the per-time-step cost besides the upload) and the list size.
+  time of the opaque sphere core and of the metaballs while only the camera moves (the vicinity
+  method; the walking depth plane walked to convergence, with its passes), the vicinity
+  method's neighbour-list build (the per-time-step cost besides the upload) and the list size.
 - metaball_accuracy.csv: depth error (units of the radius) and normal error (degrees) of the
   metaballs against the exact surface, and the frame time, versus Tolerance, RefinementSteps
-  and IterationLimit (droplets, 1.1e4 atoms).
+  and IterationLimit (vicinity) and WalkingTolerance, MaximumPasses, TimeBudget and the step
+  oracle (walking depth plane; droplets, 1.1e4 atoms).
 - metaball_peer.csv: the peer at grid resolutions 64..256: vtkGaussianSplatter (ParaView's
   "Gaussian Resampling") onto the grid, vtkFlyingEdges3D, rendering; its time per time step and
   the depth error of contouring the exact metaball field sampled on that grid (the best a grid
@@ -106,6 +108,17 @@ def view(mapper, data):
     return actor, renderer, window
 
 
+def walking(mapper, **settings):
+    """Switch a vtkMetaballMapper to the walking depth plane, walked to convergence unless the
+    settings say otherwise."""
+    mapper.SetMethodToWalkingDepthPlane()
+    mapper.SetTimeBudget(1000.0)
+    mapper.SetMaximumPasses(1000)
+    for knob, value in settings.items():
+        getattr(mapper, "Set" + knob)(value)
+    return mapper
+
+
 def frame_seconds(window, renderer, frames):
     window.Render()
     start = time.time()
@@ -161,9 +174,17 @@ def main():
         metaballs = pr.vtkMetaballMapper()
         _, renderer, window = view(metaballs, data)
         metaball_s = frame_seconds(window, renderer, frames)
+        plane = walking(pr.vtkMetaballMapper())
+        _, renderer, window = view(plane, data)
+        walking_s = frame_seconds(window, renderer, frames)
+        walk = plane.GetWalkingPlane()
         rows.append({"scene": name, "atoms": len(xyz), "core_frame_s": round(core_s, 4),
                      "metaball_frame_s": round(metaball_s, 4),
                      "ratio": round(metaball_s / core_s, 2),
+                     "walking_frame_s": round(walking_s, 4),
+                     "walking_ratio": round(walking_s / core_s, 2),
+                     "walking_passes": walk.GetNumberOfPasses(),
+                     "walking_termination": walk.GetTerminationAsString(walk.GetTermination()),
                      "list_build_s": round(metaballs.GetLastListBuildSeconds(), 4),
                      "list_entries": metaballs.GetNumberOfListEntries(),
                      "isolated": metaballs.GetNumberOfIsolatedParticles()})
@@ -177,17 +198,25 @@ def main():
     xyz, radius, kind = droplets(1)
     data = polydata(xyz, radius, kind)
     r_mean = float(np.mean(radius))
-    settings = [("Tolerance", v) for v in (0.2, 0.05, 0.01, 0.001)] + \
-               [("RefinementSteps", v) for v in (0, 2, 6, 12)] + \
-               [("IterationLimit", v) for v in (10, 20, 40, 100)]
+    settings = [("vicinity", "Tolerance", v) for v in (0.2, 0.05, 0.01, 0.001)] + \
+               [("vicinity", "RefinementSteps", v) for v in (0, 2, 6, 12)] + \
+               [("vicinity", "IterationLimit", v) for v in (10, 20, 40, 100)] + \
+               [("walking", "WalkingTolerance", v) for v in (1e-2, 1e-3, 1e-4)] + \
+               [("walking", "MaximumPasses", v) for v in (10, 20, 40, 80, 160)] + \
+               [("walking", "TimeBudget", v) for v in (0.1, 0.3, 1.0)] + \
+               [("walking", "StepOracle", v) for v in (0, 1)]
     rows = []
-    for knob, value in settings:
+    for method, knob, value in settings:
         mapper = pr.vtkMetaballMapper()
+        if method == "walking":
+            walking(mapper)
         getattr(mapper, "Set" + knob)(value)
         actor, renderer, window = view(mapper, data)
         seconds = frame_seconds(window, renderer, frames)
         r = compare(window, renderer, actor, r_mean, normals=True)
-        rows.append({"knob": knob, "value": value, "frame_s": round(seconds, 4),
+        passes = mapper.GetWalkingPlane().GetNumberOfPasses() if method == "walking" else ""
+        rows.append({"method": method, "knob": knob, "value": value, "passes": passes,
+                     "frame_s": round(seconds, 4),
                      "depth_mean_R": "%.3g" % r["mean"], "depth_p99_R": "%.3g" % r["p99"],
                      "depth_max_smooth_R": "%.3g" % r["max_smooth"],
                      "missing_pixels": r["only_ref"], "extra_pixels": r["only_gpu"],
@@ -269,20 +298,31 @@ def plot(out):
     peer = read("metaball_peer.csv")
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
     ax = axes[0]
-    ax.bar(range(len(frames)), [float(r["ratio"]) for r in frames])
+    x = np.arange(len(frames))
+    ax.bar(x - 0.2, [float(r["ratio"]) for r in frames], 0.4, label="vicinity")
+    ax.bar(x + 0.2, [float(r["walking_ratio"]) for r in frames], 0.4,
+           label="walking depth plane (to convergence)")
+    for i, r in enumerate(frames):
+        ax.annotate("%s passes" % r["walking_passes"], (i + 0.2, float(r["walking_ratio"])),
+                    fontsize=7, ha="center")
+    ax.legend(fontsize=8)
     ax.set_xticks(range(len(frames)))
     ax.set_xticklabels(["%s\n%s atoms" % (r["scene"], r["atoms"]) for r in frames], fontsize=7)
     ax.set_ylabel("metaball frame / opaque sphere core frame")
     ax.set_title("camera-only frames, llvmpipe, %dx%d" % SIZE)
     ax = axes[1]
-    for knob in ("Tolerance", "RefinementSteps", "IterationLimit"):
+    for knob in ("Tolerance", "RefinementSteps", "IterationLimit", "WalkingTolerance",
+                 "MaximumPasses", "TimeBudget", "StepOracle"):
         rows = [r for r in accuracy if r["knob"] == knob]
+        style = "o-" if rows and rows[0]["method"] == "vicinity" else "s--"
         ax.plot([float(r["frame_s"]) for r in rows],
-                [max(float(r["depth_mean_R"]), 1e-7) for r in rows], "o-", label=knob)
+                [max(float(r["depth_mean_R"]), 1e-7) for r in rows], style,
+                label=("%s (%s)" % (knob, rows[0]["method"])) if rows else knob)
         for r in rows:
             ax.annotate(r["value"], (float(r["frame_s"]), max(float(r["depth_mean_R"]), 1e-7)),
                         fontsize=7)
     ax.set_yscale("log")
+    ax.set_xscale("log")
     ax.set_xlabel("frame time (s)")
     ax.set_ylabel("mean depth error (R) vs the exact surface")
     ax.set_title("droplets 1x: error vs time per knob")
@@ -298,7 +338,11 @@ def plot(out):
     if mine:
         ax.plot([float(droplet["list_build_s"]) + float(mine[0]["frame_s"])],
                 [max(float(mine[0]["depth_mean_R"]), 1e-7)], "r*", markersize=12,
-                label="vtkMetaballMapper (list build + frame)")
+                label="vtkMetaballMapper vicinity (list build + frame)")
+    walked = [r for r in accuracy if r["knob"] == "WalkingTolerance" and float(r["value"]) == 1e-3]
+    if walked:
+        ax.plot([float(walked[0]["frame_s"])], [max(float(walked[0]["depth_mean_R"]), 1e-7)],
+                "m*", markersize=12, label="vtkMetaballMapper walking depth plane (frame)")
     ax.set_yscale("log")
     ax.set_xlabel("time per time step (s)")
     ax.set_ylabel("mean depth error (R)")

@@ -33,7 +33,10 @@ vec4 prWalkingStep(vec4 density)
     float newton = slope > 0.0 ? (prIsoValue - value) / slope : 0.0;
     if (d > 1.0)
     {
-      step = slope > 0.0 ? max(newton, -prMaximumStep) : step;
+      // behind the surface: Newton back where the field rises with depth; where it falls, the
+      // plane is inside, past a maximum, and the crossing lies before that maximum: half a
+      // largest step back (the paper's attenuation would creep back by (d - 1) / 2)
+      step = slope > 0.0 ? max(newton, -prMaximumStep) : -0.5 * prMaximumStep;
     }
     else if (density.z >= prIsoValue)
     {

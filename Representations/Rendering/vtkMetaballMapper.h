@@ -52,10 +52,12 @@
  * rebuild per time step; every particle's influence sphere is drawn once per pass, and the
  * number of passes grows with the depth the plane has to walk. Per pixel a plane depth lambda
  * starts at the nearest front of an influence sphere (not before the near plane); each pass
- * sums the kernels at lambda and at two deeper samples by additive blending, and a step pass
+ * sums the kernels, their derivative along lambda and the kernels one largest step deeper by
+ * additive blending (a shader variant without depth writes), and a step pass
  * moves lambda with the oracle (StepOracle: the paper's Sec. 3.2.3 attenuation, or by default
- * the secant crossing between the samples that bracket the iso-value, else MaximumStepFactor
- * times the smallest radius); a pixel is finished when Newton's estimate of its distance to the
+ * Newton's step within the bracket of the sample one largest step ahead, the largest step
+ * being MaximumStepFactor times the smallest radius); finished pixels are masked in a shared
+ * depth buffer so that later passes skip them before the fragment stage; a pixel is finished when Newton's estimate of its distance to the
  * surface is at most WalkingTolerance times the smallest radius (where the field does not rise
  * with depth, a ray touching the surface: when |D/t - 1| <= WalkingTolerance). The
  * walk stops (Sec. 3.2.4) when no pixel is active, when FinishedShare of the covered pixels are

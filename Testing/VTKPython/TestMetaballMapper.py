@@ -28,7 +28,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare, droplet, metaball_view, type_lookup_table
+from prMetaballTesting import compare, droplet, isolated_views, metaball_view, type_lookup_table
 from prVTKTesting import Messages, check, finish, grab_image, picked_ids
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -59,18 +59,7 @@ if NO_STORAGE:
     sys.exit(finish())
 
 # ---- 1. isolated particles are exact
-for name, offset, distance in (("near", 0.0, None), ("camera 1e7 R away", 0.0, 1e7),
-                               ("data 1e6 from the origin", 1e6, None)):
-    xyz = np.array([[0.0, 0.0, 0.0], [5.0, 0.3, -0.2], [-4.0, 3.0, 1.0]]) + offset
-    mapper, actor, renderer, window = metaball_view(xyz, (200, 200))
-    renderer.ResetCamera()
-    if distance:
-        camera = renderer.GetActiveCamera()
-        camera.SetPosition(offset, offset, offset + distance)
-        camera.SetFocalPoint(offset, offset, offset)
-        camera.SetViewAngle(6e-6 * 30)  # the spheres fill the view from 1e7 R away
-        renderer.ResetCameraClippingRange()
-    window.Render()
+for name, _, mapper, actor, renderer, window in isolated_views():
     check(mapper.GetNumberOfIsolatedParticles() == 3, name + ": three isolated particles")
     r = compare(window, renderer, actor, 1.0)
     ref_rgb = vtk_to_numpy(r["reference"].GetColorImage().GetPointData().GetScalars())[:, :3]

@@ -21,6 +21,29 @@ def metaball_view(xyz, size=(300, 300), radius=1.0, **arrays):
     return mapper, actor, renderer, window
 
 
+def isolated_views(walking=False):
+    """The isolated-particle scenes of the metaball tests: three particles far apart, seen near,
+    with the camera 1e7 R away, and with the data 1e6 from the origin. Yields (name, far camera,
+    mapper, actor, renderer, window), rendered once."""
+    for name, offset, distance in (("near", 0.0, None), ("camera 1e7 R away", 0.0, 1e7),
+                                   ("data 1e6 from the origin", 1e6, None)):
+        xyz = np.array([[0.0, 0.0, 0.0], [5.0, 0.3, -0.2], [-4.0, 3.0, 1.0]]) + offset
+        mapper, actor, renderer, window = metaball_view(xyz, (200, 200))
+        if walking:
+            mapper.SetMethodToWalkingDepthPlane()
+            mapper.SetTimeBudget(1000.0)  # to convergence whatever the load
+            mapper.SetMaximumPasses(1000)
+        renderer.ResetCamera()
+        if distance:
+            camera = renderer.GetActiveCamera()
+            camera.SetPosition(offset, offset, offset + distance)
+            camera.SetFocalPoint(offset, offset, offset)
+            camera.SetViewAngle(6e-6 * 30)  # the spheres fill the view from 1e7 R away
+            renderer.ResetCameraClippingRange()
+        window.Render()
+        yield name, bool(distance), mapper, actor, renderer, window
+
+
 def droplet(seed=3):
     """The tests' droplet: 291 particles on a jittered lattice within 6 R, and 60 vapour atoms
     in a 28 R box; returns the positions and the type (0 droplet, 1 vapour)."""
