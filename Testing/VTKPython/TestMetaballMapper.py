@@ -28,7 +28,8 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare, droplet, isolated_views, metaball_view, type_lookup_table
+from prMetaballTesting import (compare, droplet, isolated_views, metaball_view, thin_neck,
+                               type_lookup_table)
 from prVTKTesting import Messages, check, finish, grab_image, picked_ids
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -142,29 +143,12 @@ print("list build: %.4f s for %d particles, %d entries" %
       (mapper.GetLastListBuildSeconds(), len(xyz), mapper.GetNumberOfListEntries()))
 
 # ---- 3. the thin neck: two particles just short of the largest connecting distance
-k, c = 2.0, 16.0 / 9.0
-d_max = 2.0 * k * np.sqrt(1.0 - np.sqrt(1.0 / (2.0 * c)))
-d = d_max * 0.999
-neck = np.sqrt(k * k * (1.0 - np.sqrt(1.0 / (2.0 * c))) - d * d / 4.0)
-mapper, actor, renderer, window = metaball_view([[-d / 2, 0, 0], [d / 2, 0, 0]], (400, 200))
-camera = renderer.GetActiveCamera()
-camera.SetPosition(0, 0, 20)
-camera.SetFocalPoint(0, 0, 0)
-camera.SetViewAngle(15)
-renderer.ResetCameraClippingRange()
-window.Render()
-r = compare(window, renderer, actor, 1.0)
-# the neck's columns: x within 0.05 R of the mid-plane
-width, height = window.GetSize()
-reference_t = vtk_to_numpy(r["reference"].GetViewDepthImage().GetPointData().GetScalars())
-x_pixels = np.arange(width * height) % width
-mid = np.abs(x_pixels - (width - 1) / 2.0) <= 1
-neck_ref = int(np.sum((reference_t >= 0) & mid))
-neck_gpu = int(np.sum(r["both"] & mid))
+neck, neck_ref, neck_gpu, r = thin_neck()
 print("thin neck (radius %.3f R): reference %d pixels, GPU %d of them" % (neck, neck_ref, neck_gpu))
 check(neck_ref > 0 and neck_gpu == neck_ref, "the neck has holes: %d of %d" % (neck_gpu, neck_ref))
 
 # ---- 4. coincident particles
+k, c = 2.0, 16.0 / 9.0
 n = 10
 mapper, actor, renderer, window = metaball_view(np.zeros((n, 3)) + [1.0, 2.0, 3.0], (200, 200))
 renderer.ResetCamera()

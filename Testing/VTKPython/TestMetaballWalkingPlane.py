@@ -24,7 +24,8 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare, droplet, isolated_views, metaball_view, type_lookup_table
+from prMetaballTesting import (compare, droplet, isolated_views, metaball_view, thin_neck,
+                               type_lookup_table)
 from prVTKTesting import Messages, check, finish, grab_image, picked_ids
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -178,21 +179,7 @@ print("the two methods' pictures differ by %.2f/255 on average" %
       np.abs(walking_image - vicinity_image)[:, :3].mean())
 
 # ---- 4. the thin neck
-k, c = 2.0, 16.0 / 9.0
-d = 2.0 * k * np.sqrt(1.0 - np.sqrt(1.0 / (2.0 * c))) * 0.999
-mapper, actor, renderer, window = walking_view([[-d / 2, 0, 0], [d / 2, 0, 0]], (400, 200))
-camera = renderer.GetActiveCamera()
-camera.SetPosition(0, 0, 20)
-camera.SetFocalPoint(0, 0, 0)
-camera.SetViewAngle(15)
-renderer.ResetCameraClippingRange()
-window.Render()
-r = compare(window, renderer, actor, 1.0)
-width, height = window.GetSize()
-reference_t = vtk_to_numpy(r["reference"].GetViewDepthImage().GetPointData().GetScalars())
-mid = np.abs(np.arange(width * height) % width - (width - 1) / 2.0) <= 1
-neck_ref = int(np.sum((reference_t >= 0) & mid))
-neck_gpu = int(np.sum(r["both"] & mid))
+neck, neck_ref, neck_gpu, r = thin_neck(walking=True)
 print("thin neck: reference %d pixels, walking plane %d of them, depth error max %.2e R" %
       (neck_ref, neck_gpu, r["max_smooth"]))
 check(neck_ref > 0 and neck_gpu == neck_ref, "the neck has holes: %d of %d" % (neck_gpu, neck_ref))

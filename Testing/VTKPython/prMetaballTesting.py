@@ -44,6 +44,32 @@ def isolated_views(walking=False):
         yield name, bool(distance), mapper, actor, renderer, window
 
 
+def thin_neck(walking=False):
+    """The paper's thin-neck situation (its Fig. 10/11): two particles 0.1 % short of the
+    largest distance at which they connect (k = 2), seen across the neck. Returns the neck's
+    radius (R), the reference's pixels in the columns within a pixel of the mid-plane, how many
+    of them the GPU shows too, and the comparison."""
+    k, c = 2.0, 16.0 / 9.0
+    d = 2.0 * k * np.sqrt(1.0 - np.sqrt(1.0 / (2.0 * c))) * 0.999
+    neck = np.sqrt(k * k * (1.0 - np.sqrt(1.0 / (2.0 * c))) - d * d / 4.0)
+    mapper, actor, renderer, window = metaball_view([[-d / 2, 0, 0], [d / 2, 0, 0]], (400, 200))
+    if walking:
+        mapper.SetMethodToWalkingDepthPlane()
+        mapper.SetTimeBudget(1000.0)  # to convergence whatever the load
+        mapper.SetMaximumPasses(1000)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, 0, 20)
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetViewAngle(15)
+    renderer.ResetCameraClippingRange()
+    window.Render()
+    r = compare(window, renderer, actor, 1.0)
+    width, height = window.GetSize()
+    reference_t = vtk_to_numpy(r["reference"].GetViewDepthImage().GetPointData().GetScalars())
+    mid = np.abs(np.arange(width * height) % width - (width - 1) / 2.0) <= 1
+    return neck, int(np.sum((reference_t >= 0) & mid)), int(np.sum(r["both"] & mid)), r
+
+
 def droplet(seed=3):
     """The tests' droplet: 291 particles on a jittered lattice within 6 R, and 60 vapour atoms
     in a 28 R box; returns the positions and the type (0 droplet, 1 vapour)."""
