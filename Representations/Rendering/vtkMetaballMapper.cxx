@@ -115,6 +115,10 @@ public:
   bool WalkingColors = false;
   double SmallestRadius = 0.0;
   double AnchorMC[3] = { 0.0, 0.0, 0.0 }; // lambda's origin: the centre of the positions' bounds
+  // per frame: the anchor in vertex-buffer coordinates (as the shader sees it), lambda of the
+  // near plane
+  float WalkingAnchor[3] = { 0.0f, 0.0f, 0.0f };
+  float WalkingNear = 0.0f;
 
   void ReleaseBuffers(bool current)
   {
@@ -877,27 +881,8 @@ void vtkMetaballMapper::SetWalkingShaderParameters(
   program->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
   program->SetUniformf("prWalkingTolerance", static_cast<float>(this->WalkingTolerance));
   program->SetUniformf("prWalkingStepMax", static_cast<float>(plane->GetMaximumStep()));
-  // lambda's origin, the anchor: the centre of the particles' bounds in vertex-buffer
-  // coordinates, rounded to float as the shader sees it; lambda of the near plane
-  // (z = -near in view coordinates) from its view depth in double
-  vtkNew<vtkMatrix4x4> bufferToModel;
-  vtkMatrix4x4::Transpose(this->VBOShiftScale, bufferToModel); // stored transposed
-  bufferToModel->Invert();
-  double anchor[4] = { internals.AnchorMC[0], internals.AnchorMC[1], internals.AnchorMC[2], 1.0 };
-  bufferToModel->MultiplyPoint(anchor, anchor); // (now model -> buffer)
-  float anchorFloat[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    anchorFloat[i] = static_cast<float>(anchor[i]);
-    anchor[i] = anchorFloat[i];
-  }
-  program->SetUniform3f("prWalkingAnchor", anchorFloat);
-  vtkNew<vtkMatrix4x4> bufferToView;
-  this->GetBufferToViewMatrix(ren, act, bufferToView);
-  double anchorVC[4];
-  bufferToView->MultiplyPoint(anchor, anchorVC);
-  const double nearDistance = ren->GetActiveCamera()->GetClippingRange()[0];
-  program->SetUniformf("prWalkingNear", static_cast<float>(nearDistance + anchorVC[2]));
+  program->SetUniform3f("prWalkingAnchor", internals.WalkingAnchor);
+  program->SetUniformf("prWalkingNear", internals.WalkingNear);
   int origin[2] = { 0, 0 };
   if (internals.Pass == 0)
   {
@@ -928,6 +913,25 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
   {
     return; // nothing drawn
   }
+  // lambda's origin, the anchor: the centre of the particles' bounds in vertex-buffer
+  // coordinates, rounded to float as the shader sees it; lambda of the near plane
+  // (z = -near in view coordinates) from its view depth in double
+  vtkNew<vtkMatrix4x4> modelToBuffer;
+  vtkMatrix4x4::Transpose(this->VBOShiftScale, modelToBuffer); // buffer -> model, stored transposed
+  modelToBuffer->Invert();
+  double anchor[4] = { internals.AnchorMC[0], internals.AnchorMC[1], internals.AnchorMC[2], 1.0 };
+  modelToBuffer->MultiplyPoint(anchor, anchor);
+  for (int i = 0; i < 3; ++i)
+  {
+    internals.WalkingAnchor[i] = static_cast<float>(anchor[i]);
+    anchor[i] = internals.WalkingAnchor[i];
+  }
+  vtkNew<vtkMatrix4x4> bufferToView;
+  this->GetBufferToViewMatrix(ren, act, bufferToView);
+  double anchorVC[4];
+  bufferToView->MultiplyPoint(anchor, anchorVC);
+  const double nearDistance = ren->GetActiveCamera()->GetClippingRange()[0];
+  internals.WalkingNear = static_cast<float>(nearDistance + anchorVC[2]);
   plane->SetIsoValue(this->IsoValue);
   const double smallest = internals.SmallestRadius * std::abs(this->GetRadiusScaleVC(act));
   plane->SetMaximumStep(smallest * this->MaximumStepFactor);

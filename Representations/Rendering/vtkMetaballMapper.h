@@ -48,7 +48,7 @@
  *   finds the exit: the inner side is shown, lit facing the viewer (as the sphere core does).
  *
  * WALKING_DEPTH_PLANE, the paper's Sec. 3.2 (vtkMetaballWalkingPlane holds its buffers and
- * loop): no lists and no shader storage (OpenGL 3.2 is enough), memory O(pixels), nothing to
+ * loop): no lists and no shader storage (OpenGL 3.3 is enough), memory O(pixels), nothing to
  * rebuild per time step; every particle's influence sphere is drawn once per pass, and the
  * number of passes grows with the depth the plane has to walk. Per pixel a plane depth lambda
  * starts at the nearest front of an influence sphere (not before the near plane); each pass

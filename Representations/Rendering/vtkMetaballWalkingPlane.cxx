@@ -51,8 +51,8 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   bool Allocated = false;
   bool Active = false;
-  // the occlusion queries of the step passes (the active pixels), read before the next pass
-  unsigned int Queries[2] = { 0, 0 };
+  // the occlusion query of the last step pass (its active pixels), read before the next pass
+  unsigned int Query = 0;
   int Issued = 0; // step passes issued in this walk
   double Start = 0.0;
 
@@ -104,9 +104,9 @@ public:
       }
     }
     this->State->PopFramebufferBindings();
-    if (ok && !this->Queries[0])
+    if (ok && !this->Query)
     {
-      glGenQueries(2, this->Queries);
+      glGenQueries(1, &this->Query);
     }
     this->Allocated = ok;
     return ok;
@@ -151,18 +151,14 @@ public:
       vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", impl);
       quad.reset(new vtkOpenGLQuadHelper(this->Context, nullptr, fs.c_str(), nullptr));
     }
-    else
-    {
-      this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
-    }
     return quad->Program ? quad.get() : nullptr;
   }
 
-  // the result of the step pass issued `index` (0-based) in this walk (the last two are kept)
-  long long Count(int index)
+  // the active pixels the last step pass counted
+  long long Count()
   {
     GLuint64 samples = 0;
-    glGetQueryObjectui64v(this->Queries[index % 2], GL_QUERY_RESULT, &samples);
+    glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &samples);
     return static_cast<long long>(samples);
   }
 };
@@ -247,7 +243,7 @@ bool vtkMetaballWalkingPlane::StartDensity()
   const int issued = internals.Issued;
   if (issued >= 1)
   {
-    this->ActivePixels = internals.Count(issued - 1);
+    this->ActivePixels = internals.Count();
     if (issued == 1)
     {
       // the first step saw every covered pixel active
@@ -334,8 +330,8 @@ void vtkMetaballWalkingPlane::Step()
   internals.Bind(PlaneTarget, 0.0f, false, true);
   vtkTextureObject* density = internals.Textures[DensityTarget];
   density->Activate();
-  for (vtkShaderProgram* p : { program, mask->Program })
-  {
+  // both programs read the density with the oracle's settings
+  auto ready = [&](vtkShaderProgram* p) {
     internals.Context->GetShaderCache()->ReadyShaderProgram(p);
     p->SetUniformi("prDensity", density->GetTextureUnit());
     p->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));
@@ -343,14 +339,14 @@ void vtkMetaballWalkingPlane::Step()
     p->SetUniformf("prDensityTolerance", static_cast<float>(this->DensityTolerance));
     p->SetUniformf("prMaximumStep", static_cast<float>(this->MaximumStep));
     p->SetUniformi("prOracle", this->StepOracle);
-  }
-  internals.Context->GetShaderCache()->ReadyShaderProgram(program);
-  glBeginQuery(GL_SAMPLES_PASSED, internals.Queries[internals.Issued % 2]);
+  };
+  ready(program);
+  glBeginQuery(GL_SAMPLES_PASSED, internals.Query);
   step->Render();
   glEndQuery(GL_SAMPLES_PASSED);
   // the mask (no colour written)
   vtkOpenGLState* ostate = internals.State;
-  internals.Context->GetShaderCache()->ReadyShaderProgram(mask->Program);
+  ready(mask->Program);
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
@@ -443,10 +439,10 @@ void vtkMetaballWalkingPlane::ReleaseGraphicsResources(vtkWindow* window)
     internals.Textures[i]->ReleaseGraphicsResources(window);
     internals.Framebuffers[i]->ReleaseGraphicsResources(window);
   }
-  if (internals.Queries[0])
+  if (internals.Query)
   {
-    glDeleteQueries(2, internals.Queries);
-    internals.Queries[0] = internals.Queries[1] = 0;
+    glDeleteQueries(1, &internals.Query);
+    internals.Query = 0;
   }
   internals.Allocated = false;
   internals.Context = nullptr;
