@@ -64,7 +64,8 @@ uniform int prRefinementSteps;    // bisections of the bracket before the secant
 uniform float prNeighbourRadiusScale; // model -> view radius factor (radiusScaleVC)
 
 // the kernels the ray meets: (tc, a, 1/K^2), the centre relative to the drawn one (view
-// coordinates) and K^2, the drawn index (-1: the drawn particle itself)
+// coordinates) and K^2, the list entry (-1: the drawn particle itself; its neighbour index is read
+// for the colour only)
 vec3 prKernelRay[PR_METABALL_KERNELS];
 vec4 prKernelCenter[PR_METABALL_KERNELS];
 int prKernelId[PR_METABALL_KERNELS];
@@ -136,7 +137,7 @@ void prGatherKernels(int id, float radiusVC, vec3 s, vec3 d)
   {
     vec4 entry = prMetaballEntries[e];
     prAddKernel(prModelToViewLinear * entry.xyz, prInfluenceFactor * prNeighbourRadiusScale * entry.w,
-      prMetaballIds[e], s, d);
+      e, s, d);
   }
 }
 
@@ -236,7 +237,7 @@ vec4 prMetaballColor(vec3 x, vec4 ownColor)
     vec3 rel = x - c.xyz;
     float q = max(1.0 - dot(rel, rel) / c.w, 0.0);
     float w = q * q;
-    int id = prKernelId[j];
+    int id = prKernelId[j] < 0 ? -1 : prMetaballIds[prKernelId[j]];
     sum += w * (id < 0 ? ownColor : prUnpackColor(prMetaballColors[id]));
     weights += w;
   }

@@ -10,7 +10,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkParticleOcclusionCuller.h"
 #include "vtkTextureObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkParticleComputeProgram.h"
@@ -27,6 +30,7 @@
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +54,19 @@ const char* const ExtensionLine = "#extension GL_ARB_shader_storage_buffer_objec
 // bytes of a list entry (centre offset and radius, neighbour index) and per particle (range)
 const double EntryBytes = 20.0;
 const double ParticleBytes = 8.0;
+// the shader variants: the final draw (vicinity in one pass; the walking plane's shading), the
+// walking plane's splat passes, the vicinity pre-pass's iso-spheres and the vicinity draw
+// limited by the pre-pass's depth
+enum ShaderVariant
+{
+  FinalDraw = 0,
+  WalkingSplat = 1,
+  VicinitySpheres = 2,
+  VicinityLimited = 3
+};
+// window-depth margin of the pre-pass limit (as vtkParticleOcclusionCuller's DepthMargin): far
+// above the float rounding of the depths the shaders write
+const float PrePassDepthMargin = 1.0f / 1048576.0f;
 }
 
 //------------------------------------------------------------------------------
@@ -89,7 +106,9 @@ public:
   std::vector<std::int32_t> Ranges; // first, count per uploaded particle
   std::vector<float> Entries;       // offset (3), radius per entry
   std::vector<std::int32_t> Ids;    // neighbour per entry
-  vtkNew<vtkFloatArray> Flags;      // 1: has neighbours (the vertex attribute metaballMC)
+  // the vertex attribute metaballMC: 0 isolated, n > 0 the length of a complete list, -1 a list
+  // that was cut
+  vtkNew<vtkFloatArray> Flags;
   vtkNew<vtkFloatArray> NoFlags;    // all 0: without shader storage every particle is a sphere
   std::vector<float> CullingRadii;
   std::string LastListWarning;
@@ -110,8 +129,11 @@ public:
   // shaders blend scalar colours, the smallest positive radius (model units, before scaling)
   vtkNew<vtkMetaballWalkingPlane> Plane;
   int Pass = 0;
-  bool Splat = false;      // the splat passes' shader variant is wanted
-  bool BuiltSplat = false; // and was built
+  int Variant = FinalDraw;      // the shader variant wanted (ShaderVariant)
+  int BuiltVariant = FinalDraw; // and built
+  // the vicinity pre-pass: the depth of the iso-spheres, its viewport origin
+  vtkNew<vtkTextureObject> PrePassDepth;
+  int PrePassOrigin[2] = { 0, 0 };
   bool WalkingColors = false;
   double SmallestRadius = 0.0;
   double AnchorMC[3] = { 0.0, 0.0, 0.0 }; // lambda's origin: the centre of the positions' bounds
@@ -438,7 +460,7 @@ void vtkMetaballMapper::UpdateNeighborLists()
         const std::int32_t kept = std::min(count, cap);
         internals.Ranges[2 * i] = static_cast<std::int32_t>(out);
         internals.Ranges[2 * i + 1] = kept;
-        flags[i] = kept > 0 ? 1.0f : 0.0f;
+        flags[i] = kept == 0 ? 0.0f : (kept == count ? static_cast<float>(kept) : -1.0f);
         // the culler tests a sphere containing the imposter: the influence sphere (the
         // iso-sphere of an isolated particle is inside it for every IsoValue)
         internals.CullingRadii[i] = static_cast<float>(k * r[i]);
@@ -669,11 +691,11 @@ void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string&
     "  prWalkingCenterZVSOutput = (mat3(MCVCMatrix) * (vertexMC.xyz - prWalkingAnchor)).z;");
   const bool colors = fs.find("vertexColorVSOutput") != std::string::npos;
   internals.WalkingColors = colors;
-  internals.BuiltSplat = internals.Splat;
+  internals.BuiltVariant = internals.Variant;
   hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "//PR::Include MetaballWalking");
   std::ostringstream surface;
   surface << "vec4 prMetaballRGBA = " << (colors ? "vertexColorVSOutput" : "vec4(1.0)") << ";\n";
-  if (internals.Splat)
+  if (internals.Variant == WalkingSplat)
   {
     // The splat passes' variant returns early with its contribution. It writes no depth and
     // its triangles are at depth 0.5, so that the depth test rejects the finished pixels
@@ -723,16 +745,56 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
   vtkParticleShaderHooks& hooks = internals.Hooks;
   using Hooks = vtkParticleShaderHooks;
   (void)vs;
-  // The imposter: the influence sphere (k R) with neighbours, else the iso-sphere.
+  internals.BuiltVariant = internals.Variant;
+  if (internals.Variant == VicinitySpheres)
+  {
+    // the pre-pass: every particle's own iso-sphere, a plain sphere of the core
+    hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", "uniform float prIsolatedScale;");
+    hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
+      "radiusVC *= prIsolatedScale;\n"
+      "  centerRadiusVCVSOutput.w = radiusVC;");
+    return;
+  }
+  const bool limited = internals.Variant == VicinityLimited;
+  // The imposter: an isolated particle's iso-sphere; else the part of the influence sphere
+  // (k R) where the particle can hold the largest kernel of a surface point. There the field
+  // is IsoValue, summed over at most 1 + n kernels (its n neighbours reach it, no other
+  // particle), so the largest is at least IsoValue / (1 + n): c (1 - r^2/K^2)^2 >= IsoValue /
+  // (1 + n), r <= K sqrt(1 - sqrt(IsoValue / (c (1 + n)))). Every surface point lies in the
+  // sphere of the particle with its largest kernel, whose search finds it (the first crossing
+  // on the whole ray is the first in that chord). The bound is reached where the largest kernel
+  // is shared by all (coincident particles), so the sphere is 0.02 R larger: the search must
+  // start outside the surface there. A cut list (-1) keeps the influence sphere.
+  // prMetaballVSOutput: the drawn radius over R for these particles, 0 for isolated ones.
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec",
     "in float metaballMC;\n"
     "uniform float prInfluenceFactor;\n"
-    "uniform float prIsolatedScale;");
+    "uniform float prIsolatedScale;\n"
+    "uniform float prIsoOverKernelScale; // IsoValue / c");
   hooks.AddSphereVarying("float", "prMetaball");
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
-    "radiusVC *= metaballMC > 0.5 ? prInfluenceFactor : prIsolatedScale;\n"
+    "float prScale = prIsolatedScale;\n"
+    "  if (metaballMC != 0.0)\n"
+    "  {\n"
+    "    prScale = prInfluenceFactor;\n"
+    "    if (metaballMC > 0.0)\n"
+    "    {\n"
+    "      prScale = min(prScale,\n"
+    "        prScale * sqrt(max(1.0 - sqrt(prIsoOverKernelScale / (1.0 + metaballMC)), 0.0)) + 0.02);\n"
+    "    }\n"
+    "  }\n"
+    "  radiusVC *= prScale;\n"
     "  centerRadiusVCVSOutput.w = radiusVC;\n"
-    "  prMetaballVSOutput = metaballMC;");
+    "  prMetaballVSOutput = metaballMC != 0.0 ? prScale : 0.0;");
+  if (limited)
+  {
+    // isolated particles are final in the pre-pass
+    hooks.Insert(Hooks::Geometry, "//PR::Sphere::Cull",
+      "if (!(prMetaballVSOutput[0] > 0.0))\n"
+      "  {\n"
+      "    return;\n"
+      "  }");
+  }
 
   if (internals.Supported)
   {
@@ -742,6 +804,12 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
     if (colors)
     {
       dec << "#define PR_METABALL_COLORS\n";
+    }
+    if (limited)
+    {
+      dec << "uniform sampler2D prPrePassDepth; // window depth of the pre-pass's iso-spheres\n"
+             "uniform ivec2 prPrePassOrigin;    // its viewport's lower left pixel\n"
+             "uniform float prPrePassMargin;\n";
     }
     dec << "//PR::Include Metaballs\n"
            "layout(depth_greater) out float gl_FragDepth;";
@@ -758,9 +826,9 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
          "  vec4 prMetaballRGBA = "
       << (colors ? "vertexColorVSOutput" : "vec4(1.0)")
       << ";\n"
-         "  if (prHit && prMetaballVSOutput > 0.5)\n"
+         "  if (prHit && prMetaballVSOutput > 0.0)\n"
          "  {\n"
-         "    float prRadius = radiusVC / prInfluenceFactor;\n"
+         "    float prRadius = radiusVC / prMetaballVSOutput;\n"
          "    // the search starts where the chord enters the influence sphere, or on the near\n"
          "    // plane when that cuts it (clip z + w = 0, affine along the ray)\n"
          "    vec2 prZW0 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
@@ -776,11 +844,34 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
          "      prTLo = -prF0 / prF1;\n"
          "      prNearCut = true;\n"
          "    }\n"
-         "    prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD);\n"
+         "    float prTHi = prT1;\n";
+    if (limited)
+    {
+      // The pre-pass's iso-spheres lie inside the surface, so the surface is never behind
+      // their depth: the chord ends there (clip z - ndc w is affine along the ray), and a
+      // fragment whose chord starts behind it is dropped before it gathers its kernels.
+      surface << "    float prLimitNDC = 2.0 * (texelFetch(prPrePassDepth,\n"
+                 "      ivec2(gl_FragCoord.xy) - prPrePassOrigin, 0).r + prPrePassMargin) - 1.0;\n"
+                 "    float prG0 = prZW0.x - prLimitNDC * prZW0.y;\n"
+                 "    float prG1 = (prZW1.x - prLimitNDC * prZW1.y) - prG0;\n"
+                 "    if (prG0 + prG1 * prTLo > 0.0)\n"
+                 "    {\n"
+                 "      prTHi = prTLo;\n"
+                 "    }\n"
+                 "    else if (prG1 > 0.0)\n"
+                 "    {\n"
+                 "      prTHi = min(prTHi, -prG0 / prG1);\n"
+                 "    }\n";
+    }
+    surface
+      << "    prHit = prTLo < prTHi;\n"
          "    float prTHit;\n"
-         "    prHit = prTLo < prT1 &&\n"
-         "      prMetaballSearch(prTLo, prT1, prRadius, prTHit, prMetaballInside) &&\n"
-         "      (prNearCut || !prMetaballInside);\n"
+         "    if (prHit)\n"
+         "    {\n"
+         "      prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD);\n"
+         "      prHit = prMetaballSearch(prTLo, prTHi, prRadius, prTHit, prMetaballInside) &&\n"
+         "        (prNearCut || !prMetaballInside);\n"
+         "    }\n"
          "    if (prHit)\n"
          "    {\n"
          "      prT0 = prTHit;\n"
@@ -794,7 +885,7 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
                "  }";
     hooks.Insert(Hooks::Fragment, "//PR::Surface::Impl", surface.str());
     hooks.Insert(Hooks::Fragment, "//PR::Surface::Normal",
-      "if (prMetaballVSOutput > 0.5)\n"
+      "if (prMetaballVSOutput > 0.0)\n"
       "  {\n"
       "    normalVCVSOutput = prMetaballNormal(hitRel);\n"
       "    if (dot(normalVCVSOutput, prRayD) > 0.0)\n"
@@ -830,6 +921,8 @@ void vtkMetaballMapper::SetMapperShaderParameters(
   }
   program->SetUniformf(
     "prIsolatedScale", static_cast<float>(IsolatedRadiusFactor(k, this->IsoValue)));
+  program->SetUniformf(
+    "prIsoOverKernelScale", static_cast<float>(this->IsoValue / KernelScale(k)));
   if (!internals.Supported || !program->IsUniformUsed("prKernelScale"))
   {
     return;
@@ -860,6 +953,12 @@ void vtkMetaballMapper::SetMapperShaderParameters(
     }
   }
   program->SetUniformMatrix3x3("prModelToViewLinear", linear);
+  if (internals.Variant == VicinityLimited)
+  {
+    program->SetUniformi("prPrePassDepth", internals.PrePassDepth->GetTextureUnit());
+    program->SetUniform2i("prPrePassOrigin", internals.PrePassOrigin);
+    program->SetUniformf("prPrePassMargin", PrePassDepthMargin);
+  }
 
   // the storage blocks
   const unsigned int handle = static_cast<unsigned int>(program->GetHandle());
@@ -948,7 +1047,7 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
   vtkTextureObject* planeTexture = plane->GetPlaneTexture();
   if (plane->Begin(ren))
   {
-    internals.Splat = true;
+    internals.Variant = WalkingSplat;
     internals.Pass = 1;
     plane->StartInitialization();
     this->Superclass::RenderPieceDraw(ren, act);
@@ -971,7 +1070,7 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
     plane->End();
 
     // the final draw
-    internals.Splat = false;
+    internals.Variant = FinalDraw;
     internals.Pass = 0;
     plane->GetGradientTexture()->Activate();
     if (internals.WalkingColors)
@@ -990,13 +1089,94 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+bool vtkMetaballMapper::RenderVicinityWithPrePass(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* context = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!this->DepthPrePass || !internals.Supported || !context ||
+    this->NumberOfIsolatedParticles >= this->Primitives[PrimitiveTris].IBO->IndexCount)
+  {
+    return false; // not wanted, no lists, or nothing but isolated particles (one pass is all)
+  }
+  // the depth must be a plain single-sampled [0, 1] depth buffer that the draws test and write
+  vtkOpenGLState* ostate = context->GetState();
+  GLboolean depthMask = GL_FALSE;
+  ostate->vtkglGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  GLint depthFunc = GL_LESS;
+  ostate->vtkglGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  GLfloat range[2] = { 0.0f, 1.0f };
+  glGetFloatv(GL_DEPTH_RANGE, range);
+  if (!ostate->GetEnumState(GL_DEPTH_TEST) || !depthMask ||
+    (depthFunc != GL_LESS && depthFunc != GL_LEQUAL) || samples > 0 || range[0] != 0.0f ||
+    range[1] != 1.0f)
+  {
+    return false;
+  }
+  GLint viewport[4] = { 0, 0, 0, 0 };
+  ostate->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  if (viewport[2] <= 0 || viewport[3] <= 0)
+  {
+    return false;
+  }
+
+  // the iso-spheres
+  internals.Variant = VicinitySpheres;
+  this->Superclass::RenderPieceDraw(ren, act);
+
+  // their depth, copied from the bound framebuffer
+  vtkTextureObject* depth = internals.PrePassDepth;
+  if (depth->GetContext() != context)
+  {
+    depth->SetContext(context);
+  }
+  if (static_cast<int>(depth->GetWidth()) != viewport[2] ||
+    static_cast<int>(depth->GetHeight()) != viewport[3] || !depth->GetHandle())
+  {
+    depth->SetMinificationFilter(vtkTextureObject::Nearest);
+    depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!depth->AllocateDepth(static_cast<unsigned int>(viewport[2]),
+          static_cast<unsigned int>(viewport[3]), vtkTextureObject::Float32))
+    {
+      vtkErrorMacro("Cannot allocate the depth pre-pass texture; the influence spheres are drawn"
+                    " without it.");
+      return false; // (drawn again by the one-pass variant, over the iso-spheres)
+    }
+  }
+  GLint drawFramebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  ostate->PushReadFramebufferBinding();
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(drawFramebuffer));
+  depth->Bind();
+  glCopyTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->PopReadFramebufferBinding();
+  internals.PrePassOrigin[0] = viewport[0];
+  internals.PrePassOrigin[1] = viewport[1];
+
+  // the influence spheres, searched in front of that depth
+  internals.Variant = VicinityLimited;
+  depth->Activate();
+  vtkParticleOcclusionCuller* culler = this->GetOcclusionCuller();
+  culler->DepthPrimedOn();
+  this->Superclass::RenderPieceDraw(ren, act);
+  culler->DepthPrimedOff();
+  depth->Deactivate();
+  internals.Variant = FinalDraw;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkMetaballMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
-  // the walking depth plane switches between its two variants twice per frame (the shader
-  // cache keeps both programs compiled)
+  // the walking depth plane and the vicinity pre-pass switch between two variants twice per
+  // frame (the shader cache keeps both programs compiled)
   return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
-    (this->Method == WALKING_DEPTH_PLANE && this->Internals->Splat != this->Internals->BuiltSplat);
+    this->Internals->Variant != this->Internals->BuiltVariant;
 }
 
 //------------------------------------------------------------------------------
@@ -1019,7 +1199,12 @@ void vtkMetaballMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     this->RenderWalkingPlane(ren, act);
     return;
   }
-  this->Superclass::RenderPieceDraw(ren, act);
+  this->LastDrawUsedDepthPrePass = this->RenderVicinityWithPrePass(ren, act);
+  if (!this->LastDrawUsedDepthPrePass)
+  {
+    this->Internals->Variant = FinalDraw;
+    this->Superclass::RenderPieceDraw(ren, act);
+  }
   if (this->Internals->Supported)
   {
     for (unsigned int binding : { RangeBinding, EntryBinding, IdBinding, ColorBinding })
@@ -1037,6 +1222,7 @@ void vtkMetaballMapper::ReleaseGraphicsResources(vtkWindow* window)
   const bool current = context && vtkParticleComputeProgram::MakeCurrentForRelease(context);
   internals.ReleaseBuffers(current);
   internals.Plane->ReleaseGraphicsResources(window);
+  internals.PrePassDepth->ReleaseGraphicsResources(window);
   internals.Context = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -1049,6 +1235,7 @@ void vtkMetaballMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "InfluenceFactor: " << this->InfluenceFactor << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "RefinementSteps: " << this->RefinementSteps << "\n";
   os << indent << "IterationLimit: " << this->IterationLimit << "\n";

@@ -28,9 +28,15 @@
  *   IsoValue, colours or material change.
  * - A particle without neighbours is drawn by the plain sphere imposter of the core, with the
  *   radius of its own iso-sphere, k R sqrt(1 - sqrt(IsoValue / c)) (R for IsoValue 1): exact.
- * - The others draw their influence sphere. The fragment gathers the kernels its ray meets and
- *   finds the first crossing of the iso-value in the ray's chord through the influence sphere
- *   (Shaders/Metaballs.glsl). Along a ray every kernel is unimodal, so every interval has
+ * - The others draw the part of their influence sphere where they can hold the largest kernel
+ *   of a surface point: there the field is IsoValue, a sum of at most 1 + n kernels (n: the
+ *   particle's list; no other particle reaches it), so the largest kernel is at least
+ *   IsoValue / (1 + n), which bounds the radius to K sqrt(1 - sqrt(IsoValue / (c (1 + n))))
+ *   (+ 0.02 R, as coincident particles reach the bound; the whole influence sphere for a list
+ *   that was cut). Every surface point lies in the sphere of the particle with its largest
+ *   kernel. With k = 2 and IsoValue 1 a particle with 1 neighbour draws 1.39 R instead of
+ *   2 R, one with 15 neighbours 1.82 R. The fragment gathers the kernels its ray meets and
+ *   finds the first crossing of the iso-value in the ray's chord (Shaders/Metaballs.glsl). Along a ray every kernel is unimodal, so every interval has
  *   certified bounds of the field (the sums of the kernels' maxima and minima over it). The
  *   chord is subdivided depth first, left half first: an interval that cannot hold a crossing
  *   is passed whole, the others are halved down to Tolerance x R, where the field at the
@@ -43,6 +49,14 @@
  *   normals by their density share; the gradient is the surface's true normal and costs the
  *   same). Colour: the scalar colours of the particles blended by their field contribution D_j
  *   at the hit (the paper's weights), so colour by type shows which atoms form which part.
+ * - Depth pre-pass (DepthPrePass, default on; our addition to Sec. 3.1): every particle's own
+ *   iso-sphere is drawn first by the core. It lies inside the surface (the other kernels only
+ *   add), so the surface is never behind its depth: the depth is copied to a texture, the
+ *   influence spheres' fragments search only in front of it and are dropped before gathering
+ *   their kernels when their chord starts behind it, and the occlusion culler skips the cells
+ *   hidden behind the iso-spheres. Where the iso-sphere is the surface (only the particle's own
+ *   kernel there) its pixel is already right. LAMMPS droplets (1.1e4 atoms, llvmpipe): 3.7x
+ *   faster, depths within 3e-5 R of the one-pass draw.
  * - True depth is written (composites with other geometry; ambient occlusion passes see it).
  * - Where the near plane cuts a metaball the search starts on the near plane and, inside,
  *   finds the exit: the inner side is shown, lit facing the viewer (as the sphere core does).
@@ -181,6 +195,25 @@ public:
 
   ///@{
   /**
+   * Vicinity method: draw every particle's own iso-sphere first (exact where the particle is
+   * isolated, inside the surface elsewhere, since the other kernels only add), copy the depth,
+   * and let each influence-sphere fragment search only in front of that depth: fragments whose
+   * chord starts behind it are dropped before they gather their kernels, and the occlusion
+   * culler skips the cells hidden behind the spheres. The picture is the same (up to the
+   * search's tolerance). Default on. Not used with a multisampled framebuffer, without depth
+   * test or depth writes, or with a depth range other than [0, 1] (one pass then).
+   */
+  vtkSetMacro(DepthPrePass, bool);
+  vtkGetMacro(DepthPrePass, bool);
+  vtkBooleanMacro(DepthPrePass, bool);
+  /**
+   * Whether the last vicinity draw used the depth pre-pass.
+   */
+  vtkGetMacro(LastDrawUsedDepthPrePass, bool);
+  ///@}
+
+  ///@{
+  /**
    * Most neighbours per list (the nearest are kept). Default 64, clamped to [1, 255]; it is
    * also the size of the fragment stage's kernel array.
    */
@@ -295,6 +328,9 @@ protected:
   void SetWalkingShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
   void RenderWalkingPlane(vtkRenderer* ren, vtkActor* act);
 
+  // the vicinity method with its depth pre-pass; false when the pre-pass cannot be used
+  bool RenderVicinityWithPrePass(vtkRenderer* ren, vtkActor* act);
+
   // (re)build the neighbour lists of the uploaded particles when what they depend on changed
   void UpdateNeighborLists();
 
@@ -306,6 +342,8 @@ protected:
   int IterationLimit = 100;
   int MaximumNumberOfNeighbors = 64;
   double MaximumListMemory = 1024.0;
+  bool DepthPrePass = true;
+  bool LastDrawUsedDepthPrePass = false;
   double WalkingTolerance = 1e-3;
   int StepOracle = BRACKETING_ORACLE;
   double MaximumStepFactor = 1.0;

@@ -707,7 +707,7 @@ bool vtkParticleOcclusionCuller::Draw(vtkRenderer* ren, vtkShaderProgram* progra
       ++next;
     }
     phaseCells.clear();
-    if (phase == 0)
+    if (phase == 0 && !this->DepthPrimed)
     {
       phaseCells.assign(internals.Order.begin() + begin, internals.Order.begin() + next);
     }
@@ -815,6 +815,7 @@ void vtkParticleOcclusionCuller::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfCells: " << this->MaximumNumberOfCells << "\n";
   os << indent << "BlockSize: " << this->BlockSize << "\n";
   os << indent << "DepthMargin: " << this->DepthMargin << "\n";
+  os << indent << "DepthPrimed: " << this->DepthPrimed << "\n";
   os << indent << "NumberOfCells: " << this->NumberOfCells << "\n";
   os << indent << "NumberOfParticles: " << this->NumberOfParticles << "\n";
   os << indent << "LastNumberOfDrawnParticles: " << this->LastNumberOfDrawnParticles << "\n";

@@ -81,6 +81,18 @@ public:
   vtkGetMacro(DepthMargin, double);
   ///@}
 
+  ///@{
+  /**
+   * The depth buffer already bounds what Draw() will draw (a pre-pass drew something that lies
+   * in front of it, e.g. vtkMetaballMapper's iso-spheres before the influence spheres): the depth
+   * is read before the first phase too, so that cells hidden by the pre-pass are skipped from
+   * the start. Default off (the first phase is drawn without a read-back).
+   */
+  vtkSetMacro(DepthPrimed, bool);
+  vtkGetMacro(DepthPrimed, bool);
+  vtkBooleanMacro(DepthPrimed, bool);
+  ///@}
+
   /**
    * Partition `count` particles (positions in model coordinates, radii in model units; a
    * particle with radius <= 0 or a non-finite position is left out, as the sphere core does not
@@ -148,6 +160,7 @@ protected:
   int MaximumNumberOfCells = 4096;
   int BlockSize = 8;
   double DepthMargin = 1.0 / 1048576.0;
+  bool DepthPrimed = false;
   int NumberOfCells = 0;
   vtkIdType NumberOfParticles = 0;
   vtkIdType LastNumberOfDrawnParticles = 0;

@@ -133,7 +133,8 @@ def compare(window, renderer, actor, radius, normals=False):
     (mean, p99, max over the covered pixels), max_window (the largest window-depth difference
     outside silhouettes: the depth buffer's own resolution is 2^-24), silhouette (covered pixels whose reference depth
     jumps by more than one radius to a neighbour: ill-conditioned, counted apart), max_smooth
-    (the largest error elsewhere), and with normals=True the normal angle errors in degrees."""
+    (the largest error elsewhere), the masks both and smooth (covered, not silhouette), the GPU's
+    view depth gpu_depth, and with normals=True the normal angle errors in degrees."""
     width, height = window.GetSize()
     reference = pr.vtkParticleReferenceRenderer()
     reference.SetRenderer(renderer)
@@ -173,6 +174,8 @@ def compare(window, renderer, actor, radius, normals=False):
         "reference": reference,
         "error": err,
         "both": both,
+        "smooth": both & ~silhouette,
+        "gpu_depth": gt,
     }
     if normals:
         nr = vtk_to_numpy(reference.GetNormalImage().GetPointData().GetScalars()).reshape(-1, 3)
