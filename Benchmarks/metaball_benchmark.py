@@ -6,13 +6,15 @@ Tables (Benchmarks/results/metaball_*.csv, plot metaball_benchmark.png):
 - metaball_frames.csv: per scene (the LAMMPS droplets tiled 1x and 2x, 1.1e4 and 8.8e4 atoms; a
   gas with 10 % or 90 % of the atoms in clusters, the paper's Sim-1 / Sim-3 contrast) the frame
   time of the opaque sphere core and of the metaballs while only the camera moves (the vicinity
-  method; the walking depth plane walked to convergence, with its passes), the vicinity
-  method's neighbour-list build (the per-time-step cost besides the upload) and the list size.
+  method, with its depth pre-pass and in one pass; the walking depth plane walked to
+  convergence, with its passes), the vicinity method's neighbour-list build (the per-time-step cost besides the upload) and the list size.
 - metaball_accuracy.csv: depth error (units of the radius) and normal error (degrees) of the
   metaballs against the exact surface, and the frame time, versus Tolerance, RefinementSteps
   and IterationLimit (vicinity) and WalkingTolerance, MaximumPasses, TimeBudget and the step
   oracle (walking depth plane; droplets, 1.1e4 atoms).
-- metaball_peer.csv: the peer at grid resolutions 64..256: vtkGaussianSplatter (ParaView's
+- metaball_peer.csv: per time step of the droplets 1x and 2x (8.8e4 atoms, the issue's 1e5
+  scale), vtkMetaballMapper (list build + frame after the positions changed) and the peer at
+  grid resolutions 64..384: vtkGaussianSplatter (ParaView's
   "Gaussian Resampling") onto the grid, vtkFlyingEdges3D, rendering; its time per time step and
   the depth error of contouring the exact metaball field sampled on that grid (the best a grid
   method of that resolution can do), against the same reference.
@@ -153,6 +155,82 @@ def exact_field_grid(xyz, radius, k, bounds, resolution):
     return image
 
 
+def peer_rows(name, xyz, radius, kind, resolutions):
+    """Per time step of the scene: vtkMetaballMapper (the vicinity method: list build, upload and
+    the frame after the positions changed) and the peer at each grid resolution (the splat that
+    ParaView's Gaussian Resampling does, timed; the contour of the exact field on that grid, the
+    best a grid of that resolution can do; the render), with the mean depth error (R) against
+    the exact surface."""
+    data = polydata(xyz, radius, kind)
+    r_mean = float(np.mean(radius))
+    mapper = pr.vtkMetaballMapper()
+    actor, renderer, window = view(mapper, data)
+    window.Render()
+    reference = pr.vtkParticleReferenceRenderer()
+    reference.SetRenderer(renderer)
+    reference.SetActor(actor)
+    reference.SetImageSize(*SIZE)
+    reference.Render()
+    ref_t = vtk_to_numpy(reference.GetViewDepthImage().GetPointData().GetScalars()).copy()
+
+    def error_row(method, resolution, step_s, **extra):
+        gt = gpu_view_depth(window, reference)
+        both = (gt >= 0) & (ref_t >= 0)
+        err = np.abs(gt - ref_t)[both] / r_mean
+        row = {"scene": name, "atoms": len(xyz), "method": method, "resolution": resolution,
+               "splat_s": "", "contour_s": "", "render_s": "", "step_s": round(step_s, 3),
+               "triangles": "", "depth_mean_R": "%.3g" % err.mean(),
+               "depth_p99_R": "%.3g" % np.percentile(err, 99),
+               "coverage_differs": int(((gt >= 0) != (ref_t >= 0)).sum())}
+        row.update(extra)
+        print(row, flush=True)
+        return row
+
+    # ours: a new time step (the positions changed: the lists are rebuilt) and its frame
+    steps = []
+    for _ in range(3):
+        data.GetPoints().Modified()
+        start = time.time()
+        window.Render()
+        steps.append(time.time() - start)
+    rows = [error_row("vtkMetaballMapper vicinity", "", min(steps),
+                      render_s=round(min(steps) - mapper.GetLastListBuildSeconds(), 3))]
+    bounds = mapper.GetBounds()
+    for resolution in resolutions:
+        splat = vtkGaussianSplatter()
+        splat.SetInputData(data)
+        splat.SetSampleDimensions(resolution, resolution, resolution)
+        splat.SetModelBounds(bounds)
+        splat.SetRadius(2.0 * r_mean / (bounds[1] - bounds[0]))
+        splat.ScalarWarpingOff()
+        start = time.time()
+        splat.Update()
+        splat_s = time.time() - start
+        del splat
+        grid = exact_field_grid(xyz, radius, 2.0, bounds, resolution)
+        contour = vtkFlyingEdges3D()
+        contour.SetInputData(grid)
+        contour.SetValue(0, 1.0)
+        contour.ComputeNormalsOn()
+        start = time.time()
+        contour.Update()
+        contour_s = time.time() - start
+        surface = vtkPolyDataMapper()
+        surface.SetInputData(contour.GetOutput())
+        surface.ScalarVisibilityOff()
+        actor.SetMapper(surface)
+        start = time.time()
+        window.Render()
+        render_s = time.time() - start
+        rows.append(error_row("grid + vtkFlyingEdges3D", resolution,
+                              splat_s + contour_s + render_s, splat_s=round(splat_s, 3),
+                              contour_s=round(contour_s, 3), render_s=round(render_s, 3),
+                              triangles=contour.GetOutput().GetNumberOfCells()))
+        actor.SetMapper(mapper)
+        del grid, contour, surface
+    return rows
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--out", default=os.path.join(HERE, "results"))
@@ -174,6 +252,10 @@ def main():
         metaballs = pr.vtkMetaballMapper()
         _, renderer, window = view(metaballs, data)
         metaball_s = frame_seconds(window, renderer, frames)
+        one_pass = pr.vtkMetaballMapper()
+        one_pass.SetDepthPrePass(False)
+        _, renderer, window = view(one_pass, data)
+        one_pass_s = frame_seconds(window, renderer, frames)
         plane = walking(pr.vtkMetaballMapper())
         _, renderer, window = view(plane, data)
         walking_s = frame_seconds(window, renderer, frames)
@@ -181,6 +263,8 @@ def main():
         rows.append({"scene": name, "atoms": len(xyz), "core_frame_s": round(core_s, 4),
                      "metaball_frame_s": round(metaball_s, 4),
                      "ratio": round(metaball_s / core_s, 2),
+                     "one_pass_frame_s": round(one_pass_s, 4),
+                     "one_pass_ratio": round(one_pass_s / core_s, 2),
                      "walking_frame_s": round(walking_s, 4),
                      "walking_ratio": round(walking_s / core_s, 2),
                      "walking_passes": walk.GetNumberOfPasses(),
@@ -227,55 +311,13 @@ def main():
         writer.writeheader()
         writer.writerows(rows)
 
-    # ---- the peer: a grid and a contour, at several resolutions (droplets 1x)
-    mapper = pr.vtkMetaballMapper()
-    actor, renderer, window = view(mapper, data)
-    window.Render()
-    reference = pr.vtkParticleReferenceRenderer()
-    reference.SetRenderer(renderer)
-    reference.SetActor(actor)
-    reference.SetImageSize(*SIZE)
-    reference.Render()
-    ref_t = vtk_to_numpy(reference.GetViewDepthImage().GetPointData().GetScalars()).copy()
-    bounds = mapper.GetBounds()
+    # ---- the peer: a grid and a contour, at several resolutions, per time step; and ours
     rows = []
-    for resolution in ((64, 128) if args.quick else (64, 128, 192, 256)):
-        splat = vtkGaussianSplatter()
-        splat.SetInputData(data)
-        splat.SetSampleDimensions(resolution, resolution, resolution)
-        splat.SetModelBounds(bounds)
-        splat.SetRadius(2.0 * r_mean / (bounds[1] - bounds[0]))
-        splat.ScalarWarpingOff()
-        start = time.time()
-        splat.Update()
-        splat_s = time.time() - start
-        grid = exact_field_grid(xyz, radius, 2.0, bounds, resolution)
-        contour = vtkFlyingEdges3D()
-        contour.SetInputData(grid)
-        contour.SetValue(0, 1.0)
-        contour.ComputeNormalsOn()
-        start = time.time()
-        contour.Update()
-        contour_s = time.time() - start
-        surface = vtkPolyDataMapper()
-        surface.SetInputData(contour.GetOutput())
-        surface.ScalarVisibilityOff()
-        actor.SetMapper(surface)
-        start = time.time()
-        window.Render()
-        render_s = time.time() - start
-        gt = gpu_view_depth(window, reference)
-        both = (gt >= 0) & (ref_t >= 0)
-        err = np.abs(gt - ref_t)[both] / r_mean
-        rows.append({"resolution": resolution, "splat_s": round(splat_s, 3),
-                     "contour_s": round(contour_s, 3), "render_s": round(render_s, 3),
-                     "step_s": round(splat_s + contour_s + render_s, 3),
-                     "triangles": contour.GetOutput().GetNumberOfCells(),
-                     "depth_mean_R": "%.3g" % err.mean(), "depth_p99_R":
-                     "%.3g" % np.percentile(err, 99),
-                     "coverage_differs": int(((gt >= 0) != (ref_t >= 0)).sum())})
-        print(rows[-1], flush=True)
-        actor.SetMapper(mapper)
+    for name, k, resolutions in (("droplets 1x", 1, (64, 128, 192, 256)),
+                                 ("droplets 2x", 2, (128, 256, 384))):
+        if args.quick:
+            resolutions = resolutions[:2]
+        rows += peer_rows(name, *droplets(k), resolutions)
     with open(os.path.join(args.out, "metaball_peer.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
@@ -299,15 +341,21 @@ def plot(out):
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
     ax = axes[0]
     x = np.arange(len(frames))
-    ax.bar(x - 0.2, [float(r["ratio"]) for r in frames], 0.4, label="vicinity")
-    ax.bar(x + 0.2, [float(r["walking_ratio"]) for r in frames], 0.4,
+    ax.bar(x - 0.27, [float(r["ratio"]) for r in frames], 0.27, label="vicinity")
+    ax.bar(x, [float(r["one_pass_ratio"]) for r in frames], 0.27,
+           label="vicinity without the depth pre-pass")
+    ax.bar(x + 0.27, [float(r["walking_ratio"]) for r in frames], 0.27,
            label="walking depth plane (to convergence)")
     for i, r in enumerate(frames):
-        ax.annotate("%s passes" % r["walking_passes"], (i + 0.2, float(r["walking_ratio"])),
+        ax.annotate("%s passes" % r["walking_passes"], (i + 0.27, float(r["walking_ratio"])),
                     fontsize=7, ha="center")
+        ax.annotate("%.1fx" % float(r["ratio"]), (i - 0.27, float(r["ratio"])), fontsize=7,
+                    ha="center")
+    ax.set_yscale("log")
     ax.legend(fontsize=8)
     ax.set_xticks(range(len(frames)))
-    ax.set_xticklabels(["%s\n%s atoms" % (r["scene"], r["atoms"]) for r in frames], fontsize=7)
+    ax.set_xticklabels(["%s\n%s atoms" % (r["scene"].replace(" 10 %", "\n10 %").replace(
+        " 90 %", "\n90 %"), r["atoms"]) for r in frames], fontsize=7)
     ax.set_ylabel("metaball frame / opaque sphere core frame")
     ax.set_title("camera-only frames, llvmpipe, %dx%d" % SIZE)
     ax = axes[1]
@@ -328,26 +376,31 @@ def plot(out):
     ax.set_title("droplets 1x: error vs time per knob")
     ax.legend(fontsize=8)
     ax = axes[2]
-    ax.plot([float(r["step_s"]) for r in peer], [float(r["depth_mean_R"]) for r in peer], "s-",
-            label="grid + vtkFlyingEdges3D (peer)")
-    for r in peer:
-        ax.annotate("%s^3" % r["resolution"], (float(r["step_s"]), float(r["depth_mean_R"])),
-                    fontsize=7)
-    mine = [r for r in accuracy if r["knob"] == "Tolerance" and r["value"] == "0.01"]
-    droplet = frames[0]
-    if mine:
-        ax.plot([float(droplet["list_build_s"]) + float(mine[0]["frame_s"])],
-                [max(float(mine[0]["depth_mean_R"]), 1e-7)], "r*", markersize=12,
-                label="vtkMetaballMapper vicinity (list build + frame)")
+    for scene, color in (("droplets 1x", "C0"), ("droplets 2x", "C1")):
+        grid = [r for r in peer if r["scene"] == scene and r["resolution"]]
+        ours = [r for r in peer if r["scene"] == scene and not r["resolution"]]
+        if not grid:
+            continue
+        ax.plot([float(r["step_s"]) for r in grid], [float(r["depth_mean_R"]) for r in grid],
+                "s-", color=color,
+                label="%s (%s atoms): grid + vtkFlyingEdges3D" % (scene, grid[0]["atoms"]))
+        for r in grid:
+            ax.annotate("%s^3" % r["resolution"], (float(r["step_s"]), float(r["depth_mean_R"])),
+                        fontsize=7)
+        for r in ours:
+            ax.plot([float(r["step_s"])], [max(float(r["depth_mean_R"]), 1e-7)], "*",
+                    color=color, markersize=12,
+                    label="%s: vtkMetaballMapper vicinity (lists + frame)" % scene)
     walked = [r for r in accuracy if r["knob"] == "WalkingTolerance" and float(r["value"]) == 1e-3]
     if walked:
         ax.plot([float(walked[0]["frame_s"])], [max(float(walked[0]["depth_mean_R"]), 1e-7)],
-                "m*", markersize=12, label="vtkMetaballMapper walking depth plane (frame)")
+                "m*", markersize=12, label="droplets 1x: walking depth plane (frame)")
     ax.set_yscale("log")
+    ax.set_xscale("log")
     ax.set_xlabel("time per time step (s)")
     ax.set_ylabel("mean depth error (R)")
-    ax.set_title("a time step of the droplets: peer vs metaballs")
-    ax.legend(fontsize=8)
+    ax.set_title("a time step: peer vs metaballs")
+    ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "metaball_benchmark.png"), dpi=110)
 
