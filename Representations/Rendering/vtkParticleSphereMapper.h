@@ -313,7 +313,10 @@ protected:
    * Switch the default shift/scale method (AUTO_SHIFT_SCALE) to VTK's FOCAL_POINT_SHIFT_SCALE
    * while the data's extent puts the float spacing of one origin above a thousandth of the
    * smallest radius (a lost atom far from the rest), with a warning; back when the data no
-   * longer needs it. Called before each upload.
+   * longer needs it. Otherwise, when the float spacing at the data's centre is above a
+   * thousandth of the smallest radius (a lone small particle or a tight group away from the
+   * origin, which AUTO_SHIFT_SCALE leaves unshifted), to VTK's AUTO_SHIFT (positions relative to
+   * the centre of their bounds). Called before each upload.
    */
   void UpdateFocalPointShift();
 

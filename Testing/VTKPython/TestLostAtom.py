@@ -12,6 +12,12 @@ so once. Checked, against the cluster rendered alone (and the far atom alone), 2
   nothing while the focal point stays;
 - data without an outlier keeps VTK's default method and warns nothing.
 
+A lone small particle (or a tight group) away from the origin: radius 1e-6 at (1, 2, 3). VTK's
+automatic shift leaves a single point (or a group of small extent) unshifted, and the float view
+translation resolved 2^-23 of |(1, 2, 3)|: the depth was off by 0.48 R. Checked, opaque and
+translucent, one particle and four within 3e-6: the same picture as the scene moved to the origin
+(no pixel off by more than 2/255), and the opaque depth within 1e-3 R of the reference renderer.
+
 usage: python3 TestLostAtom.py
 """
 import sys
@@ -29,10 +35,12 @@ LOST = np.vstack([CLUSTER, FAR, [[np.nan, 0.0, 0.0]]])
 FOCAL_POINT_SHIFT_SCALE = 6
 
 
-def scene(xyz, translucent):
+def scene(xyz, translucent, radius=0.4):
+    """(mapper, renderer, window, messages) of the particles xyz, opaque or translucent, with
+    the cluster's camera."""
     mapper = (pr.vtkTransparentSphereMapper if translucent else pr.vtkParticleSphereMapper)()
     mapper.SetInputData(particles_from(xyz))
-    mapper.SetRadius(0.4)
+    mapper.SetRadius(radius)
     messages = Messages(mapper)
     actor = vtkActor()
     actor.SetMapper(mapper)
@@ -85,5 +93,36 @@ for translucent in (False, True):
     bad = wrong(far[2], lost[2])
     print("%s, at the lost atom: %d pixels wrong" % (kind, bad))
     check(bad == 0, "%s: the lost atom itself is off in %d pixels" % (kind, bad))
+
+# ---- a lone small particle (or a tight group) away from the origin
+from prMetaballTesting import compare  # noqa: E402
+
+TINY = 1e-6
+GROUPS = {"one particle": np.array([[0.0, 0.0, 0.0]]),
+          "four within 3e-6": np.array([[0.0, 0.0, 0.0], [2e-6, 0.0, 0.0], [0.0, 1.5e-6, 0.5e-6],
+                                        [1e-6, 1e-6, -1.5e-6]])}
+for name, group in GROUPS.items():
+    for translucent in (False, True):
+        kind = "translucent" if translucent else "opaque"
+        views = []
+        for origin in (np.zeros(3), np.array([1.0, 2.0, 3.0])):
+            mapper, renderer, window, _ = scene(group + origin, translucent, TINY)
+            camera = renderer.GetActiveCamera()
+            camera.SetFocalPoint(*(origin + [0.5e-6, 0.5e-6, 0.0]))
+            camera.SetPosition(*(origin + [3e-6, -2e-6, 8e-6]))
+            camera.SetClippingRange(1e-6, 2e-5)
+            window.Render()
+            views.append((window, renderer, renderer.GetActors().GetLastActor()))
+        bad = wrong(views[0][0], views[1][0])
+        covered = int((grab_image(views[0][0]).max(axis=1) > 0).sum())
+        print("tiny %s, %s: %d of %d covered pixels differ from the scene at the origin"
+              % (name, kind, bad, covered))
+        check(covered > 500 and bad == 0,
+              "tiny %s, %s: %d pixels off (covered %d)" % (name, kind, bad, covered))
+        if not translucent:
+            r = compare(*views[1], TINY)
+            print("tiny %s at (1, 2, 3): depth error max %.2e R outside silhouettes, coverage "
+                  "differs in %d + %d" % (name, r["max_smooth"], r["only_gpu"], r["only_ref"]))
+            check(r["max_smooth"] <= 1e-3, "tiny %s: depth off by %.2e R" % (name, r["max_smooth"]))
 
 sys.exit(finish())
