@@ -32,13 +32,14 @@ import numpy as np
 
 import particlerendering as pr
 from prMetaballTesting import compare, gpu_view_depth, type_lookup_table
+from prVTKTesting import actor_view
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 from vtkmodules.vtkImagingHybrid import vtkGaussianSplatter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+from vtkmodules.vtkRenderingCore import vtkPolyDataMapper
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -95,15 +96,7 @@ def view(mapper, data):
     mapper.SelectColorArray("type")
     mapper.SetLookupTable(type_lookup_table(1, 2))
     mapper.SetUseLookupTableScalarRange(1)
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)  # one sample per pixel, like the reference
-    window.SetSize(*SIZE)
-    window.AddRenderer(renderer)
+    actor, renderer, window = actor_view(mapper, SIZE)  # one sample per pixel, like the reference
     renderer.GetActiveCamera().SetPosition(-1.0, -1.4, 1.2)
     renderer.ResetCamera()
     renderer.GetActiveCamera().Zoom(1.6)

@@ -1,7 +1,9 @@
 //=========================================================================
 // Metaballs.glsl -- fragment stage of vtkMetaballMapper: the first crossing of
-// the metaball iso-surface along the fragment's ray inside the drawn particle's
-// influence sphere (Mueller, Grottel, Ertl 2007, Sec. 3.1 "vicinity" method).
+// the metaball iso-surface along the fragment's ray inside the sphere the particle
+// draws (the part of its influence sphere where it can hold a surface point's
+// largest kernel; ended at the depth pre-pass's depth, see vtkMetaballMapper)
+// (Mueller, Grottel, Ertl 2007, Sec. 3.1 "vicinity" method).
 //
 // Field (Eq. 2 with influence factor k): D_j(x) = c (1 - |x - c_j|^2 / K_j^2)^2
 // for |x - c_j| <= K_j = k R_j, c = 1 / (1 - 1/k^2)^2, summed over the drawn
