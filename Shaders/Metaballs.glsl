@@ -12,7 +12,9 @@
 //
 // Along the ray x = s + t d (s relative to the drawn centre, d unit) each kernel
 // is c (a_j - (t - tc_j)^2 / K_j^2)^2 with the closest approach tc_j and
-// a_j = 1 - h_j^2 / K_j^2 (h_j the impact parameter): unimodal in t, so its
+// a_j = 1 - h_j^2 / K_j^2 (h_j the impact parameter; formed in list coordinates,
+// below). Only the kernels positive somewhere on the fragment's chord are
+// gathered: the others are 0 on all of it. Each is unimodal in t, so its
 // maximum over [t0, t1] is at clamp(tc_j, t0, t1) and its minimum at the end
 // farther from tc_j. The sums of these are certified bounds of the field over
 // an interval. The search subdivides the chord depth first, left half first:
@@ -56,34 +58,43 @@ layout(std430) buffer prMetaballColorBlock
 };
 #endif
 
-uniform mat3 prModelToViewLinear; // linear part of model -> view (actor and camera)
+uniform mat3 prViewToListLinear;   // view -> list coordinates, linear part (see below)
 uniform float prInfluenceFactor;  // k
 uniform float prKernelScale;      // c
 uniform float prIsoValue;
 uniform float prTolerance;        // leaf width of the search, in units of the particle radius
 uniform int prIterationLimit;     // most intervals examined per fragment
 uniform int prRefinementSteps;    // bisections of the bracket before the secant step
-uniform float prNeighbourRadiusScale; // model -> view radius factor (radiusScaleVC)
+uniform float prListRadiusScale;  // list radius -> list coordinates (the mapper's radius scale)
+uniform float prViewToListScale;  // view -> list lengths, 1 / sigma
 
-// the kernels the ray meets: (tc, a, 1/K^2), the centre relative to the drawn one (view
-// coordinates) and K^2, the list entry (-1: the drawn particle itself; its neighbour index is read
-// for the colour only)
+// The kernels are gathered in list coordinates: the model coordinates relative to the drawn
+// centre, with radii scaled by the mapper's radius scale, so the list entries are used as they
+// are (no per-entry transform). The actor and camera map them to view coordinates by
+// L = sigma Q (sigma the cube root of |det|, the core's radius scale): the ray (s, d), d unit in
+// view coordinates, becomes (L^-1 s, L^-1 d) with |L^-1 d|^2 = e = 1/sigma^2, and the kernel of
+// list radius K_j along it, c (1 - |x - o_j|^2 / K_j^2)^2, is c (a_j - (t - tc_j)^2 e / K_j^2)^2
+// in the view ray parameter t. (An actor matrix that is not a similarity gives the affine image
+// of the list-coordinate surface.)
+// the kernels that reach the chord: (tc, a, e/K^2) along the ray, and the list entry (-1: the
+// drawn particle itself)
 vec3 prKernelRay[PR_METABALL_KERNELS];
-vec4 prKernelCenter[PR_METABALL_KERNELS];
 int prKernelId[PR_METABALL_KERNELS];
 int prKernelCount = 0;
 
-void prAddKernel(vec3 offsetVC, float influenceRadius, int id, vec3 s, vec3 d)
+void prAddKernel(vec3 rel, float influenceRadius, int id, vec3 d, float e, float t0, float t1)
 {
-  vec3 rel = s - offsetVC;
-  float b = dot(rel, d);
-  vec3 q = rel - b * d;
-  float k2 = influenceRadius * influenceRadius;
-  float a = 1.0 - dot(q, q) / k2;
-  if (a > 0.0 && prKernelCount < PR_METABALL_KERNELS)
+  // rel: the ray start relative to the kernel's centre, d: the ray direction (list coordinates)
+  float tc = -dot(rel, d) / e;
+  vec3 q = rel + tc * d;
+  float invK2 = 1.0 / (influenceRadius * influenceRadius);
+  float a = 1.0 - dot(q, q) * invK2;
+  float u = clamp(tc, t0, t1) - tc;
+  float scale = e * invK2;
+  // kept when the kernel is positive somewhere on the chord [t0, t1]
+  if (a - u * u * scale > 0.0 && prKernelCount < PR_METABALL_KERNELS)
   {
-    prKernelRay[prKernelCount] = vec3(-b, a, 1.0 / k2);
-    prKernelCenter[prKernelCount] = vec4(offsetVC, k2);
+    prKernelRay[prKernelCount] = vec3(tc, a, scale);
     prKernelId[prKernelCount] = id;
     ++prKernelCount;
   }
@@ -129,18 +140,36 @@ float prMetaballFieldMin(float t0, float t1)
   return prKernelScale * sum;
 }
 
-// Gather the kernels of the drawn particle (its list `id`) that the ray (s, d) meets.
-void prGatherKernels(int id, float radiusVC, vec3 s, vec3 d)
+// Gather the kernels of the drawn particle (its list `id`) that reach the chord [t0, t1] of the
+// ray (s, d) (view coordinates relative to the drawn centre).
+void prGatherKernels(int id, float radiusVC, vec3 s, vec3 d, float t0, float t1)
 {
   prKernelCount = 0;
-  prAddKernel(vec3(0.0), prInfluenceFactor * radiusVC, -1, s, d);
+  vec3 sL = prViewToListLinear * s;
+  vec3 dL = prViewToListLinear * d;
+  float e = prViewToListScale * prViewToListScale;
+  prAddKernel(sL, prInfluenceFactor * prViewToListScale * radiusVC, -1, dL, e, t0, t1);
   ivec2 range = prMetaballRanges[id];
-  for (int e = range.x; e < range.x + range.y; ++e)
+  float k = prInfluenceFactor * prListRadiusScale;
+  for (int n = range.x; n < range.x + range.y; ++n)
   {
-    vec4 entry = prMetaballEntries[e];
-    prAddKernel(prModelToViewLinear * entry.xyz, prInfluenceFactor * prNeighbourRadiusScale * entry.w,
-      e, s, d);
+    vec4 entry = prMetaballEntries[n];
+    prAddKernel(sL - entry.xyz, k * entry.w, n, dL, e, t0, t1);
   }
+}
+
+// The centre (list coordinates) and squared influence radius of gathered kernel j.
+vec4 prKernelCentre(int j, float radiusVC)
+{
+  int n = prKernelId[j];
+  if (n < 0)
+  {
+    float K = prInfluenceFactor * prViewToListScale * radiusVC;
+    return vec4(0.0, 0.0, 0.0, K * K);
+  }
+  vec4 entry = prMetaballEntries[n];
+  float K = prInfluenceFactor * prListRadiusScale * entry.w;
+  return vec4(entry.xyz, K * K);
 }
 
 // The first crossing of the iso-value in [tLo, tHi] from the side the field has at tLo:
@@ -205,19 +234,23 @@ bool prMetaballSearch(float tLo, float tHi, float radiusVC, out float tHit, out 
   return false;
 }
 
-// The unit normal at the point x (relative to the drawn centre) against the field's gradient
-// (pointing out of the surface), and the colour blended by each kernel's share of the field.
-vec3 prMetaballNormal(vec3 x)
+// The unit normal (view coordinates) at the point x (view coordinates relative to the drawn
+// centre) against the field's gradient (pointing out of the surface), and the colour blended by
+// each kernel's share of the field.
+vec3 prMetaballNormal(vec3 x, float radiusVC)
 {
-  // -grad D / (4 c): points out of the surface
+  // -grad D / (4 c) in list coordinates: points out of the surface; to view coordinates by
+  // L^-T (gradients are covectors)
+  vec3 xL = prViewToListLinear * x;
   vec3 outward = vec3(0.0);
   for (int j = 0; j < prKernelCount; ++j)
   {
-    vec4 c = prKernelCenter[j];
-    vec3 rel = x - c.xyz;
+    vec4 c = prKernelCentre(j, radiusVC);
+    vec3 rel = xL - c.xyz;
     float q = max(1.0 - dot(rel, rel) / c.w, 0.0);
     outward += (q / c.w) * rel;
   }
+  outward = transpose(prViewToListLinear) * outward;
   float len = length(outward);
   return len > 0.0 ? outward / len : vec3(0.0, 0.0, 1.0);
 }
@@ -229,14 +262,15 @@ vec4 prUnpackColor(uint c)
            float((c >> 24u) & 0xffu)) / 255.0;
 }
 
-vec4 prMetaballColor(vec3 x, vec4 ownColor)
+vec4 prMetaballColor(vec3 x, float radiusVC, vec4 ownColor)
 {
+  vec3 xL = prViewToListLinear * x;
   vec4 sum = vec4(0.0);
   float weights = 0.0;
   for (int j = 0; j < prKernelCount; ++j)
   {
-    vec4 c = prKernelCenter[j];
-    vec3 rel = x - c.xyz;
+    vec4 c = prKernelCentre(j, radiusVC);
+    vec3 rel = xL - c.xyz;
     float q = max(1.0 - dot(rel, rel) / c.w, 0.0);
     float w = q * q;
     int id = prKernelId[j] < 0 ? -1 : prMetaballIds[prKernelId[j]];

@@ -868,7 +868,7 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
          "    float prTHit;\n"
          "    if (prHit)\n"
          "    {\n"
-         "      prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD);\n"
+         "      prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD, prTLo, prTHi);\n"
          "      prHit = prMetaballSearch(prTLo, prTHi, prRadius, prTHit, prMetaballInside) &&\n"
          "        (prNearCut || !prMetaballInside);\n"
          "    }\n"
@@ -878,7 +878,7 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
          "      prT1 = prTHit;\n";
     if (colors)
     {
-      surface << "      prMetaballRGBA = prMetaballColor(prRayS + prTHit * prRayD, "
+      surface << "      prMetaballRGBA = prMetaballColor(prRayS + prTHit * prRayD, prRadius, "
                  "vertexColorVSOutput);\n";
     }
     surface << "    }\n"
@@ -887,7 +887,7 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
     hooks.Insert(Hooks::Fragment, "//PR::Surface::Normal",
       "if (prMetaballVSOutput > 0.0)\n"
       "  {\n"
-      "    normalVCVSOutput = prMetaballNormal(hitRel);\n"
+      "    normalVCVSOutput = prMetaballNormal(hitRel, radiusVC / prMetaballVSOutput);\n"
       "    if (dot(normalVCVSOutput, prRayD) > 0.0)\n"
       "    {\n"
       "      normalVCVSOutput = -normalVCVSOutput;\n"
@@ -932,8 +932,9 @@ void vtkMetaballMapper::SetMapperShaderParameters(
   program->SetUniformf("prTolerance", static_cast<float>(this->Tolerance));
   program->SetUniformi("prIterationLimit", this->IterationLimit);
   program->SetUniformi("prRefinementSteps", this->RefinementSteps);
-  program->SetUniformf("prNeighbourRadiusScale", static_cast<float>(this->GetRadiusScaleVC(act)));
-  // model -> view, linear part (the list offsets are model-coordinate differences)
+  // view -> list coordinates (model coordinates relative to the drawn centre, radii times
+  // RadiusScaleFactor): the inverse of the linear part of model -> view, over the core's
+  // radius scale sigma (Shaders/Metaballs.glsl)
   vtkNew<vtkMatrix4x4> modelToView;
   vtkMatrix4x4* view = ren->GetActiveCamera()->GetModelViewTransformMatrix();
   if (act->GetIsIdentity())
@@ -944,15 +945,31 @@ void vtkMetaballMapper::SetMapperShaderParameters(
   {
     vtkMatrix4x4::Multiply4x4(view, act->GetMatrix(), modelToView);
   }
-  float linear[9]; // column-major
+  double linear[3][3];
+  double inverse[3][3];
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int col = 0; col < 3; ++col)
+    {
+      linear[row][col] = modelToView->GetElement(row, col);
+    }
+  }
+  vtkMath::Invert3x3(linear, inverse);
+  float viewToList[9]; // column-major
   for (int col = 0; col < 3; ++col)
   {
     for (int row = 0; row < 3; ++row)
     {
-      linear[3 * col + row] = static_cast<float>(modelToView->GetElement(row, col));
+      viewToList[3 * col + row] = static_cast<float>(inverse[row][col]);
     }
   }
-  program->SetUniformMatrix3x3("prModelToViewLinear", linear);
+  // the actor's part of the core's radius scale (GetRadiusScaleVC)
+  double sigma =
+    act->GetIsIdentity() ? 1.0 : std::cbrt(std::abs(act->GetMatrix()->Determinant()));
+  sigma = sigma > 0.0 && std::isfinite(sigma) ? sigma : 1.0; // a singular actor draws nothing
+  program->SetUniformMatrix3x3("prViewToListLinear", viewToList);
+  program->SetUniformf("prViewToListScale", static_cast<float>(1.0 / sigma));
+  program->SetUniformf("prListRadiusScale", static_cast<float>(this->RadiusScaleFactor));
   if (internals.Variant == VicinityLimited)
   {
     program->SetUniformi("prPrePassDepth", internals.PrePassDepth->GetTextureUnit());

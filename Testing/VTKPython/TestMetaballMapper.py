@@ -134,6 +134,34 @@ agree = np.abs(r["gpu_depth"] - r_one["gpu_depth"])[both].max()
 print("droplet: with and without the pre-pass the depths agree to %.2e R" % agree)
 check(agree <= 1e-3, "droplet: pre-pass changes the depth by %.2e R" % agree)
 mapper.SetDepthPrePass(True)
+
+# the actor scaled, turned and moved, the radii scaled: the kernels are gathered in list
+# (model) coordinates, the reference forms the scene in view coordinates
+actor.SetScale(1.7)
+actor.RotateZ(30.0)
+actor.RotateX(-20.0)
+actor.SetPosition(3.0, -2.0, 1.0)
+mapper.SetRadiusScaleFactor(1.1)
+renderer.ResetCamera()
+window.Render()
+r_moved = compare(window, renderer, actor, 1.7 * 1.1, normals=True)
+print("droplet, actor scaled 1.7 and turned, radii 1.1: depth error mean %.2e R, max %.2e R "
+      "outside silhouettes, coverage differs in %d + %d, normals %.2f deg mean"
+      % (r_moved["mean"], r_moved["max_smooth"], r_moved["only_gpu"], r_moved["only_ref"],
+         r_moved["normal_mean"]))
+check(r_moved["max_smooth"] <= 5e-3 and r_moved["mean"] <= 1e-4 and r_moved["covered"] > 1000,
+      "droplet, actor transformed: depth error %.2e R" % r_moved["max_smooth"])
+check(r_moved["only_gpu"] + r_moved["only_ref"] <= 1e-3 * r_moved["covered"],
+      "droplet, actor transformed: coverage differs in %d pixels"
+      % (r_moved["only_gpu"] + r_moved["only_ref"]))
+check(r_moved["normal_mean"] <= 1.0,
+      "droplet, actor transformed: normals %.2f deg off" % r_moved["normal_mean"])
+actor.SetScale(1.0)
+actor.SetOrientation(0.0, 0.0, 0.0)
+actor.SetPosition(0.0, 0.0, 0.0)
+mapper.SetRadiusScaleFactor(1.0)
+renderer.ResetCamera()
+window.Render()
 # a multisampled window: the pre-pass's depth copy cannot read it, one pass is drawn
 ms_mapper, _, _, ms_window = metaball_view(xyz, (200, 200))
 ms_window.SetMultiSamples(4)
