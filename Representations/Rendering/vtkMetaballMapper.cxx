@@ -2,8 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
-#include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMetaballWalkingPlane.h"
@@ -16,17 +16,16 @@
 #include "vtkParticleOcclusionCuller.h"
 #include "vtkTextureObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkParticleCellList.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleMemory.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
-#include "vtkStaticPointLocator.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
@@ -280,29 +279,28 @@ void vtkMetaballMapper::UpdateNeighborLists()
   }
   const double rMax = largest * scale;
 
-  // The locator over the uploaded positions (skipped particles sit on a valid one with radius 0
-  // and are never neighbours).
-  // (on a copy: the locator's bounds computation touches the array it is given, which would
-  // make the input look modified and re-upload it every frame)
-  vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(positions->NewInstance());
-  copy->DeepCopy(positions);
-  vtkNew<vtkPoints> points;
-  points->SetData(copy);
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
+  // The positions in one double array (skipped particles sit on a valid one with radius 0 and
+  // are never neighbours, nor binned).
+  std::vector<double> copy(3 * static_cast<size_t>(n));
+  double* xyz = copy.data();
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      positions->GetTuple(i, xyz + 3 * i);
+    }
+  });
 
   // Candidates: the centres within k (R_i + R_max) of each particle (every particle whose
-  // influence sphere can overlap its own). A sample of the particles first measures how many
-  // that is; when crowded (a huge InfluenceFactor makes every particle a neighbour of every
-  // other), the query radius shrinks so that a query returns about 2 (M + 1) centres: the cost
-  // stays O(N M) instead of O(N^2), and the lists, possibly incomplete, are counted as cut.
+  // influence sphere can overlap its own), from cells of edge 2 k R_max. A sample of the
+  // particles first measures how many that is; when crowded (a huge InfluenceFactor makes every
+  // particle a neighbour of every other), the query radius and the cells shrink so that a query
+  // finds about 2 (M + 1) centres: the cost stays O(N M) instead of O(N^2), and the lists,
+  // possibly incomplete, are counted as cut.
   double radiusFactor = 1.0;
+  vtkParticleCellList cells;
+  if (rMax > 0.0)
   {
-    vtkNew<vtkIdList> found;
-    double ci[3];
+    cells.Build(xyz, n, r, 2.0 * k * rMax);
     double sum = 0.0;
     vtkIdType sampled = 0;
     const vtkIdType step = std::max<vtkIdType>(1, n / 256);
@@ -310,9 +308,17 @@ void vtkMetaballMapper::UpdateNeighborLists()
     {
       if (r[i] > 0.0f)
       {
-        positions->GetTuple(i, ci);
-        locator->FindPointsWithinRadius(k * (r[i] * scale + rMax), ci, found);
-        sum += static_cast<double>(found->GetNumberOfIds());
+        const double* ci = xyz + 3 * i;
+        const double q = k * (r[i] * scale + rMax);
+        vtkIdType found = 0;
+        cells.ForEachCandidate(i, [&](vtkIdType j) {
+          const double* cj = xyz + 3 * j;
+          const double dx = cj[0] - ci[0];
+          const double dy = cj[1] - ci[1];
+          const double dz = cj[2] - ci[2];
+          found += (dx * dx + dy * dy + dz * dz < q * q) ? 1 : 0;
+        });
+        sum += static_cast<double>(found);
         ++sampled;
       }
     }
@@ -320,6 +326,7 @@ void vtkMetaballMapper::UpdateNeighborLists()
     if (mean > 4.0 * (maxNeighbors + 1))
     {
       radiusFactor = std::cbrt(2.0 * (maxNeighbors + 1) / mean);
+      cells.Build(xyz, n, r, radiusFactor * 2.0 * k * rMax);
     }
   }
   struct Chunk
@@ -334,38 +341,39 @@ void vtkMetaballMapper::UpdateNeighborLists()
     Chunk chunk;
     chunk.Begin = begin;
     chunk.Counts.resize(static_cast<size_t>(end - begin));
-    vtkNew<vtkIdList> found;
     std::vector<std::pair<double, std::int32_t>> overlapping;
-    double ci[3];
-    double cj[3];
     for (vtkIdType i = begin; i < end; ++i)
     {
       std::int32_t count = 0;
       if (r[i] > 0.0f)
       {
-        positions->GetTuple(i, ci);
+        const double* ci = xyz + 3 * i;
         const double ri = r[i] * scale;
-        locator->FindPointsWithinRadius(radiusFactor * k * (ri + rMax), ci, found);
+        const double q = radiusFactor * k * (ri + rMax);
         overlapping.clear();
-        const vtkIdType candidates = found->GetNumberOfIds();
-        for (vtkIdType m = 0; m < candidates; ++m)
-        {
-          const vtkIdType j = found->GetId(m);
-          if (j == i || !(r[j] > 0.0f))
+        cells.ForEachCandidate(i, [&](vtkIdType j) {
+          if (j == i)
           {
-            continue;
+            return;
           }
-          positions->GetTuple(j, cj);
-          const double d2 = vtkMath::Distance2BetweenPoints(ci, cj);
+          const double* cj = xyz + 3 * j;
+          const double dx = cj[0] - ci[0];
+          const double dy = cj[1] - ci[1];
+          const double dz = cj[2] - ci[2];
+          const double d2 = dx * dx + dy * dy + dz * dz;
           const double reach = k * (ri + r[j] * scale);
-          if (d2 < reach * reach)
+          if (d2 < reach * reach && d2 < q * q)
           {
             overlapping.emplace_back(d2, static_cast<std::int32_t>(j));
           }
-        }
+        });
         // the nearest M (by centre distance), nearest first
         const size_t keep = std::min<size_t>(overlapping.size(), maxNeighbors);
-        std::partial_sort(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
+        if (keep < overlapping.size())
+        {
+          std::nth_element(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
+        }
+        std::sort(overlapping.begin(), overlapping.begin() + keep);
         for (size_t m = 0; m < keep; ++m)
         {
           chunk.Neighbors.push_back(overlapping[m].second);
@@ -446,8 +454,6 @@ void vtkMetaballMapper::UpdateNeighborLists()
   internals.Ids.resize(static_cast<size_t>(entries));
   float* flags = internals.Flags->GetPointer(0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(ordered.size()), [&](vtkIdType cb, vtkIdType ce) {
-    double ci[3];
-    double cj[3];
     for (vtkIdType c = cb; c < ce; ++c)
     {
       const Chunk& chunk = *ordered[c];
@@ -464,14 +470,11 @@ void vtkMetaballMapper::UpdateNeighborLists()
         // the culler tests a sphere containing the imposter: the influence sphere (the
         // iso-sphere of an isolated particle is inside it for every IsoValue)
         internals.CullingRadii[i] = static_cast<float>(k * r[i]);
-        if (kept > 0)
-        {
-          positions->GetTuple(i, ci);
-        }
+        const double* ci = xyz + 3 * i;
         for (std::int32_t e = 0; e < kept; ++e)
         {
           const std::int32_t j = chunk.Neighbors[in + e];
-          positions->GetTuple(j, cj);
+          const double* cj = xyz + 3 * static_cast<vtkIdType>(j);
           float* entry = &internals.Entries[4 * static_cast<size_t>(out)];
           entry[0] = static_cast<float>(cj[0] - ci[0]);
           entry[1] = static_cast<float>(cj[1] - ci[1]);

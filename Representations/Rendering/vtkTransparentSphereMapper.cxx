@@ -23,6 +23,7 @@
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkParticleCellList.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleDepthSort.h"
 #include "vtkParticleFragmentLists.h"
@@ -35,7 +36,6 @@
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkStaticPointLocator.h"
 #include "vtkIdList.h"
 #include "vtkPoints.h"
 #include "vtkShaderProgram.h"
@@ -803,7 +803,7 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
   {
     return false;
   }
-  // the drawn spheres (radius > 0, Theta_a > 0) as a point set for the locator
+  // the drawn spheres (radius > 0, Theta_a > 0)
   vtkNew<vtkPoints> drawn;
   drawn->SetDataTypeToDouble();
   std::vector<double> drawnRadii;
@@ -825,44 +825,54 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
   {
     return false;
   }
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(drawn);
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
   // i and j penetrate by more than the tolerance t when |p_i - p_j| < s (r_i + r_j - t min(r_i,
-  // r_j)) <= 2 s max(r_i, r_j): the larger sphere's query finds the pair. Touching spheres (to
-  // rounding) do not overlap.
+  // r_j)) <= 2 s max(r_i, r_j): cells of edge 2 s max(r) hold every such pair among the 27
+  // around each particle (vtkParticleCellList: a particle far away costs one cell). Touching
+  // spheres (to rounding) do not overlap.
   const double s = this->RadiusScaleFactor;
   const double tolerance = this->OverlapTolerance;
+  std::vector<double> xyz(3 * static_cast<size_t>(count));
+  std::vector<float> binned(static_cast<size_t>(count), 1.0f);
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    drawn->GetPoint(i, &xyz[3 * i]);
+    largest = std::max(largest, drawnRadii[i]);
+  }
+  const double edge = 2.0 * std::abs(s) * largest;
+  if (!(edge > 0.0) || !std::isfinite(edge))
+  {
+    internals.Overlapping = false;
+    return false;
+  }
+  vtkParticleCellList cells;
+  cells.Build(xyz.data(), count, binned.data(), edge);
   std::atomic<bool> found(false);
   vtkSMPTools::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
     {
-      vtkNew<vtkIdList> near;
       for (vtkIdType i = begin; i < end && !found.load(std::memory_order_relaxed); ++i)
       {
-        double p[3];
-        drawn->GetPoint(i, p);
+        const double* p = &xyz[3 * i];
         const double ri = drawnRadii[i];
-        locator->FindPointsWithinRadius(2.0 * s * ri, p, near);
-        for (vtkIdType k = 0; k < near->GetNumberOfIds(); ++k)
-        {
-          const vtkIdType j = near->GetId(k);
-          if (j == i)
+        cells.ForEachCandidate(i,
+          [&](vtkIdType j)
           {
-            continue;
-          }
-          double q[3];
-          drawn->GetPoint(j, q);
-          const double rj = drawnRadii[j];
-          const double reach = s * (ri + rj - tolerance * std::min(ri, rj)) * (1.0 - 1e-6);
-          if (vtkMath::Distance2BetweenPoints(p, q) < reach * reach)
-          {
-            found = true;
-            break;
-          }
-        }
+            if (j == i)
+            {
+              return;
+            }
+            const double* q = &xyz[3 * j];
+            const double rj = drawnRadii[j];
+            const double reach = s * (ri + rj - tolerance * std::min(ri, rj)) * (1.0 - 1e-6);
+            const double dx = p[0] - q[0];
+            const double dy = p[1] - q[1];
+            const double dz = p[2] - q[2];
+            if (dx * dx + dy * dy + dz * dz < reach * reach)
+            {
+              found = true;
+            }
+          });
       }
     });
   internals.Overlapping = found.load();

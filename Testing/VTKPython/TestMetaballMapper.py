@@ -197,6 +197,19 @@ check(mapper.GetNumberOfListBuilds() == builds + 3, "new positions: one rebuild"
 print("list build: %.4f s for %d particles, %d entries" %
       (mapper.GetLastListBuildSeconds(), len(xyz), mapper.GetNumberOfListEntries()))
 
+# a particle lost 1e6 radii away: the others keep their lists (the neighbour search bins only
+# occupied cells, so the lost one neither changes nor slows the others' search)
+plain, _, _, plain_window = metaball_view(xyz, (100, 100))
+plain_window.Render()
+lost, _, _, lost_window = metaball_view(np.vstack([xyz, [[1.0e6, 0.0, 0.0]]]), (100, 100))
+lost_window.Render()
+print("lists with a particle 1e6 away: %d entries, %d isolated (without it %d, %d)" %
+      (lost.GetNumberOfListEntries(), lost.GetNumberOfIsolatedParticles(),
+       plain.GetNumberOfListEntries(), plain.GetNumberOfIsolatedParticles()))
+check(lost.GetNumberOfListEntries() == plain.GetNumberOfListEntries() > 0 and
+      lost.GetNumberOfIsolatedParticles() == plain.GetNumberOfIsolatedParticles() + 1,
+      "a lost particle changed the others' lists")
+
 # ---- 3. the thin neck: two particles just short of the largest connecting distance
 neck, neck_ref, neck_gpu, r = thin_neck()
 print("thin neck (radius %.3f R): reference %d pixels, GPU %d of them" % (neck, neck_ref, neck_gpu))
