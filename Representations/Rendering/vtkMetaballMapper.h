@@ -21,8 +21,9 @@
  * one pass, per-particle neighbour lists (memory O(N M), rebuilt per time step), exact for
  * isolated particles, the cost per fragment grows with the neighbours the ray meets.
  * - Per particle a view-independent list of the particles whose influence spheres overlap its
- *   own (|c_i - c_j| < k (R_i + R_j)), built on the CPU with vtkStaticPointLocator and
- *   vtkSMPTools, kept in shader storage buffers (entries: the neighbour's centre relative to
+ *   own (|c_i - c_j| < k (R_i + R_j)), built on the CPU from vtkParticleCellList (the occupied
+ *   cells of a grid of edge 2 k R_max: a particle far away from the others does not slow the
+ *   search) and vtkSMPTools, kept in shader storage buffers (entries: the neighbour's centre relative to
  *   the particle, formed in double, and its radius). Rebuilt only when the positions, the radii,
  *   RadiusScaleFactor, InfluenceFactor or MaximumNumberOfNeighbors change; never when the camera,
  *   IsoValue, colours or material change.

@@ -78,8 +78,8 @@
  * densities. The lists' GPU memory is bounded by FragmentListMemory (bands when a view does not
  * fit, see vtkParticleFragmentLists). AUTOMATIC (default) uses the lists when two drawn
  * translucent spheres penetrate each other by more than OverlapTolerance of the smaller radius
- * (|p_i - p_j| < s (r_i + r_j - t min(r_i, r_j)), s = RadiusScaleFactor; checked with
- * vtkStaticPointLocator when the positions, radii or opacities change) and the sort otherwise.
+ * (|p_i - p_j| < s (r_i + r_j - t min(r_i, r_j)), s = RadiusScaleFactor; checked over the
+ * occupied cells of a vtkParticleCellList when the positions, radii or opacities change) and the sort otherwise.
  * Where spheres do not overlap both paths agree; early termination applies to the sorted path
  * only. On llvmpipe the lists cost 1.8-5.8x the sorted path (Benchmarks/README.md).
  *
