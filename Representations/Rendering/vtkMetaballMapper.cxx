@@ -308,16 +308,9 @@ void vtkMetaballMapper::UpdateNeighborLists()
     {
       if (r[i] > 0.0f)
       {
-        const double* ci = xyz + 3 * i;
         const double q = k * (r[i] * scale + rMax);
-        vtkIdType found = 0;
-        cells.ForEachCandidate(i, [&](vtkIdType j) {
-          const double* cj = xyz + 3 * j;
-          const double dx = cj[0] - ci[0];
-          const double dy = cj[1] - ci[1];
-          const double dz = cj[2] - ci[2];
-          found += (dx * dx + dy * dy + dz * dz < q * q) ? 1 : 0;
-        });
+        vtkIdType found = 1; // itself
+        cells.ForEachCandidate(i, [&](vtkIdType, double d2) { found += d2 < q * q ? 1 : 0; });
         sum += static_cast<double>(found);
         ++sampled;
       }
@@ -347,20 +340,10 @@ void vtkMetaballMapper::UpdateNeighborLists()
       std::int32_t count = 0;
       if (r[i] > 0.0f)
       {
-        const double* ci = xyz + 3 * i;
         const double ri = r[i] * scale;
         const double q = radiusFactor * k * (ri + rMax);
         overlapping.clear();
-        cells.ForEachCandidate(i, [&](vtkIdType j) {
-          if (j == i)
-          {
-            return;
-          }
-          const double* cj = xyz + 3 * j;
-          const double dx = cj[0] - ci[0];
-          const double dy = cj[1] - ci[1];
-          const double dz = cj[2] - ci[2];
-          const double d2 = dx * dx + dy * dy + dz * dz;
+        cells.ForEachCandidate(i, [&](vtkIdType j, double d2) {
           const double reach = k * (ri + r[j] * scale);
           if (d2 < reach * reach && d2 < q * q)
           {

@@ -23,10 +23,10 @@
  * - Per particle a view-independent list of the particles whose influence spheres overlap its
  *   own (|c_i - c_j| < k (R_i + R_j)), built on the CPU from vtkParticleCellList (the occupied
  *   cells of a grid of edge 2 k R_max: a particle far away from the others does not slow the
- *   search) and vtkSMPTools, kept in shader storage buffers (entries: the neighbour's centre relative to
- *   the particle, formed in double, and its radius). Rebuilt only when the positions, the radii,
- *   RadiusScaleFactor, InfluenceFactor or MaximumNumberOfNeighbors change; never when the camera,
- *   IsoValue, colours or material change.
+ *   search) and vtkSMPTools, kept in shader storage buffers (entries: the neighbour's centre
+ *   relative to the particle, formed in double, and its radius). Rebuilt only when the
+ *   positions, the radii, RadiusScaleFactor, InfluenceFactor or MaximumNumberOfNeighbors
+ *   change; never when the camera, IsoValue, colours or material change.
  * - A particle without neighbours is drawn by the plain sphere imposter of the core, with the
  *   radius of its own iso-sphere, k R sqrt(1 - sqrt(IsoValue / c)) (R for IsoValue 1): exact.
  * - The others draw the part of their influence sphere where they can hold the largest kernel

@@ -11,6 +11,7 @@
 //------------------------------------------------------------------------------
 void vtkParticleCellList::Build(const double* xyz, vtkIdType n, const float* r, double h)
 {
+  this->Points = xyz;
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
     std::numeric_limits<double>::max() };
   for (vtkIdType i = 0; i < n; ++i)

@@ -35,12 +35,14 @@ public:
   void Build(const double* xyz, vtkIdType n, const float* r, double h);
 
   /**
-   * f(j) for every binned particle j in the 27 cells around binned particle i's (i itself
-   * included); nothing for a particle that was not binned.
+   * f(j, d2) for every binned particle j other than i in the 27 cells around binned particle
+   * i's, with d2 the squared distance of their centres; nothing for a particle that was not
+   * binned. (The centres are read from the array given to Build, which must stay valid.)
    */
   template <typename F>
   void ForEachCandidate(vtkIdType i, F&& f) const
   {
+    const double* ci = this->Points + 3 * i;
     const std::int32_t c = this->CellOf[static_cast<size_t>(i)];
     if (c < 0)
     {
@@ -51,7 +53,15 @@ public:
       const std::int32_t cell = this->NeighborCells[static_cast<size_t>(a)];
       for (vtkIdType e = this->Starts[cell]; e < this->Starts[cell + 1]; ++e)
       {
-        f(this->Order[static_cast<size_t>(e)]);
+        const vtkIdType j = this->Order[static_cast<size_t>(e)];
+        if (j != i)
+        {
+          const double* cj = this->Points + 3 * j;
+          const double dx = cj[0] - ci[0];
+          const double dy = cj[1] - ci[1];
+          const double dz = cj[2] - ci[2];
+          f(j, dx * dx + dy * dy + dz * dz);
+        }
       }
     }
   }
@@ -71,6 +81,7 @@ private:
     }
     bool operator==(const Key& o) const { return X == o.X && Y == o.Y && Z == o.Z; }
   };
+  const double* Points = nullptr;          // the centres given to Build
   std::vector<Key> Cells;                  // the occupied cells, sorted
   std::vector<vtkIdType> Starts;           // per cell its first entry in Order (n at the end)
   std::vector<vtkIdType> Order;            // the binned particles, sorted by cell

@@ -853,22 +853,13 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
     {
       for (vtkIdType i = begin; i < end && !found.load(std::memory_order_relaxed); ++i)
       {
-        const double* p = &xyz[3 * i];
         const double ri = drawnRadii[i];
         cells.ForEachCandidate(i,
-          [&](vtkIdType j)
+          [&](vtkIdType j, double d2)
           {
-            if (j == i)
-            {
-              return;
-            }
-            const double* q = &xyz[3 * j];
             const double rj = drawnRadii[j];
             const double reach = s * (ri + rj - tolerance * std::min(ri, rj)) * (1.0 - 1e-6);
-            const double dx = p[0] - q[0];
-            const double dy = p[1] - q[1];
-            const double dz = p[2] - q[2];
-            if (dx * dx + dy * dy + dz * dz < reach * reach)
+            if (d2 < reach * reach)
             {
               found = true;
             }
