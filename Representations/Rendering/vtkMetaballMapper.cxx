@@ -2,7 +2,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"

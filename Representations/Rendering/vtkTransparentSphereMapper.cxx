@@ -36,7 +36,6 @@
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkIdList.h"
 #include "vtkPoints.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
@@ -804,10 +803,11 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
     return false;
   }
   // the drawn spheres (radius > 0, Theta_a > 0)
-  vtkNew<vtkPoints> drawn;
-  drawn->SetDataTypeToDouble();
+  std::vector<double> xyz;
   std::vector<double> drawnRadii;
+  xyz.reserve(3 * static_cast<size_t>(numPts));
   drawnRadii.reserve(static_cast<size_t>(numPts));
+  double largest = 0.0;
   for (vtkIdType i = 0; i < numPts; ++i)
   {
     const double r = radii->GetValue(i);
@@ -816,11 +816,12 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
     if (r > 0.0 && std::isfinite(r) && kappas->GetValue(i) != 0.0 && std::isfinite(p[0]) &&
       std::isfinite(p[1]) && std::isfinite(p[2]))
     {
-      drawn->InsertNextPoint(p);
+      xyz.insert(xyz.end(), p, p + 3);
       drawnRadii.push_back(r);
+      largest = std::max(largest, r);
     }
   }
-  const vtkIdType count = drawn->GetNumberOfPoints();
+  const vtkIdType count = static_cast<vtkIdType>(drawnRadii.size());
   if (count < 2)
   {
     return false;
@@ -831,14 +832,7 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
   // spheres (to rounding) do not overlap.
   const double s = this->RadiusScaleFactor;
   const double tolerance = this->OverlapTolerance;
-  std::vector<double> xyz(3 * static_cast<size_t>(count));
-  std::vector<float> binned(static_cast<size_t>(count), 1.0f);
-  double largest = 0.0;
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    drawn->GetPoint(i, &xyz[3 * i]);
-    largest = std::max(largest, drawnRadii[i]);
-  }
+  const std::vector<float> binned(static_cast<size_t>(count), 1.0f); // every one of them
   const double edge = 2.0 * std::abs(s) * largest;
   if (!(edge > 0.0) || !std::isfinite(edge))
   {
