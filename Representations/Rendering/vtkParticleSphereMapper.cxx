@@ -648,36 +648,49 @@ void vtkParticleSphereMapper::ReplaceShaderLight(
   }
   else
   {
-    impl << "  vec3 diffuse = vec3(0.0);\n"
-            "  vec3 specular = vec3(0.0);\n";
-    for (int i = 0; i < count; ++i)
-    {
-      if (complexity == 1)
-      {
-        impl << "  prHeadlight(normalVCVSOutput, lightColor" << i
-             << ", specularPower, diffuse, specular);\n";
-      }
-      else if (complexity == 2)
-      {
-        impl << "  prSceneLight(normalVCVSOutput, vertexVC.xyz, lightColor" << i
-             << ", lightDirectionVC" << i
-             << ", 0, vec3(0.0), vec3(1.0, 0.0, 0.0), 180.0, 1.0, specularPower, diffuse, "
-                "specular);\n";
-      }
-      else
-      {
-        impl << "  prSceneLight(normalVCVSOutput, vertexVC.xyz, lightColor" << i
-             << ", lightDirectionVC" << i << ", lightPositional" << i << ", lightPositionVC" << i
-             << ", lightAttenuation" << i << ", lightConeAngle" << i << ", lightExponent" << i
-             << ", specularPower, diffuse, specular);\n";
-      }
-    }
-    impl << "  prSurfaceColor = ambientColor + diffuse * diffuseColor + specular * "
+    impl << vtkParticleSphereMapper::GetLightSumCode(complexity, count)
+         << "  prSurfaceColor = ambientColor + diffuse * diffuseColor + specular * "
             "specularColor;\n";
   }
   // (the template applies ambient occlusion and writes gl_FragData[0] after this)
   vtkParticleShaders::ReplaceHook(fs, "//PR::Lighting::Impl", impl.str());
   shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkParticleSphereMapper::GetLightSumCode(int complexity, int count)
+{
+  std::ostringstream impl;
+  impl << "  vec3 diffuse = vec3(0.0);\n"
+          "  vec3 specular = vec3(0.0);\n";
+  if (complexity == 0)
+  {
+    impl << "  diffuse = vec3(1.0);\n";
+    return impl.str();
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    if (complexity == 1)
+    {
+      impl << "  prHeadlight(normalVCVSOutput, lightColor" << i
+           << ", specularPower, diffuse, specular);\n";
+    }
+    else if (complexity == 2)
+    {
+      impl << "  prSceneLight(normalVCVSOutput, vertexVC.xyz, lightColor" << i
+           << ", lightDirectionVC" << i
+           << ", 0, vec3(0.0), vec3(1.0, 0.0, 0.0), 180.0, 1.0, specularPower, diffuse, "
+              "specular);\n";
+    }
+    else
+    {
+      impl << "  prSceneLight(normalVCVSOutput, vertexVC.xyz, lightColor" << i
+           << ", lightDirectionVC" << i << ", lightPositional" << i << ", lightPositionVC" << i
+           << ", lightAttenuation" << i << ", lightConeAngle" << i << ", lightExponent" << i
+           << ", specularPower, diffuse, specular);\n";
+    }
+  }
+  return impl.str();
 }
 
 //------------------------------------------------------------------------------

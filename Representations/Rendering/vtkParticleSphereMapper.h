@@ -241,6 +241,15 @@ public:
    */
   double GetRadiusScaleVC(vtkActor* actor) const;
 
+  /**
+   * The GLSL that sums VTK's lights as this mapper shades (Shaders/Lighting.glsl): it declares
+   * `vec3 diffuse, specular` and adds each light's terms for the unit normal normalVCVSOutput at
+   * vertexVC with specularPower, for a renderer's LightingComplexity and LightingCount (the
+   * light uniforms are the renderer's GetLightingUniforms()). Complexity 0 (no lights) gives
+   * diffuse = 1, specular = 0, i.e. the unlit colour. vtkSNDFRenderPass pre-integrates with it.
+   */
+  static std::string GetLightSumCode(int complexity, int count);
+
 protected:
   vtkParticleSphereMapper();
   ~vtkParticleSphereMapper() override;

@@ -1,0 +1,225 @@
+/**
+ * @class   vtkSNDFRenderPass
+ * @brief   scale-consistent shading of sub-pixel particles: progressive screen-space normal
+ *          distribution functions (S-NDFs) with re-lighting from a pre-integrated table
+ *          (Ibrahim et al. 2017)
+ *
+ * When 10^6-10^8 particles are seen whole, each pixel covers many spheres; one ray per pixel
+ * picks one normal at random and the picture aliases into noise that changes with every zoom
+ * step. vtkSNDFRenderPass estimates instead, per pixel, the distribution of the normals the pixel
+ * footprint sees (its S-NDF, paper Sec. 4, Eqs. 1-5) by progressive jittered sampling, and shades
+ * the distribution (Sec. 5, Eqs. 12-14). The picture converges to the box-filtered super-sampled
+ * image and stays consistent across zoom levels; changing the lights re-shades without sampling
+ * the particles again.
+ *
+ * It is a vtkImageProcessingPass: its delegate renders the scene (in ParaView the Particle Render
+ * View's chain, in VTK e.g. a vtkRenderStepsPass inside a vtkCameraPass).
+ *
+ * Sampling (progressive, paper Sec. 6.3). The frame of a change (every frame of an interaction)
+ * is the delegate's plain image, as fast as without the pass. While the view then holds still,
+ * each Render() draws the delegate SamplesPerFrame times, each time with the camera's window centre moved by a sub-pixel offset
+ * (sample k: the Halton (2, 3) point k, sample 0 at the pixel centre; box filter over the pixel),
+ * into a G-buffer: the particle mappers' shaders (vtkParticleSphereMapper, through the
+ * //PR::Shading::Impl hook) write the sample's view-space normal, its ambient visibility (from an
+ * AO pass in the delegate) and the actor's ambient and diffuse colours; every other shader writes
+ * zeros there (code before VTK's //VTK::DepthPeeling::Impl tag), and the colour where no particle
+ * is hit (the background) is kept as drawn. A compute shader enters each sample into the pixel's S-NDF:
+ * BinsPerAxis^2 "projected normals" bins over the unit disk (8 x 8 by default; 4 x 4 and 16 x 16
+ * selectable), 16-bit counts, plus the pixel's colour sums. P_x(D_i) of Eq. 5 is a bin's count
+ * over the samples taken. Refinement stops at TargetSamples per pixel (Converged).
+ *
+ * Shading (Eqs. 12-14). A table holds, per bin, VTK's light sums (diffuse and specular, every
+ * light of the renderer as vtkParticleSphereMapper shades: the same GLSL, GetLightSumCode)
+ * averaged over the normals of the bin ∩ disk, uniform in the projected (x, y): the measure that
+ * uniformly hit spheres produce (the L~(D_i) of Eq. 13, pre-integrated, with sigma_perp folded in
+ * because counts are already projected-area probabilities). Each pixel is then
+ *
+ *     L = [ sum AO*ambient + (sum AO*diffuse / Nc) * sum_b c_b D(b)
+ *           + specular colour * (sum AO / Nc) * sum_b c_b S(b) + sum of other colours ] / N
+ *
+ * (N samples, Nc of them on particles, c_b the bin counts). The table is rebuilt and the pixels
+ * re-shaded whenever the lights change; nothing is sampled again.
+ *
+ * Choices where the paper is silent or differs (our users colour by type or speed):
+ * - Colour. The paper shades normals only. Here each pixel keeps the sums of its samples' ambient
+ *   and diffuse colours; a bin's diffuse light is applied to the pixel's mean diffuse colour,
+ *   i.e. colour and normal are taken as independent within a pixel (exact for one colour per
+ *   pixel; the error where two colours split a pixel along a sphere's silhouette is measured in
+ *   Benchmarks/results/sndf_*.csv). Per-bin colours would cost 6x the memory.
+ * - View vector. Normals are binned in view space; the specular term of scene lights uses
+ *   VTK's view vector normalize(-p) with p on the view axis (+z), exact in the image centre and
+ *   for the headlight; off-axis in a perspective view the error grows with the angle. Positional
+ *   lights are evaluated at the focal distance on the view axis. Normals seen with n.z < 0 (possible
+ *   off-axis in perspective) are binned by their (x, y) as if facing the viewer.
+ * - Material. The specular colour and power are those of the first particle actor (a warning
+ *   when the particle actors differ); a change of any particle actor's ambient or diffuse
+ *   material, of its colours (colour map, scalars) or of its geometry samples again (the samples
+ *   store colours, and colour mapping is not linear in the data). Changing lights re-shades only.
+ * - Memory. The S-NDF of the view takes width * height * (2 BinsPerAxis^2 + 48) bytes (8 x 8
+ *   bins: 176 bytes per pixel, 162 MB at 1280 x 720). Above MaximumMemory (MB) the pass uses fewer
+ *   bins, and renders the plain delegate when even 4 x 4 do not fit, with a warning each time.
+ *
+ * Not (yet) here: the S-MIP of paper Sec. 6 (64^2 tiles, page table, LRU tile cache, zoom out
+ * from the finer level, pan reusing tiles): today any camera change samples again.
+ *
+ * What invalidates the samples: the viewport size, the camera (position, focal point, view up,
+ * angle, parallel scale, projection, clipping range, window centre), the bins, and any visible
+ * prop's or mapper's or input's modification time, the background. What does not: lights, the
+ * particle actors' specular colour and power.
+ *
+ * Unsupported scenes fall back to the delegate's plain image with one warning: any visible prop
+ * other than opaque vtkParticleSphereMapper actors (other geometry drawn over a particle does not
+ * yet reliably replace the particle's sample in the G-buffer: a box in front of a crystal was
+ * off by 165/255 at the 99th percentile), translucent particle actors, vtkTransparentSphereMapper
+ * and vtkMetaballMapper (they draw through their own targets), contexts without OpenGL 4.3
+ * compute shaders. The background, plain or gradient, is sampled with the particles. Without
+ * particle props the pass renders the delegate directly.
+ *
+ * @sa vtkParticleSphereMapper vtkParticleShaderHooks vtkImageProcessingPass
+ */
+#ifndef vtkSNDFRenderPass_h
+#define vtkSNDFRenderPass_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkParticleRenderingModule.h" // for export macro
+
+class vtkFloatArray;
+
+class VTKPARTICLERENDERING_EXPORT vtkSNDFRenderPass : public vtkImageProcessingPass
+{
+public:
+  static vtkSNDFRenderPass* New();
+  vtkTypeMacro(vtkSNDFRenderPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * Jittered samples per pixel added by each Render() while the view holds still (default 4;
+   * the Render() of a change shows the plain image and takes none).
+   */
+  vtkSetClampMacro(SamplesPerFrame, int, 1, 4096);
+  vtkGetMacro(SamplesPerFrame, int);
+  ///@}
+
+  ///@{
+  /**
+   * Samples per pixel at which refinement stops (default 256, at most 65535: 16-bit bin counts).
+   */
+  vtkSetClampMacro(TargetSamples, int, 1, 65535);
+  vtkGetMacro(TargetSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * S-NDF bins per axis of the projected-normal square: 4, 8 (default) or 16. Other values are
+   * refused with an error.
+   */
+  void SetBinsPerAxis(int bins);
+  vtkGetMacro(BinsPerAxis, int);
+  ///@}
+
+  ///@{
+  /**
+   * The most GPU memory the S-NDF of the view may take, in MB (default 1024). See the class
+   * description for what happens above it.
+   */
+  vtkSetClampMacro(MaximumMemory, double, 0.0, 1.0e7);
+  vtkGetMacro(MaximumMemory, double);
+  ///@}
+
+  /**
+   * Samples per pixel gathered so far for the current view (0 before the first render or after
+   * a change).
+   */
+  vtkGetMacro(NumberOfSamples, int);
+
+  /**
+   * True when NumberOfSamples reached TargetSamples (refinement stopped).
+   */
+  bool GetConverged() { return this->NumberOfSamples >= this->TargetSamples; }
+
+  /**
+   * The bins per axis in use (BinsPerAxis, or fewer when MaximumMemory forced it; 0 when the pass
+   * renders the plain delegate).
+   */
+  vtkGetMacro(ActiveBinsPerAxis, int);
+
+  /**
+   * Bytes of GPU memory the S-NDF buffers take now.
+   */
+  vtkGetMacro(MemoryBytes, double);
+
+  ///@{
+  /**
+   * Counters for tests and benchmarks: delegate renders into the G-buffer (sample passes), S-NDF
+   * restarts, lighting-table builds and re-shades since the pass was created.
+   */
+  vtkGetMacro(NumberOfSamplePasses, vtkIdType);
+  vtkGetMacro(NumberOfRestarts, vtkIdType);
+  vtkGetMacro(NumberOfTableBuilds, vtkIdType);
+  vtkGetMacro(NumberOfResolves, vtkIdType);
+  ///@}
+
+  /**
+   * Forget the samples: the next Render() starts again.
+   */
+  void Restart();
+
+  ///@{
+  /**
+   * Per-stage GPU times of the last Render() in seconds, from timer queries, with CollectTimings
+   * on (off by default; reading them waits for the GPU): the sample passes (delegate draws into the
+   * G-buffer), their accumulation into the S-NDFs, the lighting table, the re-shade and the final
+   * composite.
+   */
+  vtkSetMacro(CollectTimings, bool);
+  vtkGetMacro(CollectTimings, bool);
+  vtkBooleanMacro(CollectTimings, bool);
+  double GetLastSampleSeconds();
+  double GetLastAccumulateSeconds();
+  double GetLastShadeSeconds();
+  ///@}
+
+  /**
+   * The lighting table of the last Render() (needs the render window's context current): 2 *
+   * bins^2 tuples of 3 components, the diffuse light sums of bins 0 .. bins^2 - 1, then the
+   * specular ones (bin (i, j) is number j * bins + i over x, y in [-1, 1]). False before a
+   * table was built.
+   */
+  bool GetLightingTable(vtkFloatArray* table);
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkSNDFRenderPass();
+  ~vtkSNDFRenderPass() override;
+
+  int SamplesPerFrame = 4;
+  int TargetSamples = 256;
+  int BinsPerAxis = 8;
+  double MaximumMemory = 1024.0;
+  int NumberOfSamples = 0;
+  int ActiveBinsPerAxis = 0;
+  double MemoryBytes = 0.0;
+  vtkIdType NumberOfSamplePasses = 0;
+  vtkIdType NumberOfRestarts = 0;
+  vtkIdType NumberOfTableBuilds = 0;
+  vtkIdType NumberOfResolves = 0;
+  bool CollectTimings = false;
+
+private:
+  vtkSNDFRenderPass(const vtkSNDFRenderPass&) = delete;
+  void operator=(const vtkSNDFRenderPass&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif

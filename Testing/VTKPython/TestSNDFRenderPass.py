@@ -1,0 +1,317 @@
+"""vtkSNDFRenderPass (Ibrahim et al. 2017), scale-consistent shading of sub-pixel particles,
+from plain VTK Python. Checked:
+- the lighting table (Eqs. 12-14) for 4x4, 8x8 and 16x16 bins against a double-precision
+  integral over each bin ∩ unit disk, and the closed forms over the whole disk: a headlight's
+  diffuse mean n_z = 2/3, its specular mean n_z^p = 2/(p+2);
+- convergence: an fcc crystal of two species with about two pixels per atom, 256 jittered
+  samples per pixel, against the 16x16 super-sampled core (rendered at 16x the size and box
+  filtered): the plain one-sample image is far off, the S-NDF image close; the frame of a change
+  is the plain image;
+- re-lighting: another light re-shades the converged S-NDFs without a sample pass and matches
+  the super-sampled image under the new light; a camera move restarts;
+- other geometry and background: an opaque box in front of part of the crystal;
+- bad input: an empty input, a memory limit below 4x4 bins (a warning, the plain image), a limit
+  that forces fewer bins, a wrong bin count, a resize while refining, NaN/Inf positions, a
+  translucent particle actor (a warning, the plain image); --gl33: a context without compute
+  shaders (an error, the plain image).
+
+usage: python3 TestSNDFRenderPass.py [--gl33]
+"""
+import sys
+
+import numpy as np
+
+import particlerendering as pr
+from prVTKTesting import Messages, check, finish, offscreen_window, particles_from
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import vtkFloatArray
+from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer
+from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+W, H = 120, 90
+S = 16  # reference super-sampling per axis
+
+
+def crystal(cells):
+    g = np.arange(cells)
+    base = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3).astype(float)
+    offsets = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+    xyz = (base[:, None, :] + offsets[None]).reshape(-1, 3)
+    species = np.random.default_rng(1).random(len(xyz)) < 0.3
+    rgb = np.where(species[:, None], [220, 60, 40], [90, 140, 230]).astype(np.uint8)
+    return xyz, rgb
+
+
+def scene(xyz, rgb, size, sndf=None, box=False):
+    data = particles_from(xyz)
+    colours = numpy_to_vtk(rgb, deep=True)
+    colours.SetName("rgb")
+    data.GetPointData().SetScalars(colours)
+    mapper = pr.vtkParticleSphereMapper()
+    mapper.SetInputData(data)
+    mapper.SetRadius(0.36)
+    mapper.SetColorModeToDirectScalars()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0.1, 0.1, 0.12)
+    if box:
+        cube = vtkCubeSource()
+        cube.SetBounds(9, 20, -1, 5, 15, 19)
+        cube_mapper = vtkPolyDataMapper()
+        cube_mapper.SetInputConnection(cube.GetOutputPort())
+        cube_actor = vtkActor()
+        cube_actor.SetMapper(cube_mapper)
+        cube_actor.GetProperty().SetColor(0.9, 0.85, 0.3)
+        renderer.AddActor(cube_actor)
+    window = offscreen_window(renderer, size)
+    if sndf is not None:
+        camera_pass = vtkCameraPass()
+        camera_pass.SetDelegatePass(sndf)
+        sndf.SetDelegatePass(vtkRenderStepsPass())
+        renderer.SetPass(camera_pass)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(40, 30, 55)
+    camera.SetFocalPoint(8, 8, 8)
+    camera.SetViewUp(0, 1, 0)
+    renderer.ResetCameraClippingRange()
+    return renderer, window, actor
+
+
+def image(window, width=W, height=H):
+    """Render once and read the picture (without the second render of grab_image)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ShouldRerenderOff()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+    return pixels[:, :3].reshape(height, width, 3).astype(float)
+
+
+def reference(xyz, rgb, light=None, box=False, specular=0.0):
+    """The 16x16 super-sampled core: rendered at 16x the size, box filtered."""
+    renderer, window, actor = scene(xyz, rgb, (W * S, H * S), box=box)
+    actor.GetProperty().SetSpecular(specular)
+    actor.GetProperty().SetSpecularPower(20)
+    if light is not None:
+        renderer.AddLight(light)
+    big = image(window, W * S, H * S)
+    return big.reshape(H, S, W, S, 3).mean(axis=(1, 3))
+
+
+def converge(sndf, window, limit=200):
+    renders = 0
+    while not sndf.GetConverged() and renders < limit:
+        window.Render()
+        renders += 1
+    return renders
+
+
+def error(a, b):
+    d = np.abs(a - b)
+    return d.mean(), np.percentile(d.max(axis=2), 99), d.max()
+
+
+gl33 = "--gl33" in sys.argv
+xyz, rgb = crystal(16)
+
+if gl33:
+    # --- a context without compute shaders: one error, the plain image --------------------------
+    sndf = pr.vtkSNDFRenderPass()
+    messages = Messages(sndf)
+    renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+    out = image(window)
+    image(window)
+    _, plain_window, _ = scene(xyz, rgb, (W, H))
+    plain = image(plain_window)
+    check(np.array_equal(out, plain), "OpenGL 3.3: the plain image")
+    check(len(messages.errors) == 1 and "compute" in str(messages.text),
+          "OpenGL 3.3: one error naming compute shaders (%s)" % messages.text)
+    sys.exit(finish())
+
+# --- the lighting table ----------------------------------------------------------------------
+fine = 2048
+u = (np.arange(fine) + 0.5) / fine * 2.0 - 1.0
+X, Y = np.meshgrid(u, u, indexing="xy")
+inside = X * X + Y * Y <= 1.0
+Z = np.sqrt(np.clip(1.0 - X * X - Y * Y, 0.0, 1.0))
+power = 20.0
+for bins in (4, 8, 16):
+    sndf = pr.vtkSNDFRenderPass()
+    sndf.SetBinsPerAxis(bins)
+    renderer, window, actor = scene(xyz[:64], rgb[:64], (32, 32), sndf)
+    actor.GetProperty().SetSpecularPower(power)
+    window.Render()  # the frame of the change: the plain image
+    window.Render()  # the first sample pass builds the table
+    window.MakeCurrent()
+    table = vtkFloatArray()
+    check(sndf.GetLightingTable(table), "%d bins: a table" % bins)
+    values = np.array([table.GetTuple3(t)[0] for t in range(table.GetNumberOfTuples())])
+    diffuse, specular = values[: bins * bins], values[bins * bins:]
+    cell = (((X + 1) * 0.5 * bins).astype(int).clip(0, bins - 1)
+            + bins * ((Y + 1) * 0.5 * bins).astype(int).clip(0, bins - 1))
+    area = np.bincount(cell[inside], minlength=bins * bins).astype(float)
+    exact_d = np.bincount(cell[inside], weights=np.maximum(1e-6, Z[inside]), minlength=bins * bins)
+    exact_s = np.bincount(cell[inside], weights=np.maximum(1e-6, Z[inside]) ** power,
+                          minlength=bins * bins)
+    used = area > 0
+    err_d = np.abs(diffuse[used] - exact_d[used] / area[used]).max()
+    err_s = np.abs(specular[used] - exact_s[used] / area[used]).max()
+    check(err_d < 3e-3 and err_s < 3e-3,
+          "%d bins: per-bin means against the double-precision integral (diffuse %.2e, specular "
+          "%.2e)" % (bins, err_d, err_s))
+    disk_d = (area * diffuse).sum() / area.sum()
+    disk_s = (area * specular).sum() / area.sum()
+    check(abs(disk_d - 2.0 / 3.0) < 1e-3 and abs(disk_s - 2.0 / (power + 2.0)) < 1e-3,
+          "%d bins: disk means %.5f (2/3) and %.5f (2/(p+2) = %.5f)"
+          % (bins, disk_d, disk_s, 2.0 / (power + 2.0)))
+
+# --- convergence against the super-sampled core ----------------------------------------------
+ref = reference(xyz, rgb)
+_, plain_window, _ = scene(xyz, rgb, (W, H))
+plain = image(plain_window)
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(32)
+renderer, window, actor = scene(xyz, rgb, (W, H), sndf)
+first = image(window)
+check(sndf.GetNumberOfSamples() == 0 and np.array_equal(first, plain),
+      "the frame of a change is the plain image, no sample taken")
+renders = converge(sndf, window)
+out = image(window)
+plain_error = error(plain, ref)
+sndf_error = error(out, ref)
+print("plain vs reference: mean %.2f p99 %.1f max %.1f /255" % plain_error)
+print("S-NDF (%d samples, %d renders) vs reference: mean %.2f p99 %.1f max %.1f /255"
+      % ((sndf.GetNumberOfSamples(), renders) + sndf_error))
+check(sndf.GetConverged() and sndf.GetNumberOfSamples() == 256, "256 samples")
+check(plain_error[0] > 4.0, "the one-sample image aliases (mean %.2f)" % plain_error[0])
+check(sndf_error[0] < 1.0 and sndf_error[1] < 6.0 and sndf_error[2] < 12.0,
+      "S-NDF within mean 1, p99 6, max 12 /255 of the super-sampled core")
+passes = sndf.GetNumberOfSamplePasses()
+image(window)
+check(sndf.GetNumberOfSamplePasses() == passes, "converged: no more sample passes")
+
+# --- re-lighting -----------------------------------------------------------------------------
+light = vtkLight()
+light.SetLightTypeToCameraLight()
+light.SetPosition(1, 0.6, 0.3)
+light.SetFocalPoint(0, 0, 0)
+light.SetColor(1.0, 0.9, 0.8)
+renderer.RemoveAllLights()
+renderer.AddLight(light)
+builds = sndf.GetNumberOfTableBuilds()
+relit = image(window)
+check(sndf.GetNumberOfSamplePasses() == passes and sndf.GetNumberOfTableBuilds() == builds + 1,
+      "a new light re-shades without a sample pass")
+light_ref = vtkLight()
+light_ref.DeepCopy(light)
+ref_relit = reference(xyz, rgb, light_ref)
+relit_error = error(relit, ref_relit)
+print("re-lit S-NDF vs re-rendered reference: mean %.2f p99 %.1f max %.1f /255" % relit_error)
+check(np.abs(relit - out).mean() > 5.0, "the light changed the picture")
+check(relit_error[0] < 1.0 and relit_error[1] < 6.0 and relit_error[2] < 12.0,
+      "re-lit within mean 1, p99 6, max 12 /255 of the re-rendered reference")
+restarts = sndf.GetNumberOfRestarts()
+renderer.GetActiveCamera().Azimuth(5)
+image(window)
+check(sndf.GetNumberOfRestarts() == restarts + 1 and sndf.GetNumberOfSamples() == 0,
+      "a camera move restarts (the plain image, no sample)")
+
+# --- other geometry: not yet sampled; a warning and the plain image ------------------------
+sndf = pr.vtkSNDFRenderPass()
+messages = Messages(sndf)
+renderer, window, _ = scene(xyz, rgb, (W, H), sndf, box=True)
+with_box = image(window)
+image(window)
+_, plain_box_window, _ = scene(xyz, rgb, (W, H), box=True)
+check(np.array_equal(with_box, image(plain_box_window)) and len(messages.warnings) == 1
+      and "other geometry" in str(messages.text) and sndf.GetNumberOfSamplePasses() == 0,
+      "other geometry in the view: one warning, the plain image (%s)" % messages.text)
+
+# --- bad input -------------------------------------------------------------------------------
+# empty input: the plain image, no message
+sndf = pr.vtkSNDFRenderPass()
+messages = Messages(sndf)
+renderer, window, _ = scene(np.zeros((0, 3)), np.zeros((0, 3), np.uint8), (W, H), sndf)
+empty = image(window)
+_, plain_empty_window, _ = scene(np.zeros((0, 3)), np.zeros((0, 3), np.uint8), (W, H))
+check(np.array_equal(empty, image(plain_empty_window)) and not messages.errors,
+      "empty input: the background, no error")
+
+# memory below 4x4 bins: a warning, the plain image
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetMaximumMemory(0.01)
+messages = Messages(sndf)
+renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+small = image(window)
+image(window)
+check(np.array_equal(small, plain) and len(messages.warnings) == 1 and "MaximumMemory" in str(messages.text)
+      and sndf.GetActiveBinsPerAxis() == 0, "no memory: one warning, the plain image")
+
+# a limit between 4x4 and 8x8: 4x4 bins with a warning, still converging
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetMaximumMemory(W * H * (8 * 16 + 48) * 1.5 / 1048576.0)
+sndf.SetSamplesPerFrame(64)
+messages = Messages(sndf)
+renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+converge(sndf, window)
+four_error = error(image(window), ref)
+check(sndf.GetActiveBinsPerAxis() == 4 and len(messages.warnings) == 1 and four_error[0] < 1.5,
+      "memory for 4x4 bins: a warning, 4x4 bins, mean %.2f /255" % four_error[0])
+
+# a wrong bin count
+sndf = pr.vtkSNDFRenderPass()
+messages = Messages(sndf)
+sndf.SetBinsPerAxis(5)
+check(sndf.GetBinsPerAxis() == 8 and len(messages.errors) == 1, "5 bins refused with an error")
+
+# resize while refining
+sndf = pr.vtkSNDFRenderPass()
+renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+image(window)
+image(window)
+window.SetSize(W + 30, H + 20)
+window.Render()
+check(sndf.GetNumberOfSamples() == 0, "a resize restarts")
+# (the picture is not read: vtkWindowToImageFilter crashes after this resize without the pass too)
+window.Render()
+check(sndf.GetNumberOfSamples() == sndf.GetSamplesPerFrame(), "and samples at the new size")
+converge(sndf, window)
+check(sndf.GetConverged(), "and converges at the new size")
+
+# NaN / Inf positions: the finite particles' picture, no NaN
+bad = xyz.copy()
+bad[::7] = np.nan
+bad[3::11] = np.inf
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(64)
+renderer, window, _ = scene(bad, rgb, (W, H), sndf)
+converge(sndf, window)
+finite = image(window)
+check(np.isfinite(finite).all() and np.abs(finite - ref).mean() < 20.0,
+      "NaN/Inf positions: a finite picture")
+
+# a translucent particle actor: a warning, the plain image
+sndf = pr.vtkSNDFRenderPass()
+messages = Messages(sndf)
+renderer, window, actor = scene(xyz, rgb, (W, H), sndf)
+actor.GetProperty().SetOpacity(0.5)
+translucent = image(window)
+# the same pass chain without the S-NDF pass
+plain_renderer, plain_translucent_window, plain_actor = scene(xyz, rgb, (W, H))
+plain_actor.GetProperty().SetOpacity(0.5)
+camera_pass = vtkCameraPass()
+camera_pass.SetDelegatePass(vtkRenderStepsPass())
+plain_renderer.SetPass(camera_pass)
+plain_translucent = image(plain_translucent_window)
+check(np.array_equal(translucent, plain_translucent) and len(messages.warnings) == 1,
+      "a translucent particle actor: one warning, the plain image (%s)" % messages.text)
+
+sys.exit(finish())
