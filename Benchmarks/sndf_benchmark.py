@@ -1,0 +1,102 @@
+"""vtkSNDFRenderPass against the plain core, paper Table 2/3 style (llvmpipe, one run).
+
+Scene: an fcc crystal of two species seen whole (CELLS^3 unit cells, 4 atoms each), radius 0.36
+lattice constants, headlight, at WIDTHxHEIGHT. Measured in the same run:
+- plain: a frame of the core (vtkCameraPass -> vtkRenderStepsPass), mean of 5;
+- sample pass: a refinement frame with SamplesPerFrame 1 (delegate into the G-buffer,
+  accumulation, re-shade, composite), mean over the first SAMPLES frames;
+- re-light: a frame after a light change once refinement stopped (table + re-shade, no sample);
+- re-sample to the same quality: SAMPLES sample passes (what plain super-sampling costs after the
+  same light change);
+- memory of the S-NDFs.
+
+usage: Scripts/with_xvfb.sh python3 Benchmarks/sndf_benchmark.py [CELLS WIDTH HEIGHT SAMPLES]
+(PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
+Benchmarks/results/sndf_timings.csv
+"""
+import os
+import sys
+import time
+
+import numpy as np
+
+import particlerendering as pr
+from prVTKTesting import offscreen_window, particles_from
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkRenderer
+from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+
+cells, width, height, samples = (int(a) for a in (sys.argv[1:5] + ["40", "1280", "720", "64"][len(sys.argv[1:5]):]))
+g = np.arange(cells)
+base = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3).astype(float)
+xyz = (base[:, None, :] + np.array([[0, 0, 0], [.5, .5, 0], [.5, 0, .5], [0, .5, .5]])[None]).reshape(-1, 3)
+rgb = np.where((np.random.default_rng(1).random(len(xyz)) < 0.3)[:, None], [220, 60, 40],
+               [90, 140, 230]).astype(np.uint8)
+
+
+def view(sndf):
+    data = particles_from(xyz)
+    colours = numpy_to_vtk(rgb, deep=True)
+    data.GetPointData().SetScalars(colours)
+    mapper = pr.vtkParticleSphereMapper()
+    mapper.SetInputData(data)
+    mapper.SetRadius(0.36)
+    mapper.SetColorModeToDirectScalars()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    window = offscreen_window(renderer, (width, height))
+    camera_pass = vtkCameraPass()
+    if sndf is None:
+        camera_pass.SetDelegatePass(vtkRenderStepsPass())
+    else:
+        camera_pass.SetDelegatePass(sndf)
+        sndf.SetDelegatePass(vtkRenderStepsPass())
+    renderer.SetPass(camera_pass)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(2.5 * cells, 1.9 * cells, 3.4 * cells)
+    camera.SetFocalPoint(cells / 2, cells / 2, cells / 2)
+    renderer.ResetCameraClippingRange()
+    return renderer, window
+
+
+def timed(window):
+    t = time.perf_counter()
+    window.Render()
+    window.GetRGBACharPixelData(0, 0, 0, 0, 0)  # wait for the GPU
+    return time.perf_counter() - t
+
+
+renderer, window = view(None)
+timed(window)
+plain = np.mean([timed(window) for _ in range(5)])
+
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(1)
+sndf.SetTargetSamples(samples)
+renderer, window = view(sndf)
+timed(window)  # the frame of the change
+sample_times = [timed(window) for _ in range(samples)]
+assert sndf.GetConverged()
+sample = np.mean(sample_times[1:])  # (the first builds the programs)
+light = vtkLight()
+light.SetLightTypeToCameraLight()
+light.SetPosition(1, 0.5, 0.4)
+renderer.RemoveAllLights()
+renderer.AddLight(light)
+relight = timed(window)
+light.SetIntensity(0.8)
+relight = min(relight, timed(window))
+resample = samples * sample
+row = [len(xyz), width, height, samples, sndf.GetActiveBinsPerAxis(), plain, sample,
+       sample / plain, relight, resample, resample / relight, sndf.GetMemoryBytes() / 2**20]
+path = os.path.join(os.path.dirname(__file__), "results", "sndf_timings.csv")
+header = ("particles,width,height,samples,bins,plain_s,sample_pass_s,sample_over_plain,"
+          "relight_s,resample_s,resample_over_relight,memory_MB\n")
+new = not os.path.exists(path)
+with open(path, "a") as f:
+    if new:
+        f.write(header)
+    f.write(",".join("%.6g" % v if isinstance(v, float) else str(v) for v in row) + "\n")
+print(header + ",".join(str(v) for v in row))
