@@ -21,17 +21,13 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import offscreen_window, particles_from
+from prVTKTesting import fcc_crystal, offscreen_window, particles_from
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
 
 cells, width, height, samples = (int(a) for a in (sys.argv[1:5] + ["40", "1280", "720", "64"][len(sys.argv[1:5]):]))
-g = np.arange(cells)
-base = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3).astype(float)
-xyz = (base[:, None, :] + np.array([[0, 0, 0], [.5, .5, 0], [.5, 0, .5], [0, .5, .5]])[None]).reshape(-1, 3)
-rgb = np.where((np.random.default_rng(1).random(len(xyz)) < 0.3)[:, None], [220, 60, 40],
-               [90, 140, 230]).astype(np.uint8)
+xyz, rgb = fcc_crystal(cells)
 
 
 def view(sndf):

@@ -9,7 +9,8 @@ from plain VTK Python. Checked:
   is the plain image;
 - re-lighting: another light re-shades the converged S-NDFs without a sample pass and matches
   the super-sampled image under the new light; a camera move restarts;
-- other geometry and background: an opaque box in front of part of the crystal;
+- other geometry (an opaque box in front of part of the crystal): not sampled yet, one warning
+  and the plain image;
 - bad input: an empty input, a memory limit below 4x4 bins (a warning, the plain image), a limit
   that forces fewer bins, a wrong bin count, a resize while refining, NaN/Inf positions, a
   translucent particle actor (a warning, the plain image); --gl33: a context without compute
@@ -22,7 +23,7 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish, offscreen_window, particles_from
+from prVTKTesting import Messages, check, fcc_crystal, finish, offscreen_window, particles_from
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersSources import vtkCubeSource
@@ -32,16 +33,6 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 W, H = 120, 90
 S = 16  # reference super-sampling per axis
-
-
-def crystal(cells):
-    g = np.arange(cells)
-    base = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3).astype(float)
-    offsets = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
-    xyz = (base[:, None, :] + offsets[None]).reshape(-1, 3)
-    species = np.random.default_rng(1).random(len(xyz)) < 0.3
-    rgb = np.where(species[:, None], [220, 60, 40], [90, 140, 230]).astype(np.uint8)
-    return xyz, rgb
 
 
 def scene(xyz, rgb, size, sndf=None, box=False):
@@ -120,7 +111,7 @@ def error(a, b):
 
 
 gl33 = "--gl33" in sys.argv
-xyz, rgb = crystal(16)
+xyz, rgb = fcc_crystal(16)
 
 if gl33:
     # --- a context without compute shaders: one error, the plain image --------------------------

@@ -121,3 +121,17 @@ def actor_view(mapper, size=(200, 200)):
     renderer = vtkRenderer()
     renderer.AddActor(actor)
     return actor, renderer, offscreen_window(renderer, size)
+
+
+def fcc_crystal(cells, fraction=0.3, seed=1):
+    """An fcc crystal of cells^3 unit cells (lattice constant 1, 4 atoms each) of two species:
+    returns (xyz, rgb), a random `fraction` of the atoms red (220, 60, 40), the others blue
+    (90, 140, 230), as uint8."""
+    import numpy as np
+    g = np.arange(cells)
+    base = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3).astype(float)
+    offsets = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+    xyz = (base[:, None, :] + offsets[None]).reshape(-1, 3)
+    species = np.random.default_rng(seed).random(len(xyz)) < fraction
+    rgb = np.where(species[:, None], [220, 60, 40], [90, 140, 230]).astype(np.uint8)
+    return xyz, rgb
