@@ -8,7 +8,10 @@ lattice constants, headlight, at WIDTHxHEIGHT. Measured in the same run:
 - re-light: a frame after a light change once refinement stopped (table + re-shade, no sample);
 - re-sample to the same quality: SAMPLES sample passes (what plain super-sampling costs after the
   same light change);
-- memory of the S-NDFs.
+- memory of the S-NDFs;
+- per-stage GPU times (timer queries, a second run with CollectTimings on): a sample pass's
+  delegate draw into the G-buffer, its accumulation into the S-NDFs, the shade + composite; and
+  the re-light's shade (table + bin sums formed again + composite).
 
 usage: Scripts/with_xvfb.sh python3 Benchmarks/sndf_benchmark.py [CELLS WIDTH HEIGHT SAMPLES]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
@@ -85,11 +88,36 @@ relight = timed(window)
 light.SetIntensity(0.8)
 relight = min(relight, timed(window))
 resample = samples * sample
+
+# per-stage GPU times
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(1)
+sndf.SetTargetSamples(samples)
+sndf.CollectTimingsOn()
+renderer, window = view(sndf)
+timed(window)
+stages = []
+for k in range(samples):
+    timed(window)
+    if k > 0:
+        stages.append([sndf.GetLastSampleSeconds(), sndf.GetLastAccumulateSeconds(),
+                       sndf.GetLastShadeSeconds()])
+stages = np.mean(stages, axis=0)
+light = vtkLight()
+light.SetLightTypeToCameraLight()
+light.SetPosition(1, 0.5, 0.4)
+renderer.RemoveAllLights()
+renderer.AddLight(light)
+timed(window)
+relight_shade = sndf.GetLastShadeSeconds()
+
 row = [len(xyz), width, height, samples, sndf.GetActiveBinsPerAxis(), plain, sample,
-       sample / plain, relight, resample, resample / relight, sndf.GetMemoryBytes() / 2**20]
+       sample / plain, relight, resample, resample / relight, sndf.GetMemoryBytes() / 2**20,
+       stages[0], stages[1], stages[2], relight_shade]
 path = os.path.join(os.path.dirname(__file__), "results", "sndf_timings.csv")
 header = ("particles,width,height,samples,bins,plain_s,sample_pass_s,sample_over_plain,"
-          "relight_s,resample_s,resample_over_relight,memory_MB\n")
+          "relight_s,resample_s,resample_over_relight,memory_MB,gpu_sample_s,gpu_accumulate_s,"
+          "gpu_shade_s,gpu_relight_shade_s\n")
 new = not os.path.exists(path)
 with open(path, "a") as f:
     if new:

@@ -6,30 +6,39 @@
 //
 // The G-buffer of one jittered sample pass:
 //   prColour   what the scene drew: the shaded colour of other geometry or the
-//              background; for a particle, the radiance its AO source adds
-//   prNormal   particles: (n.x, n.y, ambient visibility, 1); else 0
-//   prAmbient  particles: the ambient colour (VTK's ambientColor)
+//              background; for a particle the part of its shading that needs
+//              no normal: AO * ambientColor plus the radiance its AO source
+//              adds
+//   prNormal   particles: (n.x, n.y, ambient visibility AO, 1); else 0
 //   prDiffuse  particles: the diffuse colour (VTK's diffuseColor)
 //   prDepth    window depth
-// Per pixel (prSums, 3 vec4):
-//   [0] = (sum AO * ambientColor, sum AO)   [1] = (unused, max(1 - depth))
-//   [2] = sum prColour (rgba)
-// and per bin two words (prBinWords): its sample count (low 16 bits) and the
+// Per pixel (prSums, 4 vec4):
+//   [0] = sum prColour (rgba)
+//   [1] = (sum AO * diffuseColor * D(bin), max(1 - depth))
+//   [2] = (sum S(bin), number of particle samples Nc)
+//   [3] = (sum AO, 0, 0, 0)
+// D and S are the lighting table's diffuse and specular rows (SNDFResolve.glsl).
+// Shading is linear in the samples for a fixed table, so [1].rgb and [2].rgb
+// are the shaded bin sums of SNDFResolve.glsl kept up to date sample by
+// sample: a refinement frame costs O(1) per pixel, not O(bins); only a new
+// table (re-lighting) sums the bins again.
+// Per bin two words (prBinWords): its sample count (low 16 bits) and the
 // running mean of AO * diffuseColor of its samples, 16-bit fixed point over
 // [0, 2] per channel (R in the high half of word 0, G and B in word 1): the
 // colour is kept per bin because colour and normal are correlated where
 // about one particle covers a pixel (two species split it along their
-// silhouettes).
+// silhouettes). After the bins, prBins^2 / 32 words (at least one) mark the
+// occupied bins, so that re-lighting visits those only.
 //=========================================================================
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 16, local_size_y = 16) in;
 
 //PR::Include SNDFBins
 
 uniform sampler2D prColour;
 uniform sampler2D prNormal;
-uniform sampler2D prAmbient;
 uniform sampler2D prDiffuse;
 uniform sampler2D prDepth;
+uniform sampler2D prTable;
 uniform ivec2 prSize;
 uniform int prBins;
 uniform int prWordsPerPixel;
@@ -57,15 +66,15 @@ void main()
   }
   uint pixel = uint(p.y) * uint(prSize.x) + uint(p.x);
   vec4 normal = texelFetch(prNormal, p, 0);
-  vec4 s0 = prSums[3u * pixel];
-  vec4 s1 = prSums[3u * pixel + 1u];
+  vec4 s1 = prSums[4u * pixel + 1u];
   float depth = texelFetch(prDepth, p, 0).r;
   if (normal.w > 0.5 && !any(isnan(normal.xy)))
   {
     float ao = clamp(normal.z, 0.0, 1.0);
-    s0 += prFinite(vec4(ao * texelFetch(prAmbient, p, 0).rgb, ao));
     vec3 diffuse = clamp(prFinite(vec4(ao * texelFetch(prDiffuse, p, 0).rgb, 0.0)).rgb, 0.0, 2.0);
-    uint word = pixel * uint(prWordsPerPixel) + 2u * prSNDFBin(normal.xy, prBins);
+    uint bin = prSNDFBin(normal.xy, prBins);
+    uint first = pixel * uint(prWordsPerPixel);
+    uint word = first + 2u * bin;
     uint w0 = prBinWords[word];
     uint w1 = prBinWords[word + 1u];
     uint count = (w0 & 0xFFFFu) + 1u;
@@ -74,9 +83,13 @@ void main()
     prSNDFPackMean(count, mean, w0, w1);
     prBinWords[word] = w0;
     prBinWords[word + 1u] = w1;
+    uint mask = first + uint(2 * prBins * prBins) + (bin >> 5u);
+    prBinWords[mask] |= 1u << (bin & 31u);
+    s1.rgb += diffuse * texelFetch(prTable, ivec2(int(bin), 0), 0).rgb;
+    prSums[4u * pixel + 2u] += vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0);
+    prSums[4u * pixel + 3u].x += ao;
   }
   s1.w = max(s1.w, 1.0 - depth);
-  prSums[3u * pixel] = s0;
-  prSums[3u * pixel + 1u] = s1;
-  prSums[3u * pixel + 2u] += prFinite(texelFetch(prColour, p, 0));
+  prSums[4u * pixel + 1u] = s1;
+  prSums[4u * pixel] += prFinite(texelFetch(prColour, p, 0));
 }

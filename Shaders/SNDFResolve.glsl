@@ -3,22 +3,30 @@
 // SNDFResolve.glsl -- vtkSNDFRenderPass: shade every pixel from its S-NDF
 // and the pre-integrated lighting table (Ibrahim et al. 2017, Eqs. 12-14):
 //
-//   L(x) = ( sum_i AO_i ambient_i
+//   L(x) = ( sum_k colour_k
 //          + sum_b c_b mean_b(AO diffuse) * D(b)
-//          + specularColour (sum_i AO_i / Nc) * sum_b c_b S(b)
-//          + sum_k colour_k ) / N
+//          + specularColour (sum_i AO_i / Nc) * sum_b c_b S(b) ) / N
 //
-// N samples per pixel, Nc of them on particles, c_b the count of bin b and
+// N samples per pixel, Nc of them on particles, colour_k what sample k drew
+// without its normal (a particle's AO * ambient colour and ambient light,
+// other geometry's and the background's colour), c_b the count of bin b and
 // mean_b its samples' mean diffuse colour, D(b) and S(b) the lights' diffuse
 // and specular terms averaged over the normals of bin b (table rows 0 and
 // 1). Writes the colour and the nearest depth seen.
+//
+// The two bin sums are linear in the samples for a fixed table, so
+// SNDFAccumulate.glsl keeps them up to date per sample (prSums[1].rgb and
+// prSums[2].rgb). With prRebake set (the table changed: re-lighting) they are
+// summed again over the occupied bins and stored; otherwise they are read,
+// and the shade costs O(1) per pixel whatever the bin count.
 //=========================================================================
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 16, local_size_y = 16) in;
 
 uniform sampler2D prTable;
 uniform ivec2 prSize;
 uniform int prBins;
 uniform int prWordsPerPixel;
+uniform int prRebake;
 uniform float prInverseSamples;
 uniform vec3 prSpecularColour;
 
@@ -28,7 +36,7 @@ layout(std430, binding = 0) readonly buffer prBinBuffer
 {
   uint prBinWords[];
 };
-layout(std430, binding = 1) readonly buffer prSumBuffer
+layout(std430, binding = 1) buffer prSumBuffer
 {
   vec4 prSums[];
 };
@@ -43,33 +51,43 @@ void main()
     return;
   }
   uint pixel = uint(p.y) * uint(prSize.x) + uint(p.x);
-  vec4 s0 = prSums[3u * pixel];
-  vec4 s1 = prSums[3u * pixel + 1u];
-  vec4 s2 = prSums[3u * pixel + 2u];
-  vec3 diffuse = vec3(0.0);
-  vec3 specular = vec3(0.0);
-  float covered = 0.0;
-  int bins = prBins * prBins;
-  uint first = pixel * uint(prWordsPerPixel);
-  for (int bin = 0; bin < bins; ++bin)
+  vec4 colours = prSums[4u * pixel];
+  vec4 s1 = prSums[4u * pixel + 1u];
+  vec4 s2 = prSums[4u * pixel + 2u];
+  float aoSum = prSums[4u * pixel + 3u].x;
+  if (prRebake != 0 && s2.a > 0.0)
   {
-    uint w0 = prBinWords[first + 2u * uint(bin)];
-    if (w0 == 0u)
+    vec3 diffuse = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    uint first = pixel * uint(prWordsPerPixel);
+    uint masks = first + uint(2 * prBins * prBins);
+    int maskWords = max(1, prBins * prBins / 32);
+    for (int m = 0; m < maskWords; ++m)
     {
-      continue;
+      uint mask = prBinWords[masks + uint(m)];
+      while (mask != 0u)
+      {
+        int bit = findLSB(mask);
+        mask &= mask - 1u;
+        int bin = 32 * m + bit;
+        uint w0 = prBinWords[first + 2u * uint(bin)];
+        float count = float(w0 & 0xFFFFu);
+        vec3 mean = prSNDFUnpackMean(w0, prBinWords[first + 2u * uint(bin) + 1u]);
+        diffuse += count * mean * texelFetch(prTable, ivec2(bin, 0), 0).rgb;
+        specular += count * texelFetch(prTable, ivec2(bin, 1), 0).rgb;
+      }
     }
-    float count = float(w0 & 0xFFFFu);
-    vec3 mean = prSNDFUnpackMean(w0, prBinWords[first + 2u * uint(bin) + 1u]);
-    diffuse += count * mean * texelFetch(prTable, ivec2(bin, 0), 0).rgb;
-    specular += count * texelFetch(prTable, ivec2(bin, 1), 0).rgb;
-    covered += count;
+    s1.rgb = diffuse;
+    s2.rgb = specular;
+    prSums[4u * pixel + 1u] = s1;
+    prSums[4u * pixel + 2u] = s2;
   }
-  vec3 particles = s0.rgb + diffuse;
-  if (covered > 0.0)
+  vec3 particles = s1.rgb;
+  if (s2.a > 0.0)
   {
-    particles += prSpecularColour * (s0.a / covered) * specular;
+    particles += prSpecularColour * (aoSum / s2.a) * s2.rgb;
   }
-  vec4 colour = vec4(particles + s2.rgb, s2.a) * prInverseSamples;
+  vec4 colour = vec4(particles + colours.rgb, colours.a) * prInverseSamples;
   if (any(isnan(colour)) || any(isinf(colour)))
   {
     colour = vec4(0.0, 0.0, 0.0, 1.0);

@@ -42,12 +42,19 @@
 namespace
 {
 // the colour attachments of the G-buffer (0: colour as drawn; see SNDFAccumulate.glsl)
-const unsigned int NumberOfAttachments = 4;
-// bytes per pixel besides the bin counts: three vec4 of sums
-const double SumBytesPerPixel = 48.0;
+const unsigned int NumberOfAttachments = 3;
+// bytes per pixel besides the bin counts: four vec4 of sums
+const double SumBytesPerPixel = 64.0;
 // sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
 // the bins per axis, at least 8)
 const int TableSubsamplesPerAxis = 512;
+
+// words per pixel of the bin buffer: two per bin (count and mean colour), then one bit per bin
+// marking the occupied ones
+int WordsPerPixel(int bins)
+{
+  return 2 * bins * bins + std::max(1, bins * bins / 32);
+}
 
 // the radical inverse in base b of k (Halton sequence)
 double RadicalInverse(unsigned int k, unsigned int base)
@@ -126,6 +133,8 @@ public:
   int Bins = 0;
   int WordsPerPixel = 0;
   bool HaveTable = false;
+  // the shaded bin sums need summing again over the bins (the table changed under samples)
+  bool Rebake = false;
   int TableBins = 0;
   std::vector<double> SampleState;
   std::vector<double> TableKey;
@@ -299,7 +308,7 @@ bool vtkSNDFRenderPass::PreReplaceShaderValues(std::string&, std::string&,
   // gl_FragData index it finds; outputs not written would be undefined)
   const std::string tag = "//VTK::DepthPeeling::Impl";
   vtkShaderProgram::Substitute(fragmentShader, tag,
-    "gl_FragData[1] = vec4(0.0);\n  gl_FragData[2] = vec4(0.0);\n  gl_FragData[3] = vec4(0.0);\n  " +
+    "gl_FragData[1] = vec4(0.0);\n  gl_FragData[2] = vec4(0.0);\n  " +
       tag,
     false);
   return true;
@@ -316,13 +325,13 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
   }
   vtkParticleShaderHooks& hooks = this->Internals->Hooks;
   hooks.Begin(vertexShader, geometryShader, fragmentShader);
-  // the sample: the view-space normal (facing the viewer), the ambient visibility, a flag, the
-  // ambient and diffuse colours; the colour target keeps only what the AO source adds
+  // the sample: the view-space normal (facing the viewer), the ambient visibility, a flag and
+  // the diffuse colour; the colour target keeps the shading that needs no normal (the occluded
+  // ambient colour and what the AO source adds)
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
     "gl_FragData[1] = vec4(normalVCVSOutput.xy, prAmbientOcclusion, 1.0);\n"
-    "    gl_FragData[2] = vec4(ambientColor, 1.0);\n"
-    "    gl_FragData[3] = vec4(diffuseColor, 1.0);\n"
-    "    gl_FragData[0] = vec4(prAmbientLight, 1.0);");
+    "    gl_FragData[2] = vec4(diffuseColor, 1.0);\n"
+    "    gl_FragData[0] = vec4(prAmbientOcclusion * ambientColor + prAmbientLight, 1.0);");
   return true;
 }
 
@@ -440,7 +449,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // bins that fit the memory limit
   int bins = this->BinsPerAxis;
   auto bytesFor = [&](int b) {
-    return static_cast<double>(width) * height * (8.0 * b * b + SumBytesPerPixel);
+    return static_cast<double>(width) * height * (4.0 * WordsPerPixel(b) + SumBytesPerPixel);
   };
   while (bins >= 4 && bytesFor(bins) > this->MaximumMemory * 1048576.0)
   {
@@ -539,6 +548,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
         }
         else
         {
+          // 8 bits, as the window: the background and other geometry come out exactly as drawn
+          // without the pass (a particle's ambient term is quantised per sample, < 0.5/255)
           t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
         }
       }
@@ -563,11 +574,12 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       internals.Target->AddDepthAttachment(internals.Depth);
       ostate->PopFramebufferBindings();
 
-      internals.WordsPerPixel = 2 * bins * bins;
+      internals.WordsPerPixel = WordsPerPixel(bins);
       const std::size_t pixels = static_cast<std::size_t>(width) * height;
       if (!vtkParticleComputeProgram::AllocateStorage(
             internals.Counts, pixels * internals.WordsPerPixel * 4) ||
-        !vtkParticleComputeProgram::AllocateStorage(internals.Sums, pixels * 48))
+        !vtkParticleComputeProgram::AllocateStorage(
+          internals.Sums, pixels * static_cast<std::size_t>(SumBytesPerPixel)))
       {
         vtkErrorMacro(<< "Could not allocate " << bytesFor(bins) / 1048576.0
                       << " MB for the S-NDFs: the view is rendered as without them.");
@@ -582,7 +594,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     vtkParticleComputeProgram::ClearStorage(internals.Counts, pixels * internals.WordsPerPixel * 4, 0u);
-    vtkParticleComputeProgram::ClearStorage(internals.Sums, pixels * 48, 0u);
+    vtkParticleComputeProgram::ClearStorage(
+      internals.Sums, pixels * static_cast<std::size_t>(SumBytesPerPixel), 0u);
+    internals.Rebake = false;
     internals.SampleState = state;
     internals.ResolveKey.clear();
     this->NumberOfSamples = 0;
@@ -608,77 +622,6 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
   }
 
-  // sample passes
-  const int samples =
-    std::min(this->SamplesPerFrame, this->TargetSamples - this->NumberOfSamples);
-  const unsigned int groupsX = static_cast<unsigned int>((width + 7) / 8);
-  const unsigned int groupsY = static_cast<unsigned int>((height + 7) / 8);
-  for (int k = 0; k < samples; ++k)
-  {
-    double centre[2];
-    camera->GetWindowCenter(centre);
-    double offset[2];
-    JitterOffset(this->NumberOfSamples, offset);
-    camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / width, centre[1] + 2.0 * offset[1] / height);
-
-    internals.BeginStage(timing, 0);
-    ostate->PushFramebufferBindings();
-    internals.Target->Bind();
-    internals.Target->ActivateDrawBuffers(NumberOfAttachments);
-    {
-      vtkOpenGLState::ScopedglViewport viewport(ostate);
-      vtkOpenGLState::ScopedglScissor scissor(ostate);
-      ostate->vtkglViewport(0, 0, width, height);
-      ostate->vtkglScissor(0, 0, width, height);
-      ren->Clear();
-      const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-      for (unsigned int a = 1; a < NumberOfAttachments; ++a)
-      {
-        glClearBufferfv(GL_COLOR, static_cast<GLint>(a), zero);
-      }
-      vtkRenderState sampleState(ren);
-      sampleState.SetFrameBuffer(internals.Target);
-      sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
-      this->PreRender(&sampleState);
-      this->DelegatePass->Render(&sampleState);
-      this->PostRender(&sampleState);
-      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    }
-    ostate->PopFramebufferBindings();
-    internals.EndStage(timing);
-    camera->SetWindowCenter(centre[0], centre[1]);
-    ++this->NumberOfSamplePasses;
-
-    // into the S-NDFs
-    internals.BeginStage(timing, 1);
-    vtkParticleComputeProgram* accumulate = internals.Accumulate;
-    accumulate->Use();
-    const char* samplers[NumberOfAttachments] = { "prColour", "prNormal", "prAmbient",
-      "prDiffuse" };
-    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-    {
-      internals.Attachments[a]->Activate();
-      accumulate->SetUniformi(samplers[a], internals.Attachments[a]->GetTextureUnit());
-    }
-    internals.Depth->Activate();
-    accumulate->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
-    accumulate->SetUniform2i("prSize", width, height);
-    accumulate->SetUniformi("prBins", bins);
-    accumulate->SetUniformi("prWordsPerPixel", internals.WordsPerPixel);
-    vtkParticleComputeProgram::BindStorage(0, internals.Counts);
-    vtkParticleComputeProgram::BindStorage(1, internals.Sums);
-    accumulate->Dispatch(groupsX, groupsY);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-    {
-      internals.Attachments[a]->Deactivate();
-    }
-    internals.Depth->Deactivate();
-    vtkParticleComputeProgram::UseNone();
-    internals.EndStage(timing);
-    ++this->NumberOfSamples;
-  }
-
   // the lighting table (Eqs. 12-14) for the renderer's lights and the first particle actor's
   // specular power
   vtkProperty* material = particles[0]->GetProperty();
@@ -693,10 +636,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
                          "uses the first one's.");
     }
   }
-  internals.BeginStage(timing, 2);
   // the renderer's light geometry (lights that follow the camera), uniforms and complexity are
   // brought up to date by its lights pass, which
   // does not run when nothing is sampled
+  internals.BeginStage(timing, 2);
   internals.Lights->Render(s);
   std::vector<double> tableKey = { static_cast<double>(ren->GetLightingComplexity()),
     static_cast<double>(ren->GetLightingCount()), material->GetSpecularPower(),
@@ -760,6 +703,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     vtkOpenGLQuadHelper* quad = internals.TableQuad.get();
     if (!quad->Program)
     {
+      internals.EndStage(timing);
       vtkErrorMacro(<< "The S-NDF lighting table shader did not build.");
       renderPlain();
       return;
@@ -803,9 +747,87 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.TableKey = tableKey;
     internals.HaveTable = true;
     ++this->NumberOfTableBuilds;
+    // the samples taken so far were shaded with the old table (none after a restart)
+    internals.Rebake = internals.Rebake || this->NumberOfSamples > 0;
   }
 
-  // re-shade when samples, table or specular colour changed
+  internals.EndStage(timing);
+
+  // sample passes
+  const int samples =
+    std::min(this->SamplesPerFrame, this->TargetSamples - this->NumberOfSamples);
+  const unsigned int groupsX = static_cast<unsigned int>((width + 15) / 16);
+  const unsigned int groupsY = static_cast<unsigned int>((height + 15) / 16);
+  for (int k = 0; k < samples; ++k)
+  {
+    double centre[2];
+    camera->GetWindowCenter(centre);
+    double offset[2];
+    JitterOffset(this->NumberOfSamples, offset);
+    camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / width, centre[1] + 2.0 * offset[1] / height);
+
+    internals.BeginStage(timing, 0);
+    ostate->PushFramebufferBindings();
+    internals.Target->Bind();
+    internals.Target->ActivateDrawBuffers(NumberOfAttachments);
+    {
+      vtkOpenGLState::ScopedglViewport viewport(ostate);
+      vtkOpenGLState::ScopedglScissor scissor(ostate);
+      ostate->vtkglViewport(0, 0, width, height);
+      ostate->vtkglScissor(0, 0, width, height);
+      ren->Clear();
+      const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+      for (unsigned int a = 1; a < NumberOfAttachments; ++a)
+      {
+        glClearBufferfv(GL_COLOR, static_cast<GLint>(a), zero);
+      }
+      vtkRenderState sampleState(ren);
+      sampleState.SetFrameBuffer(internals.Target);
+      sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+      this->PreRender(&sampleState);
+      this->DelegatePass->Render(&sampleState);
+      this->PostRender(&sampleState);
+      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    }
+    ostate->PopFramebufferBindings();
+    internals.EndStage(timing);
+    camera->SetWindowCenter(centre[0], centre[1]);
+    ++this->NumberOfSamplePasses;
+
+    // into the S-NDFs
+    internals.BeginStage(timing, 1);
+    vtkParticleComputeProgram* accumulate = internals.Accumulate;
+    accumulate->Use();
+    const char* samplers[NumberOfAttachments] = { "prColour", "prNormal", "prDiffuse" };
+    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+    {
+      internals.Attachments[a]->Activate();
+      accumulate->SetUniformi(samplers[a], internals.Attachments[a]->GetTextureUnit());
+    }
+    internals.Depth->Activate();
+    accumulate->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
+    internals.Table->Activate();
+    accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
+    accumulate->SetUniform2i("prSize", width, height);
+    accumulate->SetUniformi("prBins", bins);
+    accumulate->SetUniformi("prWordsPerPixel", internals.WordsPerPixel);
+    vtkParticleComputeProgram::BindStorage(0, internals.Counts);
+    vtkParticleComputeProgram::BindStorage(1, internals.Sums);
+    accumulate->Dispatch(groupsX, groupsY);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+    {
+      internals.Attachments[a]->Deactivate();
+    }
+    internals.Depth->Deactivate();
+    internals.Table->Deactivate();
+    vtkParticleComputeProgram::UseNone();
+    internals.EndStage(timing);
+    ++this->NumberOfSamples;
+  }
+
+  // shade when samples, table or specular colour changed
+  internals.BeginStage(timing, 2);
   double specular[3];
   material->GetSpecularColor(specular);
   for (double& c : specular)
@@ -823,6 +845,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     resolve->SetUniform2i("prSize", width, height);
     resolve->SetUniformi("prBins", bins);
     resolve->SetUniformi("prWordsPerPixel", internals.WordsPerPixel);
+    resolve->SetUniformi("prRebake", internals.Rebake ? 1 : 0);
     resolve->SetUniformf("prInverseSamples", 1.0f / static_cast<float>(std::max(1, this->NumberOfSamples)));
     resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
       static_cast<float>(specular[1]), static_cast<float>(specular[2]));
@@ -837,6 +860,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Table->Deactivate();
     vtkParticleComputeProgram::UseNone();
     internals.ResolveKey = resolveKey;
+    internals.Rebake = false;
     ++this->NumberOfResolves;
   }
 

@@ -21,12 +21,14 @@
  * (sample k: the Halton (2, 3) point k, sample 0 at the pixel centre; box filter over the pixel),
  * into a G-buffer: the particle mappers' shaders (vtkParticleSphereMapper, through the
  * //PR::Shading::Impl hook) write the sample's view-space normal, its ambient visibility (from an
- * AO pass in the delegate) and the actor's ambient and diffuse colours; every other shader writes
- * zeros there (code before VTK's //VTK::DepthPeeling::Impl tag), and the colour where no particle
- * is hit (the background) is kept as drawn. A compute shader enters each sample into the pixel's S-NDF:
- * BinsPerAxis^2 "projected normals" bins over the unit disk (8 x 8 by default; 4 x 4 and 16 x 16
- * selectable), 16-bit counts with the bin's mean diffuse colour, plus the pixel's colour sums. P_x(D_i) of Eq. 5 is a bin's count
- * over the samples taken. Refinement stops at TargetSamples per pixel (Converged).
+ * AO pass in the delegate) and the actor's diffuse colour into two RGBA16F targets, and into the
+ * 8-bit colour target the shading that needs no normal (the occluded ambient colour and the AO source's
+ * ambient light); every other shader writes zeros into the two targets (code before VTK's
+ * //VTK::DepthPeeling::Impl tag), and the colour where no particle is hit (the background) is
+ * kept as drawn. A compute shader enters each sample into the pixel's S-NDF: BinsPerAxis^2
+ * "projected normals" bins over the unit disk (8 x 8 by default; 4 x 4 and 16 x 16 selectable),
+ * 16-bit counts with the bin's mean diffuse colour and a bit mask of the occupied bins, plus the
+ * pixel's sums. P_x(D_i) of Eq. 5 is a bin's count over the samples taken. Refinement stops at TargetSamples per pixel (Converged).
  *
  * Shading (Eqs. 12-14). A table holds, per bin, VTK's light sums (diffuse and specular, every
  * light of the renderer as vtkParticleSphereMapper shades: the same GLSL, GetLightSumCode)
@@ -34,11 +36,16 @@
  * uniformly hit spheres produce (the L~(D_i) of Eq. 13, pre-integrated, with sigma_perp folded in
  * because counts are already projected-area probabilities). Each pixel is then
  *
- *     L = [ sum AO*ambient + sum_b c_b mean_b(AO*diffuse) D(b)
- *           + specular colour * (sum AO / Nc) * sum_b c_b S(b) + sum of background colours ] / N
+ *     L = [ sum of colours + sum_b c_b mean_b(AO*diffuse) D(b)
+ *           + specular colour * (sum AO / Nc) * sum_b c_b S(b) ] / N
  *
- * (N samples, Nc of them on particles, c_b the bin counts, mean_b the bin's mean colour). The table is rebuilt and the pixels
- * re-shaded whenever the lights change; nothing is sampled again.
+ * (N samples, Nc of them on particles, the colours those of the colour target: AO*ambient plus
+ * ambient light for particles, the drawn colour elsewhere; c_b the bin counts, mean_b the bin's
+ * mean colour). For a
+ * fixed table the two bin sums are linear in the samples, so each sample adds its bin's table
+ * entries to per-pixel sums as it is binned, and a refinement frame shades in O(1) per pixel
+ * whatever the bin count. The table is rebuilt whenever the lights change, and the bin sums are
+ * then formed again once from the occupied bins (re-lighting: no sample is taken again).
  *
  * Choices where the paper is silent or differs (our users colour by type or speed):
  * - Colour. The paper shades normals only. Here each bin also keeps the running mean of its
@@ -55,9 +62,10 @@
  *   when the particle actors differ); a change of any particle actor's ambient or diffuse
  *   material, of its colours (colour map, scalars) or of its geometry samples again (the samples
  *   store colours, and colour mapping is not linear in the data). Changing lights re-shades only.
- * - Memory. The S-NDF of the view takes width * height * (8 BinsPerAxis^2 + 48) bytes (a 16-bit
- *   count and three 16-bit mean colour channels per bin; 8 x 8 bins: 560 bytes per pixel, 492 MB
- *   at 1280 x 720). Above MaximumMemory (MB) the pass uses fewer bins, and renders the plain
+ * - Memory. The S-NDF of the view takes width * height * (8 BinsPerAxis^2 + 4 max(1,
+ *   BinsPerAxis^2 / 32) + 64) bytes (a 16-bit count and three 16-bit mean colour channels per
+ *   bin, the occupancy bits, four float sums; 8 x 8 bins: 584 bytes per pixel, 513 MiB at
+ *   1280 x 720). Above MaximumMemory (MB) the pass uses fewer bins, and renders the plain
  *   delegate when even 4 x 4 do not fit, with a warning each time.
  *
  * Not (yet) here: the S-MIP of paper Sec. 6 (64^2 tiles, page table, LRU tile cache, zoom out

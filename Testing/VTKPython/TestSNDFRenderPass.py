@@ -7,6 +7,8 @@ from plain VTK Python. Checked:
   samples per pixel, against the 16x16 super-sampled core (rendered at 16x the size and box
   filtered): the plain one-sample image is far off, the S-NDF image close; the frame of a change
   is the plain image;
+- shading per sample: the shaded bin sums kept up to date sample by sample equal those formed
+  again from the bins;
 - re-lighting: another light re-shades the converged S-NDFs without a sample pass and matches
   the super-sampled image under the new light; a camera move restarts;
 - other geometry (an opaque box in front of part of the crystal): not sampled yet, one warning
@@ -189,6 +191,18 @@ passes = sndf.GetNumberOfSamplePasses()
 image(window)
 check(sndf.GetNumberOfSamplePasses() == passes, "converged: no more sample passes")
 
+# the shaded bin sums kept per sample equal the sums formed again from the bins (a table build
+# forced by touching the light)
+lights = renderer.GetLights()
+lights.InitTraversal()
+builds = sndf.GetNumberOfTableBuilds()
+lights.GetNextItem().Modified()
+rebaked = image(window)
+print("per-sample shading vs shading from the bins: max %.1f /255" % np.abs(rebaked - out).max())
+check(sndf.GetNumberOfTableBuilds() == builds + 1 and sndf.GetNumberOfSamplePasses() == passes
+      and np.abs(rebaked - out).max() <= 1.0,
+      "per-sample shading equals shading from the bins (max %.1f /255)" % np.abs(rebaked - out).max())
+
 # --- re-lighting -----------------------------------------------------------------------------
 light = vtkLight()
 light.SetLightTypeToCameraLight()
@@ -248,7 +262,7 @@ check(np.array_equal(small, plain) and len(messages.warnings) == 1 and "MaximumM
 
 # a limit between 4x4 and 8x8: 4x4 bins with a warning, still converging
 sndf = pr.vtkSNDFRenderPass()
-sndf.SetMaximumMemory(W * H * (8 * 16 + 48) * 1.5 / 1048576.0)
+sndf.SetMaximumMemory(W * H * (8 * 16 + 64) * 1.5 / 1048576.0)
 sndf.SetSamplesPerFrame(64)
 messages = Messages(sndf)
 renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
