@@ -9,7 +9,10 @@
 //              background; for a particle the part of its shading that needs
 //              no normal: AO * ambientColor plus the radiance its AO source
 //              adds
-//   prNormal   particles: (n.x, n.y, ambient visibility AO, 1); else 0
+//   prNormal   particles: (n.x, n.y, 2 + ambient visibility AO, 1); other
+//              geometry: (0, 0, -1, 1); the background: what the delegate's
+//              clear left (components in [0, 1]), so a sample is a particle's
+//              when its third component exceeds 1.5
 //   prDiffuse  particles: the diffuse colour (VTK's diffuseColor)
 //   prDepth    window depth
 // Per pixel (prSums, 4 vec4):
@@ -68,9 +71,9 @@ void main()
   vec4 normal = texelFetch(prNormal, p, 0);
   vec4 s1 = prSums[4u * pixel + 1u];
   float depth = texelFetch(prDepth, p, 0).r;
-  if (normal.w > 0.5 && !any(isnan(normal.xy)))
+  if (normal.z > 1.5 && !any(isnan(normal.xy)))
   {
-    float ao = clamp(normal.z, 0.0, 1.0);
+    float ao = clamp(normal.z - 2.0, 0.0, 1.0);
     vec3 diffuse = clamp(prFinite(vec4(ao * texelFetch(prDiffuse, p, 0).rgb, 0.0)).rgb, 0.0, 2.0);
     uint bin = prSNDFBin(normal.xy, prBins);
     uint first = pixel * uint(prWordsPerPixel);

@@ -304,11 +304,13 @@ bool vtkSNDFRenderPass::PreReplaceShaderValues(std::string&, std::string&,
   {
     return true; // PostReplaceShaderValues writes the particle samples
   }
-  // every other shader leaves no particle sample behind (VTK declares an output per
-  // gl_FragData index it finds; outputs not written would be undefined)
+  // every other shader replaces the particle sample with "no particle" (VTK declares an output
+  // per gl_FragData index it finds; outputs not written would be undefined). Alpha 1: VTK
+  // blends opaque geometry too (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), so a write with alpha 0 would
+  // leave the particle sample behind it in place.
   const std::string tag = "//VTK::DepthPeeling::Impl";
   vtkShaderProgram::Substitute(fragmentShader, tag,
-    "gl_FragData[1] = vec4(0.0);\n  gl_FragData[2] = vec4(0.0);\n  " +
+    "gl_FragData[1] = vec4(0.0, 0.0, -1.0, 1.0);\n  gl_FragData[2] = vec4(0.0, 0.0, 0.0, 1.0);\n  " +
       tag,
     false);
   return true;
@@ -325,11 +327,12 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
   }
   vtkParticleShaderHooks& hooks = this->Internals->Hooks;
   hooks.Begin(vertexShader, geometryShader, fragmentShader);
-  // the sample: the view-space normal (facing the viewer), the ambient visibility, a flag and
-  // the diffuse colour; the colour target keeps the shading that needs no normal (the occluded
-  // ambient colour and what the AO source adds)
+  // the sample: the view-space normal (facing the viewer), the ambient visibility plus 2 (it
+  // marks a particle sample: the delegate's clear may fill the target with the background
+  // colour, components in [0, 1]) and the diffuse colour; the colour target keeps the shading
+  // that needs no normal (the occluded ambient colour and what the AO source adds)
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
-    "gl_FragData[1] = vec4(normalVCVSOutput.xy, prAmbientOcclusion, 1.0);\n"
+    "gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), 1.0);\n"
     "    gl_FragData[2] = vec4(diffuseColor, 1.0);\n"
     "    gl_FragData[0] = vec4(prAmbientOcclusion * ambientColor + prAmbientLight, 1.0);");
   return true;
@@ -387,13 +390,22 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
     else
     {
-      // Other geometry over a particle does not yet reliably replace the particle's sample in
-      // the G-buffer (measured: a box in front of a crystal, 165/255 at the 99th percentile),
-      // so the pass shades only views of particles alone (and the background).
-      unsupported = std::string("other geometry (") +
-        (mapper ? mapper->GetClassName() : prop->GetClassName()) +
-        ") is in the view; S-NDFs are drawn for views of particles alone";
+      // Other opaque geometry is sampled with the particles: its colour goes into the colour
+      // target and its fragments mark the other targets "no particle" (PreReplaceShaderValues).
+      // Translucent geometry would have to attenuate the particle samples behind it, and props
+      // that are not actors (volumes, images, 2D actors) do not take the marking.
+      if (!actor || !mapper)
+      {
+        unsupported = std::string("a ") + prop->GetClassName() +
+          " is in the view (S-NDFs are drawn for views of particles and opaque polygonal props)";
+      }
+      else if (actor->HasTranslucentPolygonalGeometry())
+      {
+        unsupported = std::string("translucent geometry (") + mapper->GetClassName() +
+          ") is in the view (S-NDFs are drawn for views of particles and opaque polygonal props)";
+      }
       state.push_back(static_cast<double>(prop->GetMTime()));
+      state.push_back(static_cast<double>(prop->GetRedrawMTime()));
     }
     if (mapper)
     {

@@ -76,13 +76,21 @@
  * prop's or mapper's or input's modification time, the background. What does not: lights, the
  * particle actors' specular colour and power.
  *
- * Unsupported scenes fall back to the delegate's plain image with one warning: any visible prop
- * other than opaque vtkParticleSphereMapper actors (other geometry drawn over a particle does not
- * yet reliably replace the particle's sample in the G-buffer: a box in front of a crystal was
- * off by 165/255 at the 99th percentile), translucent particle actors, vtkTransparentSphereMapper
- * and vtkMetaballMapper (they draw through their own targets), contexts without OpenGL 4.3
- * compute shaders. The background, plain or gradient, is sampled with the particles. Without
- * particle props the pass renders the delegate directly.
+ * Other geometry. Opaque polygonal props (surfaces, lines, points: any vtkActor whose mapper takes
+ * render-pass shader replacements) are sampled with the particles: their colour goes into the
+ * colour target as drawn and their fragments overwrite the particle targets with "no particle"
+ * (alpha 1, since VTK blends opaque geometry too), so a box through a crystal or the simulation
+ * box's outline converge to the super-sampled image like the particles (lines are box-filtered:
+ * anti-aliased). Particle samples are told from the background by their ambient visibility
+ * stored plus 2: a delegate that clears its target (vtkRenderStepsPass does) fills the particle
+ * targets with the background colour, components in [0, 1].
+ *
+ * Unsupported scenes fall back to the delegate's plain image with one warning: translucent
+ * actors (particles or other geometry: what lies behind them would have to be attenuated),
+ * props that are not actors (volumes, images, 2D actors), vtkTransparentSphereMapper and
+ * vtkMetaballMapper (they draw through their own targets), contexts without OpenGL 4.3 compute
+ * shaders. The background, plain or gradient, is sampled with the particles. Without particle
+ * props the pass renders the delegate directly.
  *
  * @sa vtkParticleSphereMapper vtkParticleShaderHooks vtkImageProcessingPass
  */

@@ -11,8 +11,9 @@ from plain VTK Python. Checked:
   again from the bins;
 - re-lighting: another light re-shades the converged S-NDFs without a sample pass and matches
   the super-sampled image under the new light; a camera move restarts;
-- other geometry (an opaque box in front of part of the crystal): not sampled yet, one warning
-  and the plain image;
+- other geometry: an opaque box through part of the crystal and the crystal's outline (lines)
+  converge to the super-sampled core like the crystal alone, the box's colour where it hides
+  particles; translucent geometry: one warning and the plain image;
 - bad input: an empty input, a memory limit below 4x4 bins (a warning, the plain image), a limit
   that forces fewer bins, a wrong bin count, a resize while refining, NaN/Inf positions, a
   translucent particle actor (a warning, the plain image); --gl33: a context without compute
@@ -20,6 +21,7 @@ from plain VTK Python. Checked:
 
 usage: python3 TestSNDFRenderPass.py [--gl33]
 """
+import itertools
 import sys
 
 import numpy as np
@@ -28,7 +30,7 @@ import particlerendering as pr
 from prVTKTesting import Messages, check, fcc_crystal, finish, offscreen_window, particles_from
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkOutlineSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
@@ -37,7 +39,7 @@ W, H = 120, 90
 S = 16  # reference super-sampling per axis
 
 
-def scene(xyz, rgb, size, sndf=None, box=False):
+def scene(xyz, rgb, size, sndf=None, box=False, box_opacity=1.0, line_width=1.0):
     data = particles_from(xyz)
     colours = numpy_to_vtk(rgb, deep=True)
     colours.SetName("rgb")
@@ -59,7 +61,18 @@ def scene(xyz, rgb, size, sndf=None, box=False):
         cube_actor = vtkActor()
         cube_actor.SetMapper(cube_mapper)
         cube_actor.GetProperty().SetColor(0.9, 0.85, 0.3)
+        cube_actor.GetProperty().SetOpacity(box_opacity)
         renderer.AddActor(cube_actor)
+        # the simulation box's outline, as ParaView shows a LAMMPS box: lines
+        outline = vtkOutlineSource()
+        outline.SetBounds(-0.5, 16.5, -0.5, 16.5, -0.5, 16.5)
+        outline_mapper = vtkPolyDataMapper()
+        outline_mapper.SetInputConnection(outline.GetOutputPort())
+        outline_actor = vtkActor()
+        outline_actor.SetMapper(outline_mapper)
+        outline_actor.GetProperty().SetColor(0.2, 0.9, 0.3)
+        outline_actor.GetProperty().SetLineWidth(line_width)
+        renderer.AddActor(outline_actor)
     window = offscreen_window(renderer, size)
     if sndf is not None:
         camera_pass = vtkCameraPass()
@@ -90,7 +103,8 @@ def image(window, width=W, height=H):
 
 def reference(xyz, rgb, light=None, box=False, specular=0.0):
     """The 16x16 super-sampled core: rendered at 16x the size, box filtered."""
-    renderer, window, actor = scene(xyz, rgb, (W * S, H * S), box=box)
+    # (lines S pixels wide at S times the size: one pixel wide in the filtered picture)
+    renderer, window, actor = scene(xyz, rgb, (W * S, H * S), box=box, line_width=S)
     actor.GetProperty().SetSpecular(specular)
     actor.GetProperty().SetSpecularPower(20)
     if light is not None:
@@ -109,7 +123,7 @@ def converge(sndf, window, limit=200):
 
 def error(a, b):
     d = np.abs(a - b)
-    return d.mean(), np.percentile(d.max(axis=2), 99), d.max()
+    return d.mean(), np.percentile(d.max(axis=-1), 99), d.max()
 
 
 gl33 = "--gl33" in sys.argv
@@ -229,16 +243,50 @@ image(window)
 check(sndf.GetNumberOfRestarts() == restarts + 1 and sndf.GetNumberOfSamples() == 0,
       "a camera move restarts (the plain image, no sample)")
 
-# --- other geometry: not yet sampled; a warning and the plain image ------------------------
+# --- other geometry: an opaque box through part of the crystal and the outline (lines) -------
+ref_box = reference(xyz, rgb, box=True)
 sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(32)
 messages = Messages(sndf)
 renderer, window, _ = scene(xyz, rgb, (W, H), sndf, box=True)
-with_box = image(window)
 image(window)
+converge(sndf, window)
+with_box = image(window)
 _, plain_box_window, _ = scene(xyz, rgb, (W, H), box=True)
-check(np.array_equal(with_box, image(plain_box_window)) and len(messages.warnings) == 1
-      and "other geometry" in str(messages.text) and sndf.GetNumberOfSamplePasses() == 0,
-      "other geometry in the view: one warning, the plain image (%s)" % messages.text)
+plain_box_error = error(image(plain_box_window), ref_box)
+# the reference's S-pixel-wide lines have no joins: leave out 5x5 pixels around the outline's
+# corners
+away = np.ones((H, W), bool)
+for corner in itertools.product((-0.5, 16.5), repeat=3):
+    renderer.SetWorldPoint(*corner, 1.0)
+    renderer.WorldToDisplay()
+    x, y, _ = renderer.GetDisplayPoint()
+    away[max(0, int(round(y)) - 2):int(round(y)) + 3, max(0, int(round(x)) - 2):int(round(x)) + 3] = False
+box_error = error(with_box[away], ref_box[away])
+print("box and outline: plain vs reference mean %.2f p99 %.1f max %.1f /255" % plain_box_error)
+print("box and outline: S-NDF vs reference mean %.2f p99 %.1f max %.1f /255" % box_error)
+check(sndf.GetConverged() and not messages.warnings and box_error[0] < 1.0
+      and box_error[1] < 6.0 and box_error[2] < 12.0,
+      "opaque box and outline in the view: within mean 1, p99 6, max 12 /255 (%s)" % messages.text)
+# the box alone where it covers particles: its colour, no particle shading added
+box_pixels = (np.abs(ref_box - ref).max(axis=2) > 40)
+check(np.abs(with_box - ref_box)[box_pixels].mean() < 1.0,
+      "where the box hides particles: the box's colour (mean %.2f /255 over %d pixels)"
+      % (np.abs(with_box - ref_box)[box_pixels].mean(), box_pixels.sum()))
+
+# translucent geometry: a warning and the plain image
+sndf = pr.vtkSNDFRenderPass()
+messages = Messages(sndf)
+renderer, window, _ = scene(xyz, rgb, (W, H), sndf, box=True, box_opacity=0.5)
+with_glass = image(window)
+image(window)
+plain_renderer, plain_glass_window, _ = scene(xyz, rgb, (W, H), box=True, box_opacity=0.5)
+camera_pass = vtkCameraPass()
+camera_pass.SetDelegatePass(vtkRenderStepsPass())
+plain_renderer.SetPass(camera_pass)
+check(np.array_equal(with_glass, image(plain_glass_window)) and len(messages.warnings) == 1
+      and "translucent geometry" in str(messages.text) and sndf.GetNumberOfSamplePasses() == 0,
+      "translucent geometry in the view: one warning, the plain image (%s)" % messages.text)
 
 # --- bad input -------------------------------------------------------------------------------
 # empty input: the plain image, no message
