@@ -12,7 +12,9 @@
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkParticlePassChain.h"
 #include "vtkProcessModule.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSNDFRenderPass.h"
 #include "vtkVoxelConeAOPass.h"
 
 vtkStandardNewMacro(vtkParticleRenderView);
@@ -31,6 +33,7 @@ vtkParticleRenderView::vtkParticleRenderView()
   // through a stand-in algorithm registered here.
   this->SetDensityVolumeAOPass(vtkSmartPointer<vtkDensityVolumeAOPass>::New());
   this->SetVoxelConeAOPass(vtkSmartPointer<vtkVoxelConeAOPass>::New());
+  this->SNDFRenderPass = vtkSmartPointer<vtkSNDFRenderPass>::New();
   vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
   vtkPVSession* session =
     processModule ? vtkPVSession::SafeDownCast(processModule->GetActiveSession()) : nullptr;
@@ -87,7 +90,7 @@ void vtkParticleRenderView::SetAmbientOcclusion(int method)
   }
   if (vtkImageProcessingPass* old = this->GetAmbientOcclusionPass(this->AmbientOcclusion))
   {
-    this->ParticlePassChain->RemovePass(old);
+    this->TakeOutOfChain(old);
   }
   this->AmbientOcclusion = method;
   if (vtkImageProcessingPass* pass = this->GetAmbientOcclusionPass(method))
@@ -131,7 +134,7 @@ void vtkParticleRenderView::ReplaceAmbientOcclusionPass(
   const bool installed = this->AmbientOcclusion == method;
   if (installed)
   {
-    this->ParticlePassChain->RemovePass(slot);
+    this->TakeOutOfChain(slot);
   }
   slot = pass;
   if (installed)
@@ -180,6 +183,70 @@ vtkDensityVolumeAOPass* vtkParticleRenderView::GetDensityVolumeAOPass()
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleRenderView::TakeOutOfChain(vtkImageProcessingPass* pass)
+{
+  if (!pass || !this->ParticlePassChain->RemovePass(pass))
+  {
+    return;
+  }
+  // its GPU memory (an S-NDF of 513 MiB at 1280 x 720, an AO volume) goes when it is switched
+  // off, not with the view: the renderer releases only the passes of its chain
+  if (vtkRenderWindow* window = this->GetRenderWindow())
+  {
+    pass->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetScaleConsistentShading(int on)
+{
+  on = on ? 1 : 0;
+  if (on == this->ScaleConsistentShading)
+  {
+    return;
+  }
+  this->ScaleConsistentShading = on;
+  if (on)
+  {
+    // outermost: the AO passes added later (AddPass) stay inside, so that the samples see them
+    this->ParticlePassChain->InsertPass(0, this->SNDFRenderPass);
+  }
+  else
+  {
+    this->TakeOutOfChain(this->SNDFRenderPass);
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetScaleConsistentShading()
+{
+  return this->ScaleConsistentShading;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetSNDFRenderPass(vtkSNDFRenderPass* pass)
+{
+  if (!pass || pass == this->SNDFRenderPass)
+  {
+    return;
+  }
+  if (this->ScaleConsistentShading)
+  {
+    this->TakeOutOfChain(this->SNDFRenderPass);
+    this->ParticlePassChain->InsertPass(0, pass);
+  }
+  this->SNDFRenderPass = pass;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkSNDFRenderPass* vtkParticleRenderView::GetSNDFRenderPass()
+{
+  return this->SNDFRenderPass;
+}
+
+//------------------------------------------------------------------------------
 vtkParticlePassChain* vtkParticleRenderView::GetParticlePassChain()
 {
   return this->ParticlePassChain;
@@ -194,6 +261,9 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
   {
     this->SynchronizedRenderers->SetRenderPass(this->ParticlePassChain);
   }
+  // still renders converge when asked (screenshots, batch); interactive ones never do
+  this->SNDFRenderPass->SetConvergeOnRender(
+    this->SNDFConvergeStillRenders != 0 && !interactive);
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
 }
 
@@ -242,6 +312,8 @@ void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
+  os << indent << "ScaleConsistentShading: " << this->ScaleConsistentShading << "\n";
+  os << indent << "SNDFConvergeStillRenders: " << this->SNDFConvergeStillRenders << "\n";
   os << indent << "ParticlePassChain:\n";
   this->ParticlePassChain->PrintSelf(os, indent.GetNextIndent());
 }

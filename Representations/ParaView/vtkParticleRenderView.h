@@ -36,6 +36,13 @@
  * so lights, translucency (depth peeling), volumes, overlays and the renderer's own SSAO ("Use
  * Ambient Occlusion") behave as in the standard Render View.
  *
+ * Scale-consistent shading (vtkSNDFRenderPass) sits outermost in the chain when switched on, so
+ * that its samples see the particles as the AO pass inside it shades them. Still renders add its
+ * SamplesPerFrame samples (in the GUI the plugin's refinement behaviour renders again until
+ * TargetSamples are reached), or converge at once with SNDFConvergeStillRenders (pvpython,
+ * pvbatch, screenshots); interactive renders show the plain image. A pass switched off is taken
+ * out of the chain and its graphics resources are released at once.
+ *
  * How the next techniques plug in: a pass deriving from vtkImageProcessingPass is added with
  * `GetParticlePassChain()->AddPass(pass)` (typically from a view property setter of a subclass
  * or of this class, plus the property in the XML).
@@ -57,6 +64,7 @@ class vtkAlgorithm;
 class vtkImageProcessingPass;
 class vtkDensityVolumeAOPass;
 class vtkParticlePassChain;
+class vtkSNDFRenderPass;
 class vtkVoxelConeAOPass;
 
 class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleRenderView : public vtkPVRenderView
@@ -123,6 +131,37 @@ public:
   vtkVoxelConeAOPass* GetVoxelConeAOPass();
   ///@}
 
+  ///@{
+  /**
+   * Scale-consistent shading of sub-pixel particles (vtkSNDFRenderPass, Ibrahim et al. 2017):
+   * on (1) puts the S-NDF pass outermost in the chain, so that the particles and the ambient
+   * occlusion chosen above are sampled into S-NDFs; off (0, default) takes it out. While the view
+   * holds still each render adds the pass's SamplesPerFrame samples per pixel; in the GUI the
+   * plugin's refinement behaviour keeps rendering until TargetSamples are reached.
+   */
+  void SetScaleConsistentShading(int on);
+  int GetScaleConsistentShading();
+  ///@}
+
+  ///@{
+  /**
+   * With scale-consistent shading on, every still render converges (takes all TargetSamples
+   * samples at once, vtkSNDFRenderPass::ConvergeOnRender) while interactive renders stay the
+   * plain image: for pvpython, pvbatch and screenshots. Off by default (the GUI refines
+   * progressively instead).
+   */
+  vtkSetMacro(SNDFConvergeStillRenders, int);
+  vtkGetMacro(SNDFConvergeStillRenders, int);
+  ///@}
+
+  ///@{
+  /**
+   * The S-NDF pass behind ScaleConsistentShading (in ParaView a proxy of group particle_passes).
+   */
+  void SetSNDFRenderPass(vtkSNDFRenderPass* pass);
+  vtkSNDFRenderPass* GetSNDFRenderPass();
+  ///@}
+
   /**
    * The algorithm whose vtkCommand::ProgressEvent carries the progress of the view's passes (a
    * long AO volume build, vtkDensityVolumeAOPass::ProgressThreshold), with the pass's progress
@@ -136,7 +175,8 @@ protected:
   ~vtkParticleRenderView() override;
 
   /**
-   * Re-installs the chain if the render-pass slot was emptied, then defers to the superclass.
+   * Re-installs the chain if the render-pass slot was emptied, tells the S-NDF pass whether this
+   * render is to converge, then defers to the superclass.
    */
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
@@ -144,6 +184,9 @@ protected:
   vtkSmartPointer<vtkDensityVolumeAOPass> DensityVolumeAOPass;
   vtkSmartPointer<vtkVoxelConeAOPass> VoxelConeAOPass;
   int AmbientOcclusion = NO_AMBIENT_OCCLUSION;
+  vtkSmartPointer<vtkSNDFRenderPass> SNDFRenderPass;
+  int ScaleConsistentShading = 0;
+  int SNDFConvergeStillRenders = 0;
   unsigned long PassProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;
 
@@ -155,6 +198,8 @@ private:
   void ForwardPassProgress(vtkObject* caller, unsigned long, void* callData);
   // the pass of an AO method (nullptr for none)
   vtkImageProcessingPass* GetAmbientOcclusionPass(int method);
+  // takes a pass out of the chain and releases its graphics resources
+  void TakeOutOfChain(vtkImageProcessingPass* pass);
   // a new pass object for an AO method, swapped into the chain when that method is on
   template <typename PassType>
   void ReplaceAmbientOcclusionPass(vtkSmartPointer<PassType>& slot, PassType* pass, int method);

@@ -26,7 +26,6 @@
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkTransparentSphereMapper.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
@@ -90,12 +89,13 @@ void AppendMatrix(std::vector<double>& state, vtkMatrix4x4* m)
   }
 }
 
-// a particle mapper whose opaque spheres the pass samples (its subclasses draw through their own
-// targets)
+// a particle mapper whose opaque spheres the pass samples: the core, and vtkTransparentSphereMapper
+// (ParaView's Particles representation), which draws opaque particles through the core's opaque
+// path (its actor's translucency is checked separately); vtkMetaballMapper draws through its own
+// targets
 bool IsSampledParticleMapper(vtkAbstractMapper* mapper)
 {
-  return vtkParticleSphereMapper::SafeDownCast(mapper) &&
-    !vtkTransparentSphereMapper::SafeDownCast(mapper) && !vtkMetaballMapper::SafeDownCast(mapper);
+  return vtkParticleSphereMapper::SafeDownCast(mapper) && !vtkMetaballMapper::SafeDownCast(mapper);
 }
 }
 
@@ -521,6 +521,15 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   state.push_back(ren->GetTexturedBackground());
   state.push_back(ren->GetBackgroundAlpha());
   state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(context)));
+  // the passes inside this one (an AO pass put into the chain or changed samples anew)
+  vtkRenderPass* inner = this->DelegatePass;
+  for (int depth = 0; inner && depth < 16; ++depth)
+  {
+    state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(inner)));
+    state.push_back(static_cast<double>(inner->GetMTime()));
+    auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
+    inner = wrapping ? wrapping->GetDelegatePass() : nullptr;
+  }
 
   vtkOpenGLState* ostate = context->GetState();
   if (internals.Context != context)
@@ -615,11 +624,14 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     ++this->NumberOfRestarts;
     // The frame of a change (e.g. each frame of an interaction) is the plain image: one S-NDF
     // sample would shade with bin means, coarser than the exact normal. Sampling starts with the
-    // next frame.
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    this->ActiveBinsPerAxis = bins;
-    return;
+    // next frame -- unless this render is to converge (ConvergeOnRender).
+    if (!this->ConvergeOnRender)
+    {
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+      this->ActiveBinsPerAxis = bins;
+      return;
+    }
   }
   this->ActiveBinsPerAxis = bins;
 
@@ -766,8 +778,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   internals.EndStage(timing);
 
   // sample passes
-  const int samples =
-    std::min(this->SamplesPerFrame, this->TargetSamples - this->NumberOfSamples);
+  const int samples = this->ConvergeOnRender
+    ? this->TargetSamples - this->NumberOfSamples
+    : std::min(this->SamplesPerFrame, this->TargetSamples - this->NumberOfSamples);
   const unsigned int groupsX = static_cast<unsigned int>((width + 15) / 16);
   const unsigned int groupsY = static_cast<unsigned int>((height + 15) / 16);
   for (int k = 0; k < samples; ++k)
@@ -975,5 +988,6 @@ void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "ActiveBinsPerAxis: " << this->ActiveBinsPerAxis << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";
+  os << indent << "ConvergeOnRender: " << this->ConvergeOnRender << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
 }

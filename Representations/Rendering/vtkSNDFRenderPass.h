@@ -19,7 +19,8 @@
  * is the delegate's plain image, as fast as without the pass. While the view then holds still,
  * each Render() draws the delegate SamplesPerFrame times, each time with the camera's window centre moved by a sub-pixel offset
  * (sample k: the Halton (2, 3) point k, sample 0 at the pixel centre; box filter over the pixel),
- * into a G-buffer: the particle mappers' shaders (vtkParticleSphereMapper, through the
+ * into a G-buffer: the particle mappers' shaders (vtkParticleSphereMapper and its opaque
+ * subclasses, through the
  * //PR::Shading::Impl hook) write the sample's view-space normal, its ambient visibility (from an
  * AO pass in the delegate) and the actor's diffuse colour into two RGBA16F targets, and into the
  * 8-bit colour target the shading that needs no normal (the occluded ambient colour and the AO source's
@@ -73,7 +74,8 @@
  *
  * What invalidates the samples: the viewport size, the camera (position, focal point, view up,
  * angle, parallel scale, projection, clipping range, window centre), the bins, and any visible
- * prop's or mapper's or input's modification time, the background. What does not: lights, the
+ * prop's or mapper's or input's modification time, the background, the passes inside this one (their
+ * objects and modification times: an AO pass put into the chain or changed). What does not: lights, the
  * particle actors' specular colour and power.
  *
  * Other geometry. Opaque polygonal props (surfaces, lines, points: any vtkActor whose mapper takes
@@ -87,9 +89,10 @@
  *
  * Unsupported scenes fall back to the delegate's plain image with one warning: translucent
  * actors (particles or other geometry: what lies behind them would have to be attenuated),
- * props that are not actors (volumes, images, 2D actors), vtkTransparentSphereMapper and
- * vtkMetaballMapper (they draw through their own targets), contexts without OpenGL 4.3 compute
- * shaders. The background, plain or gradient, is sampled with the particles. Without particle
+ * props that are not actors (volumes, images, 2D actors), vtkMetaballMapper (it draws through
+ * its own targets), contexts without OpenGL 4.3 compute shaders. vtkTransparentSphereMapper
+ * (ParaView's Particles representation) is sampled while all its particles are opaque: it then
+ * draws them through the core's opaque path. The background, plain or gradient, is sampled with the particles. Without particle
  * props the pass renders the delegate directly.
  *
  * @sa vtkParticleSphereMapper vtkParticleShaderHooks vtkImageProcessingPass
@@ -119,6 +122,19 @@ public:
    */
   vtkSetClampMacro(SamplesPerFrame, int, 1, 4096);
   vtkGetMacro(SamplesPerFrame, int);
+  ///@}
+
+  ///@{
+  /**
+   * When on, every Render() takes the samples still missing to TargetSamples, also on the frame
+   * of a change (off by default: the frame of a change is the plain image and each Render() adds
+   * SamplesPerFrame). For batch rendering and screenshots: one Render() gives the converged
+   * image. In ParaView the Particle Render View switches it on for still renders with
+   * "Converge Still Renders" (pvpython, pvbatch, Save Screenshot).
+   */
+  vtkSetMacro(ConvergeOnRender, bool);
+  vtkGetMacro(ConvergeOnRender, bool);
+  vtkBooleanMacro(ConvergeOnRender, bool);
   ///@}
 
   ///@{
@@ -230,6 +246,7 @@ protected:
   vtkIdType NumberOfTableBuilds = 0;
   vtkIdType NumberOfResolves = 0;
   bool CollectTimings = false;
+  bool ConvergeOnRender = false;
 
 private:
   vtkSNDFRenderPass(const vtkSNDFRenderPass&) = delete;
