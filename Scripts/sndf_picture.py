@@ -66,6 +66,7 @@ def render(sndf):
     if sndf is not None:
         while not sndf.GetConverged():
             window.Render()
+        samples.append(sndf.GetNumberOfSamples())
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.ShouldRerenderOff()
@@ -74,6 +75,7 @@ def render(sndf):
     return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3].reshape(H, W, 3)
 
 
+samples = []
 plain = render(None)
 sndf = pr.vtkSNDFRenderPass()
 sndf.SetSamplesPerFrame(32)
@@ -89,4 +91,4 @@ writer.SetFileName(out_path)
 writer.SetInputData(image)
 writer.Write()
 print("wrote %s (%d atoms; left plain, right S-NDF with %d samples per pixel)"
-      % (out_path, len(xyz), sndf.GetNumberOfSamples()))
+      % (out_path, len(xyz), samples[0]))
