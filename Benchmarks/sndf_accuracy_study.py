@@ -23,10 +23,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import fcc_crystal, offscreen_window, particles_from
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkWindowToImageFilter
-from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+from prVTKTesting import crystal_view, fcc_crystal, window_pixels
 
 W, H = (int(a) for a in (sys.argv[1:3] + ["160", "120"][len(sys.argv[1:3]):]))
 REFERENCE_FACTOR = 32
@@ -35,43 +32,7 @@ results = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results")
 
 
 def view(size, sndf=None):
-    data = particles_from(xyz)
-    data.GetPointData().SetScalars(numpy_to_vtk(rgb, deep=True))
-    mapper = pr.vtkParticleSphereMapper()
-    mapper.SetInputData(data)
-    mapper.SetRadius(0.36)
-    mapper.SetColorModeToDirectScalars()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetSpecular(0.3)
-    actor.GetProperty().SetSpecularPower(20)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.1, 0.1, 0.12)
-    window = offscreen_window(renderer, size)
-    camera_pass = vtkCameraPass()
-    if sndf is None:
-        camera_pass.SetDelegatePass(vtkRenderStepsPass())
-    else:
-        camera_pass.SetDelegatePass(sndf)
-        sndf.SetDelegatePass(vtkRenderStepsPass())
-    renderer.SetPass(camera_pass)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(40, 30, 55)
-    camera.SetFocalPoint(8, 8, 8)
-    camera.SetViewUp(0, 1, 0)
-    renderer.ResetCameraClippingRange()
-    return window
-
-
-def read(window, width, height):
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-    return pixels[:, :3].reshape(height, width, 3).astype(float)
+    return crystal_view(xyz, rgb, size, sndf, specular=0.3)[1]
 
 
 def timed_render(window):
@@ -85,7 +46,7 @@ def plain_supersampled(k):
     window = view((W * k, H * k))
     window.Render()  # programs and buffers
     seconds = min(timed_render(window) for _ in range(3))
-    image = read(window, W * k, H * k).reshape(H, k, W, k, 3).mean(axis=(1, 3))
+    image = window_pixels(window, W * k, H * k).reshape(H, k, W, k, 3).mean(axis=(1, 3))
     return image, seconds
 
 
@@ -114,7 +75,7 @@ for bins in (4, 8, 16):
         elapsed += timed_render(window)
         n = sndf.GetNumberOfSamples()
         if bins == 8 and (n & (n - 1)) == 0 or n == 256:
-            rows.append(("S-NDF", bins, n, elapsed) + error(read(window, W, H), reference)
+            rows.append(("S-NDF", bins, n, elapsed) + error(window_pixels(window, W, H), reference)
                         + (sndf.GetMemoryBytes() / 2**20,))
 
 header = "method,bins,samples_per_pixel,seconds,mean_error,p99_error,memory_MB\n"

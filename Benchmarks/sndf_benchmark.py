@@ -24,39 +24,17 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import fcc_crystal, offscreen_window, particles_from
-from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkRenderer
-from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+from prVTKTesting import crystal_view, fcc_crystal
+from vtkmodules.vtkRenderingCore import vtkLight
 
 cells, width, height, samples = (int(a) for a in (sys.argv[1:5] + ["40", "1280", "720", "64"][len(sys.argv[1:5]):]))
 xyz, rgb = fcc_crystal(cells)
 
 
 def view(sndf):
-    data = particles_from(xyz)
-    colours = numpy_to_vtk(rgb, deep=True)
-    data.GetPointData().SetScalars(colours)
-    mapper = pr.vtkParticleSphereMapper()
-    mapper.SetInputData(data)
-    mapper.SetRadius(0.36)
-    mapper.SetColorModeToDirectScalars()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    window = offscreen_window(renderer, (width, height))
-    camera_pass = vtkCameraPass()
-    if sndf is None:
-        camera_pass.SetDelegatePass(vtkRenderStepsPass())
-    else:
-        camera_pass.SetDelegatePass(sndf)
-        sndf.SetDelegatePass(vtkRenderStepsPass())
-    renderer.SetPass(camera_pass)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2.5 * cells, 1.9 * cells, 3.4 * cells)
-    camera.SetFocalPoint(cells / 2, cells / 2, cells / 2)
-    renderer.ResetCameraClippingRange()
+    renderer, window, _ = crystal_view(xyz, rgb, (width, height), sndf,
+                                       position=(2.5 * cells, 1.9 * cells, 3.4 * cells),
+                                       focal_point=(cells / 2, cells / 2, cells / 2))
     return renderer, window
 
 

@@ -13,12 +13,10 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import offscreen_window, particles_from
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGWriter
+from prVTKTesting import crystal_view, window_pixels
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkWindowToImageFilter
-from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+from vtkmodules.vtkIOImage import vtkPNGWriter
 
 CELLS, W, H = 64, 480, 360
 out_path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
@@ -35,44 +33,16 @@ rgb = np.where(second[:, None], [235, 190, 60], [80, 120, 200]).astype(np.uint8)
 
 
 def render(sndf):
-    data = particles_from(xyz)
-    colours = numpy_to_vtk(rgb, deep=True)
-    data.GetPointData().SetScalars(colours)
-    mapper = pr.vtkParticleSphereMapper()
-    mapper.SetInputData(data)
-    mapper.SetRadius(0.36)
-    mapper.SetColorModeToDirectScalars()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetSpecular(0.3)
-    actor.GetProperty().SetSpecularPower(20)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.12, 0.12, 0.14)
-    window = offscreen_window(renderer, (W, H))
-    camera_pass = vtkCameraPass()
-    if sndf is None:
-        camera_pass.SetDelegatePass(vtkRenderStepsPass())
-    else:
-        camera_pass.SetDelegatePass(sndf)
-        sndf.SetDelegatePass(vtkRenderStepsPass())
-    renderer.SetPass(camera_pass)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2.3 * CELLS, 1.7 * CELLS, 3.1 * CELLS)
-    camera.SetFocalPoint(CELLS / 2, CELLS / 2 - 2, CELLS / 2)
-    camera.SetViewUp(0, 1, 0)
-    renderer.ResetCameraClippingRange()
+    renderer, window, actor = crystal_view(
+        xyz, rgb, (W, H), sndf, position=(2.3 * CELLS, 1.7 * CELLS, 3.1 * CELLS),
+        focal_point=(CELLS / 2, CELLS / 2 - 2, CELLS / 2), background=(0.12, 0.12, 0.14),
+        specular=0.3)
     window.Render()
     if sndf is not None:
         while not sndf.GetConverged():
             window.Render()
         samples.append(sndf.GetNumberOfSamples())
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3].reshape(H, W, 3)
+    return window_pixels(window, W, H).astype(np.uint8)
 
 
 samples = []

@@ -27,12 +27,10 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, fcc_crystal, finish, offscreen_window, particles_from
-from vtkmodules.util.numpy_support import numpy_to_vtk
+from prVTKTesting import Messages, check, crystal_view, fcc_crystal, finish, window_pixels
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkOutlineSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer
-from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 W, H = 120, 90
@@ -40,19 +38,9 @@ S = 16  # reference super-sampling per axis
 
 
 def scene(xyz, rgb, size, sndf=None, box=False, box_opacity=1.0, line_width=1.0):
-    data = particles_from(xyz)
-    colours = numpy_to_vtk(rgb, deep=True)
-    colours.SetName("rgb")
-    data.GetPointData().SetScalars(colours)
-    mapper = pr.vtkParticleSphereMapper()
-    mapper.SetInputData(data)
-    mapper.SetRadius(0.36)
-    mapper.SetColorModeToDirectScalars()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.1, 0.1, 0.12)
+    """The crystal (prVTKTesting.crystal_view: camera pass -> [sndf ->] render steps), with box:
+    an opaque (or box_opacity) box through part of it and its outline."""
+    renderer, window, actor = crystal_view(xyz, rgb, size, sndf)
     if box:
         cube = vtkCubeSource()
         cube.SetBounds(9, 20, -1, 5, 15, 19)
@@ -73,32 +61,14 @@ def scene(xyz, rgb, size, sndf=None, box=False, box_opacity=1.0, line_width=1.0)
         outline_actor.GetProperty().SetColor(0.2, 0.9, 0.3)
         outline_actor.GetProperty().SetLineWidth(line_width)
         renderer.AddActor(outline_actor)
-    window = offscreen_window(renderer, size)
-    if sndf is not None:
-        camera_pass = vtkCameraPass()
-        camera_pass.SetDelegatePass(sndf)
-        sndf.SetDelegatePass(vtkRenderStepsPass())
-        renderer.SetPass(camera_pass)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(40, 30, 55)
-    camera.SetFocalPoint(8, 8, 8)
-    camera.SetViewUp(0, 1, 0)
-    renderer.ResetCameraClippingRange()
+        renderer.ResetCameraClippingRange()
     return renderer, window, actor
 
 
 def image(window, width=W, height=H):
     """Render once and read the picture (without the second render of grab_image)."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-    return pixels[:, :3].reshape(height, width, 3).astype(float)
+    return window_pixels(window, width, height)
 
 
 def reference(xyz, rgb, light=None, box=False, specular=0.0):
@@ -281,9 +251,6 @@ renderer, window, _ = scene(xyz, rgb, (W, H), sndf, box=True, box_opacity=0.5)
 with_glass = image(window)
 image(window)
 plain_renderer, plain_glass_window, _ = scene(xyz, rgb, (W, H), box=True, box_opacity=0.5)
-camera_pass = vtkCameraPass()
-camera_pass.SetDelegatePass(vtkRenderStepsPass())
-plain_renderer.SetPass(camera_pass)
 check(np.array_equal(with_glass, image(plain_glass_window)) and len(messages.warnings) == 1
       and "translucent geometry" in str(messages.text) and sndf.GetNumberOfSamplePasses() == 0,
       "translucent geometry in the view: one warning, the plain image (%s)" % messages.text)
@@ -357,12 +324,9 @@ messages = Messages(sndf)
 renderer, window, actor = scene(xyz, rgb, (W, H), sndf)
 actor.GetProperty().SetOpacity(0.5)
 translucent = image(window)
-# the same pass chain without the S-NDF pass
+# (the same pass chain without the S-NDF pass)
 plain_renderer, plain_translucent_window, plain_actor = scene(xyz, rgb, (W, H))
 plain_actor.GetProperty().SetOpacity(0.5)
-camera_pass = vtkCameraPass()
-camera_pass.SetDelegatePass(vtkRenderStepsPass())
-plain_renderer.SetPass(camera_pass)
 plain_translucent = image(plain_translucent_window)
 check(np.array_equal(translucent, plain_translucent) and len(messages.warnings) == 1,
       "a translucent particle actor: one warning, the plain image (%s)" % messages.text)

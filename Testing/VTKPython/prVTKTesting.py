@@ -112,6 +112,61 @@ def offscreen_window(renderer, size=(200, 200), samples=0):
     return window
 
 
+def crystal_view(xyz, rgb, size, sndf=None, radius=0.36, position=(40, 30, 55),
+                 focal_point=(8, 8, 8), background=(0.1, 0.1, 0.12), specular=0.0):
+    """Particles at xyz coloured by rgb ((N, 3) uint8, direct scalars) with a constant radius, in
+    an off-screen window of `size` whose renderer runs vtkCameraPass -> [sndf ->]
+    vtkRenderStepsPass (with sndf, a vtkSNDFRenderPass, in between when given); camera at
+    `position` looking at `focal_point`, y up, headlight. Returns (renderer, window, actor)."""
+    import particlerendering as pr
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
+    from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+    data = particles_from(xyz)
+    colours = numpy_to_vtk(rgb, deep=True)
+    colours.SetName("rgb")
+    data.GetPointData().SetScalars(colours)
+    mapper = pr.vtkParticleSphereMapper()
+    mapper.SetInputData(data)
+    mapper.SetRadius(radius)
+    mapper.SetColorModeToDirectScalars()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetSpecular(specular)
+    actor.GetProperty().SetSpecularPower(20)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(*background)
+    window = offscreen_window(renderer, size)
+    camera_pass = vtkCameraPass()
+    if sndf is None:
+        camera_pass.SetDelegatePass(vtkRenderStepsPass())
+    else:
+        camera_pass.SetDelegatePass(sndf)
+        sndf.SetDelegatePass(vtkRenderStepsPass())
+    renderer.SetPass(camera_pass)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*position)
+    camera.SetFocalPoint(*focal_point)
+    camera.SetViewUp(0, 1, 0)
+    renderer.ResetCameraClippingRange()
+    return renderer, window, actor
+
+
+def window_pixels(window, width, height):
+    """The RGB picture in the window's back buffer as a (height, width, 3) float array, read
+    without rendering again (a progressive pass would take another step)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ShouldRerenderOff()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+    return pixels[:, :3].reshape(height, width, 3).astype(float)
+
+
 def actor_view(mapper, size=(200, 200)):
     """An actor with `mapper` alone in a renderer of an off-screen window of `size` (no
     multisampling): returns (actor, renderer, window)."""
