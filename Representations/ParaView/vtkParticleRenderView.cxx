@@ -33,7 +33,7 @@ vtkParticleRenderView::vtkParticleRenderView()
   // through a stand-in algorithm registered here.
   this->SetDensityVolumeAOPass(vtkSmartPointer<vtkDensityVolumeAOPass>::New());
   this->SetVoxelConeAOPass(vtkSmartPointer<vtkVoxelConeAOPass>::New());
-  this->SNDFRenderPass = vtkSmartPointer<vtkSNDFRenderPass>::New();
+  this->SetSNDFRenderPass(vtkSmartPointer<vtkSNDFRenderPass>::New());
   vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
   vtkPVSession* session =
     processModule ? vtkPVSession::SafeDownCast(processModule->GetActiveSession()) : nullptr;
@@ -46,8 +46,16 @@ vtkParticleRenderView::vtkParticleRenderView()
 //------------------------------------------------------------------------------
 void vtkParticleRenderView::ForwardPassProgress(vtkObject* caller, unsigned long, void* callData)
 {
-  auto* pass = vtkDensityVolumeAOPass::SafeDownCast(caller);
-  this->PassProgress->SetProgressText(pass ? pass->GetProgressText() : nullptr);
+  const char* text = nullptr;
+  if (auto* density = vtkDensityVolumeAOPass::SafeDownCast(caller))
+  {
+    text = density->GetProgressText();
+  }
+  else if (auto* sndf = vtkSNDFRenderPass::SafeDownCast(caller))
+  {
+    text = sndf->GetProgressText();
+  }
+  this->PassProgress->SetProgressText(text);
   this->PassProgress->UpdateProgress(*static_cast<double*>(callData));
   this->PassProgress->SetProgressText(nullptr);
 }
@@ -236,6 +244,12 @@ void vtkParticleRenderView::SetSNDFRenderPass(vtkSNDFRenderPass* pass)
     this->TakeOutOfChain(this->SNDFRenderPass);
     this->ParticlePassChain->InsertPass(0, pass);
   }
+  if (this->SNDFRenderPass)
+  {
+    this->SNDFRenderPass->RemoveObserver(this->SNDFProgressTag);
+  }
+  this->SNDFProgressTag = pass->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
   this->SNDFRenderPass = pass;
   this->Modified();
 }

@@ -164,7 +164,8 @@ public:
 
   /**
    * The algorithm whose vtkCommand::ProgressEvent carries the progress of the view's passes (a
-   * long AO volume build, vtkDensityVolumeAOPass::ProgressThreshold), with the pass's progress
+   * long AO volume build, vtkDensityVolumeAOPass::ProgressThreshold; a converging S-NDF render,
+   * vtkSNDFRenderPass::GetProgressText), with the pass's progress
    * text. It is registered with the session's progress handler, so ParaView's progress bar shows
    * it; the representations report their mappers' work themselves.
    */
@@ -188,6 +189,7 @@ protected:
   int ScaleConsistentShading = 0;
   int SNDFConvergeStillRenders = 0;
   unsigned long PassProgressTag = 0;
+  unsigned long SNDFProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;
 
 private:

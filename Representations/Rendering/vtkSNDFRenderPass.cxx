@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkDataObject.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
@@ -47,6 +48,9 @@ const double SumBytesPerPixel = 64.0;
 // sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
 // the bins per axis, at least 8)
 const int TableSubsamplesPerAxis = 512;
+
+// sample passes in one Render() from which it reports progress
+const int ProgressSamples = 8;
 
 // words per pixel of the bin buffer: two per bin (count and mean colour), then one bit per bin
 // marking the occupied ones
@@ -140,6 +144,7 @@ public:
   std::vector<double> TableKey;
   std::vector<double> ResolveKey;
   std::set<std::string> Warned;
+  std::string ProgressText;
 
   // timer queries of the last Render() per stage (sample, accumulate, shade)
   std::vector<GLuint> Queries[3];
@@ -267,6 +272,12 @@ void vtkSNDFRenderPass::Restart()
 {
   this->Internals->SampleState.clear();
   this->NumberOfSamples = 0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSNDFRenderPass::GetProgressText()
+{
+  return this->Internals->ProgressText.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -783,6 +794,15 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     : std::min(this->SamplesPerFrame, this->TargetSamples - this->NumberOfSamples);
   const unsigned int groupsX = static_cast<unsigned int>((width + 15) / 16);
   const unsigned int groupsY = static_cast<unsigned int>((height + 15) / 16);
+  // a render of many sample passes (ConvergeOnRender, a large SamplesPerFrame) reports them
+  const bool reporting = samples >= ProgressSamples;
+  if (reporting)
+  {
+    internals.ProgressText = "S-NDF shading: " + std::to_string(this->TargetSamples) +
+      " samples per pixel";
+    double fraction = 0.0;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  }
   for (int k = 0; k < samples; ++k)
   {
     double centre[2];
@@ -849,6 +869,11 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     vtkParticleComputeProgram::UseNone();
     internals.EndStage(timing);
     ++this->NumberOfSamples;
+    if (reporting)
+    {
+      double fraction = static_cast<double>(k + 1) / samples;
+      this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+    }
   }
 
   // shade when samples, table or specular colour changed

@@ -197,6 +197,15 @@ public:
   ///@}
 
   /**
+   * A Render() that takes 8 sample passes or more (ConvergeOnRender, a large SamplesPerFrame)
+   * reports its progress as a vtkAlgorithm does: vtkCommand::ProgressEvent on this pass with the
+   * fraction of its sample passes done (a double) as call data, from 0 to 1, while
+   * GetProgressText() names the work (ParaView's Particle Render View forwards both to its
+   * progress bar).
+   */
+  const char* GetProgressText();
+
+  /**
    * Forget the samples: the next Render() starts again.
    */
   void Restart();

@@ -14,6 +14,8 @@ from plain VTK Python. Checked:
 - other geometry: an opaque box through part of the crystal and the crystal's outline (lines)
   converge to the super-sampled core like the crystal alone, the box's colour where it hides
   particles; translucent geometry: one warning and the plain image;
+- ConvergeOnRender: one render (also the render of a change) takes all 256 samples and gives
+  the progressive picture, reporting its progress (vtkCommand::ProgressEvent, 0 to 1);
 - bad input: an empty input, a memory limit below 4x4 bins (a warning, the plain image), a limit
   that forces fewer bins, a wrong bin count, a resize while refining, NaN/Inf positions, a
   translucent particle actor (a warning, the plain image); --gl33: a context without compute
@@ -254,6 +256,33 @@ plain_renderer, plain_glass_window, _ = scene(xyz, rgb, (W, H), box=True, box_op
 check(np.array_equal(with_glass, image(plain_glass_window)) and len(messages.warnings) == 1
       and "translucent geometry" in str(messages.text) and sndf.GetNumberOfSamplePasses() == 0,
       "translucent geometry in the view: one warning, the plain image (%s)" % messages.text)
+
+# --- ConvergeOnRender: one Render() converges (also the render of a change), with progress ---
+from vtkmodules.util.misc import calldata_type  # noqa: E402
+from vtkmodules.util.vtkConstants import VTK_DOUBLE  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
+sndf = pr.vtkSNDFRenderPass()
+sndf.ConvergeOnRenderOn()
+sndf.SetTargetSamples(256)
+progress = []
+
+
+@calldata_type(VTK_DOUBLE)
+def on_progress(caller, event, fraction):
+    progress.append((fraction, caller.GetProgressText()))
+
+
+sndf.AddObserver(vtkCommand.ProgressEvent, on_progress)
+renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+at_once = image(window)
+check(sndf.GetNumberOfSamples() == 256 and np.abs(at_once - out).max() <= 1.0,
+      "ConvergeOnRender: the first render takes 256 samples, the progressive picture (max %.1f)"
+      % np.abs(at_once - out).max())
+check(len(progress) == 257 and progress[0][0] == 0.0 and progress[-1][0] == 1.0
+      and all(b[0] > a[0] for a, b in zip(progress, progress[1:]))
+      and "S-NDF" in progress[-1][1],
+      "ConvergeOnRender: progress from 0 to 1 in 257 events, named S-NDF (%d, %s)"
+      % (len(progress), progress[-1] if progress else None))
 
 # --- bad input -------------------------------------------------------------------------------
 # empty input: the plain image, no message
