@@ -278,6 +278,14 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
   // still renders converge when asked (screenshots, batch); interactive ones never do
   this->SNDFRenderPass->SetConvergeOnRender(
     this->SNDFConvergeStillRenders != 0 && !interactive);
+  if (this->ScaleConsistentShading)
+  {
+    // The S-NDF picture is box-filtered over each pixel already; FXAA on top only blurs it (and
+    // with ParaView's FXAA pass around the chain the S-NDF picture came out black: measured, the
+    // cause not found). The superclass set FXAA from the view's property just before this call.
+    this->GetRenderer()->SetUseFXAA(false);
+    this->SynchronizedRenderers->SetUseFXAA(false);
+  }
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
 }
 

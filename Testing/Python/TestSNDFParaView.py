@@ -9,7 +9,7 @@ at 200x150, about two pixels per atom, where one ray per pixel aliases. Checked:
   same view box-filtered): mean < 1/255, 99th percentile < 6/255, max < 12/255, where the plain
   image is far off; and against the baseline (same platform);
 - Converge Still Renders: after a camera change one Render() gives the converged image, equal
-  to the progressively refined one;
+  to the progressively refined one; with Use FXAA on the same picture (FXAA is off under S-NDF);
 - re-lighting: a light change re-shades without taking samples again;
 - the view's ambient occlusion is sampled with the particles (Density Volume: darker, nowhere
   brighter);
@@ -131,6 +131,13 @@ if not args.must_fail:
     check(plain_error[0] > 2.0, "the plain image aliases (mean %.2f)" % plain_error[0])
     check(sndf_error[0] < 1.0 and sndf_error[1] < 6.0 and sndf_error[2] < 12.0,
           "S-NDF within mean 1, p99 6, max 12 /255 of the super-sampled view")
+
+    # --- FXAA (ParaView's default in many settings) is off while S-NDF shading is on ----------
+    view.UseFXAA = 1
+    with_fxaa = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_fxaa.png")))
+    view.UseFXAA = 0
+    check(numpy.abs(with_fxaa - converged).max() <= 1.0,
+          "Use FXAA on: the same S-NDF picture (max %.1f /255)" % numpy.abs(with_fxaa - converged).max())
 
     # --- Converge Still Renders: one Render() after a change converges -------------------------
     view.CameraPosition = [40.5, 30.0, 55.0]
