@@ -19,7 +19,8 @@
 //   [0] = sum prColour (rgba)
 //   [1] = (sum AO * diffuseColor * D(bin), max(1 - depth))
 //   [2] = (sum S(bin), number of particle samples Nc)
-//   [3] = (sum AO, 0, 0, 0)
+//   [3] = (sum AO, number of samples N, 0, 0)   (N per pixel: after a pan the
+//         pixels it uncovered have fewer than the others)
 // D and S are the lighting table's diffuse and specular rows (SNDFResolve.glsl).
 // Shading is linear in the samples for a fixed table, so [1].rgb and [2].rgb
 // are the shaded bin sums of SNDFResolve.glsl kept up to date sample by
@@ -92,6 +93,7 @@ void main()
     prSums[4u * pixel + 2u] += vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0);
     prSums[4u * pixel + 3u].x += ao;
   }
+  prSums[4u * pixel + 3u].y += 1.0;
   s1.w = max(s1.w, 1.0 - depth);
   prSums[4u * pixel + 1u] = s1;
   prSums[4u * pixel] += prFinite(texelFetch(prColour, p, 0));

@@ -7,7 +7,7 @@
 //          + sum_b c_b mean_b(AO diffuse) * D(b)
 //          + specularColour (sum_i AO_i / Nc) * sum_b c_b S(b) ) / N
 //
-// N samples per pixel, Nc of them on particles, colour_k what sample k drew
+// N samples of the pixel (prSums[3].y), Nc of them on particles, colour_k what sample k drew
 // without its normal (a particle's AO * ambient colour and ambient light,
 // other geometry's and the background's colour), c_b the count of bin b and
 // mean_b its samples' mean diffuse colour, D(b) and S(b) the lights' diffuse
@@ -27,7 +27,6 @@ uniform ivec2 prSize;
 uniform int prBins;
 uniform int prWordsPerPixel;
 uniform int prRebake;
-uniform float prInverseSamples;
 uniform vec3 prSpecularColour;
 
 //PR::Include SNDFBins
@@ -54,7 +53,8 @@ void main()
   vec4 colours = prSums[4u * pixel];
   vec4 s1 = prSums[4u * pixel + 1u];
   vec4 s2 = prSums[4u * pixel + 2u];
-  float aoSum = prSums[4u * pixel + 3u].x;
+  vec2 s3 = prSums[4u * pixel + 3u].xy;
+  float aoSum = s3.x;
   if (prRebake != 0 && s2.a > 0.0)
   {
     vec3 diffuse = vec3(0.0);
@@ -87,7 +87,7 @@ void main()
   {
     particles += prSpecularColour * (aoSum / s2.a) * s2.rgb;
   }
-  vec4 colour = vec4(particles + colours.rgb, colours.a) * prInverseSamples;
+  vec4 colour = vec4(particles + colours.rgb, colours.a) / max(1.0, s3.y);
   if (any(isnan(colour)) || any(isinf(colour)))
   {
     colour = vec4(0.0, 0.0, 0.0, 1.0);

@@ -141,6 +141,11 @@ public:
   bool Rebake = false;
   int TableBins = 0;
   std::vector<double> SampleState;
+  // the state but for the camera position and focal point, and those (pans)
+  std::vector<double> FixedState;
+  double Position[3] = { 0.0, 0.0, 0.0 };
+  double FocalPoint[3] = { 0.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOpenGLBufferObject> Row = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   std::vector<double> TableKey;
   std::vector<double> ResolveKey;
   std::set<std::string> Warned;
@@ -191,6 +196,66 @@ public:
       this->Seconds[stage] = 1e-9 * static_cast<double>(total);
     }
     this->TimesRead = true;
+  }
+
+  // Moves the S-NDFs (bins and sums) with a pan of the picture: the new pixel (x, y) takes the
+  // old pixel (x + pan[0], y + pan[1]); pixels with no old one are cleared. Row by row through
+  // a one-row scratch buffer, in the order that reads every old row before it is overwritten.
+  void ShiftPixels(vtkOpenGLRenderWindow*, int width, int height, const int pan[2])
+  {
+    const std::size_t binBytes = static_cast<std::size_t>(this->WordsPerPixel) * 4;
+    const std::size_t sumBytes = static_cast<std::size_t>(SumBytesPerPixel);
+    vtkParticleComputeProgram::AllocateStorage(this->Row, width * std::max(binBytes, sumBytes));
+    const int x0 = std::max(0, -pan[0]);
+    const int x1 = std::min(width, width - pan[0]);
+    const GLuint zero = 0;
+    for (vtkOpenGLBufferObject* buffer : { this->Counts.Get(), this->Sums.Get() })
+    {
+      const std::size_t pixelBytes = buffer == this->Counts.Get() ? binBytes : sumBytes;
+      const GLsizeiptr rowBytes = static_cast<GLsizeiptr>(pixelBytes * width);
+      glBindBuffer(GL_COPY_READ_BUFFER, buffer->GetHandle());
+      glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
+      for (int k = 0; k < height; ++k)
+      {
+        const int y = pan[1] >= 0 ? k : height - 1 - k;
+        const int oldY = y + pan[1];
+        const GLintptr rowStart = static_cast<GLintptr>(y) * rowBytes;
+        if (oldY < 0 || oldY >= height)
+        {
+          glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
+          glClearBufferSubData(
+            GL_COPY_WRITE_BUFFER, GL_R32UI, rowStart, rowBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+          glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
+          continue;
+        }
+        const GLsizeiptr segment = static_cast<GLsizeiptr>(pixelBytes * (x1 - x0));
+        const GLintptr from = static_cast<GLintptr>(oldY) * rowBytes +
+          static_cast<GLintptr>(pixelBytes * (x0 + pan[0]));
+        glBindBuffer(GL_COPY_READ_BUFFER, buffer->GetHandle());
+        glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
+        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, from, 0, segment);
+        glBindBuffer(GL_COPY_READ_BUFFER, this->Row->GetHandle());
+        glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
+        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0,
+          rowStart + static_cast<GLintptr>(pixelBytes * x0), segment);
+        // the columns the pan uncovers
+        if (x0 > 0)
+        {
+          glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, rowStart,
+            static_cast<GLsizeiptr>(pixelBytes * x0), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        }
+        if (x1 < width)
+        {
+          glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI,
+            rowStart + static_cast<GLintptr>(pixelBytes * x1),
+            static_cast<GLsizeiptr>(pixelBytes * (width - x1)), GL_RED_INTEGER, GL_UNSIGNED_INT,
+            &zero);
+        }
+      }
+    }
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
 
   // true the first time `what` is reported
@@ -272,6 +337,55 @@ void vtkSNDFRenderPass::Restart()
 {
   this->Internals->SampleState.clear();
   this->NumberOfSamples = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::PanShift(vtkCamera* camera, const double oldPosition[3],
+  const double oldFocalPoint[3], int height, int pan[2])
+{
+  // exact only where the picture moves as a whole: parallel projection, position and focal
+  // point moved by the same vector in the view plane, a whole number of pixels
+  if (!camera->GetParallelProjection() || height < 1)
+  {
+    return false;
+  }
+  double move[3];
+  double focalMove[3];
+  const double* position = camera->GetPosition();
+  const double* focal = camera->GetFocalPoint();
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  const double pixel = 2.0 * camera->GetParallelScale() / height;
+  double along[3] = { 0.0, 0.0, 0.0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    move[a] = position[a] - oldPosition[a];
+    focalMove[a] = focal[a] - oldFocalPoint[a];
+    if (std::abs(move[a] - focalMove[a]) > 1e-9 * (pixel + std::abs(move[a])))
+    {
+      return false;
+    }
+  }
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      along[row] += view->GetElement(row, a) * move[a];
+    }
+  }
+  if (!(pixel > 0.0) || std::abs(along[2]) > 1e-6 * pixel)
+  {
+    return false;
+  }
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    const double shift = along[axis] / pixel;
+    pan[axis] = static_cast<int>(std::lround(shift));
+    if (std::abs(shift - pan[axis]) > 1e-3)
+    {
+      return false;
+    }
+  }
+  return pan[0] != 0 || pan[1] != 0;
 }
 
 //------------------------------------------------------------------------------
@@ -507,6 +621,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // the view: camera, size, bins, background. The camera's values are compared in single
   // precision: vtkWindowToImageFilter restores the view angle with a last-bit difference.
   vtkCamera* camera = ren->GetActiveCamera();
+  const std::size_t panAt = state.size(); // camera position and focal point: state[panAt, +6)
   std::vector<double> view;
   view.insert(view.end(), camera->GetPosition(), camera->GetPosition() + 3);
   view.insert(view.end(), camera->GetFocalPoint(), camera->GetFocalPoint() + 3);
@@ -557,6 +672,27 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.ReadTimes(); // (deletes the queries of an unread frame)
     internals.TimesRead = false;
   }
+
+  // a pan: the S-NDFs move with the picture, only the pixels it uncovers start empty
+  std::vector<double> fixedState = state;
+  fixedState.erase(fixedState.begin() + panAt, fixedState.begin() + panAt + 6);
+  int pan[2] = { 0, 0 };
+  if (state != internals.SampleState && this->NumberOfSamples > 0 &&
+    fixedState == internals.FixedState && width == internals.Width &&
+    height == internals.Height && bins == internals.Bins &&
+    this->PanShift(camera, internals.Position, internals.FocalPoint, height, pan) &&
+    std::abs(pan[0]) < width && std::abs(pan[1]) < height)
+  {
+    internals.ShiftPixels(context, width, height, pan);
+    internals.SampleState = state;
+    internals.ResolveKey.clear();
+    // the uncovered pixels refine from their first sample on; the others get more samples
+    this->NumberOfSamples = 0;
+    ++this->NumberOfPans;
+  }
+  internals.FixedState = fixedState;
+  camera->GetPosition(internals.Position);
+  camera->GetFocalPoint(internals.FocalPoint);
 
   // (re)start
   if (state != internals.SampleState)
@@ -896,7 +1032,6 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     resolve->SetUniformi("prBins", bins);
     resolve->SetUniformi("prWordsPerPixel", internals.WordsPerPixel);
     resolve->SetUniformi("prRebake", internals.Rebake ? 1 : 0);
-    resolve->SetUniformf("prInverseSamples", 1.0f / static_cast<float>(std::max(1, this->NumberOfSamples)));
     resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
       static_cast<float>(specular[1]), static_cast<float>(specular[2]));
     vtkParticleComputeProgram::BindStorage(0, internals.Counts);
@@ -993,7 +1128,9 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
   vtkParticleComputeProgram::ReleaseStorage(internals.Counts, current);
   vtkParticleComputeProgram::ReleaseStorage(internals.Sums, current);
+  vtkParticleComputeProgram::ReleaseStorage(internals.Row, current);
   internals.SampleState.clear();
+  internals.FixedState.clear();
   internals.TableKey.clear();
   internals.ResolveKey.clear();
   internals.Bins = 0;

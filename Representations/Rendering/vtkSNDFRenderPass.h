@@ -69,10 +69,19 @@
  *   1280 x 720). Above MaximumMemory (MB) the pass uses fewer bins, and renders the plain
  *   delegate when even 4 x 4 do not fit, with a warning each time.
  *
- * Not (yet) here: the S-MIP of paper Sec. 6 (64^2 tiles, page table, LRU tile cache, zoom out
- * from the finer level, pan reusing tiles): today any camera change samples again.
+ * Pan (paper Sec. 6.1.3, 6.2.1). Where a pan moves the picture exactly -- parallel projection,
+ * camera position and focal point moved together in the view plane by a whole number of pixels
+ * (1e-3 pixel tolerance), nothing else changed -- the S-NDFs move with the picture (row copies of
+ * the bins and sums), the pixels it uncovers start empty, and refinement goes on from there
+ * instead of restarting: the kept pixels are converged at once, each pixel is shaded with its
+ * own sample count. Perspective pans (parallax) and fractions of a pixel sample anew.
  *
- * What invalidates the samples: the viewport size, the camera (position, focal point, view up,
+ * Not (yet) here: the rest of the S-MIP of paper Sec. 6 (64^2 tiles over a virtual image plane
+ * with a page table and an LRU tile cache, so that panning back finds the old tiles; zoom out
+ * from the finer level): other camera changes sample again.
+ *
+ * What invalidates the samples: the viewport size, the camera (position, focal point but for the
+ * pans above, view up,
  * angle, parallel scale, projection, clipping range, window centre), the bins, and any visible
  * prop's or mapper's or input's modification time, the background, the passes inside this one (their
  * objects and modification times: an AO pass put into the chain or changed). What does not: lights, the
@@ -103,6 +112,7 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
+class vtkCamera;
 class vtkFloatArray;
 
 class VTKPARTICLERENDERING_EXPORT vtkSNDFRenderPass : public vtkImageProcessingPass
@@ -194,6 +204,7 @@ public:
   vtkGetMacro(NumberOfRestarts, vtkIdType);
   vtkGetMacro(NumberOfTableBuilds, vtkIdType);
   vtkGetMacro(NumberOfResolves, vtkIdType);
+  vtkGetMacro(NumberOfPans, vtkIdType);
   ///@}
 
   /**
@@ -254,8 +265,17 @@ protected:
   vtkIdType NumberOfRestarts = 0;
   vtkIdType NumberOfTableBuilds = 0;
   vtkIdType NumberOfResolves = 0;
+  vtkIdType NumberOfPans = 0;
   bool CollectTimings = false;
   bool ConvergeOnRender = false;
+
+  /**
+   * The whole-pixel shift of the picture (pan[0] right, pan[1] up) when the camera moved from
+   * oldPosition / oldFocalPoint by a pan that moves the picture exactly (parallel projection, a
+   * move in the view plane by whole pixels); false otherwise.
+   */
+  static bool PanShift(vtkCamera* camera, const double oldPosition[3],
+    const double oldFocalPoint[3], int height, int pan[2]);
 
 private:
   vtkSNDFRenderPass(const vtkSNDFRenderPass&) = delete;

@@ -14,6 +14,9 @@ from plain VTK Python. Checked:
 - other geometry: an opaque box through part of the crystal and the crystal's outline (lines)
   converge to the super-sampled core like the crystal alone, the box's colour where it hides
   particles; translucent geometry: one warning and the plain image;
+- pan (parallel projection, whole pixels): no restart, the kept pixels converged at once (the
+  picture before, shifted), the uncovered ones refine; converged, the picture of a pass that
+  started at the new view; a half-pixel pan restarts;
 - ConvergeOnRender: one render (also the render of a change) takes all 256 samples and gives
   the progressive picture, reporting its progress (vtkCommand::ProgressEvent, 0 to 1);
 - bad input: an empty input, a memory limit below 4x4 bins (a warning, the plain image), a limit
@@ -256,6 +259,61 @@ plain_renderer, plain_glass_window, _ = scene(xyz, rgb, (W, H), box=True, box_op
 check(np.array_equal(with_glass, image(plain_glass_window)) and len(messages.warnings) == 1
       and "translucent geometry" in str(messages.text) and sndf.GetNumberOfSamplePasses() == 0,
       "translucent geometry in the view: one warning, the plain image (%s)" % messages.text)
+
+# --- pan: the S-NDFs move with the picture (parallel projection, whole pixels) --------------
+def parallel_view(sndf):
+    renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+    renderer.GetActiveCamera().ParallelProjectionOn()
+    renderer.GetActiveCamera().SetParallelScale(16.0)
+    renderer.ResetCameraClippingRange()
+    return renderer, window
+
+
+def pan_camera(camera, pixels_right, pixels_up):
+    """Move position and focal point in the view plane by whole pixels of a view H high."""
+    pixel = 2.0 * camera.GetParallelScale() / H
+    m = camera.GetViewTransformMatrix()
+    right = np.array([m.GetElement(0, a) for a in range(3)])
+    up = np.array([m.GetElement(1, a) for a in range(3)])
+    move = pixel * (pixels_right * right + pixels_up * up)
+    camera.SetPosition(*(np.array(camera.GetPosition()) + move))
+    camera.SetFocalPoint(*(np.array(camera.GetFocalPoint()) + move))
+
+
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(64)
+renderer, window = parallel_view(sndf)
+image(window)
+converge(sndf, window)
+before = image(window)
+restarts = sndf.GetNumberOfRestarts()
+pan_camera(renderer.GetActiveCamera(), 7, -5)
+after = image(window)
+# the new pixel (x, y) is the old (x + 7, y - 5) (rows count from the bottom)
+kept = np.abs(after[5:, :W - 7] - before[:H - 5, 7:])
+print("pan by (7, -5) px: the kept pixels vs the picture before: mean %.3f max %.1f /255"
+      % (kept.mean(), kept.max()))
+check(sndf.GetNumberOfPans() == 1 and sndf.GetNumberOfRestarts() == restarts
+      and sndf.GetNumberOfSamples() == 64 and kept.max() <= 2.0,
+      "a whole-pixel pan keeps the S-NDFs: no restart, the kept pixels converged at once (max %.1f)"
+      % kept.max())
+converge(sndf, window)
+panned = image(window)
+fresh = pr.vtkSNDFRenderPass()
+fresh.SetSamplesPerFrame(64)
+fresh_renderer, fresh_window = parallel_view(fresh)
+pan_camera(fresh_renderer.GetActiveCamera(), 7, -5)
+image(fresh_window)
+converge(fresh, fresh_window)
+difference = np.abs(panned - image(fresh_window))
+check(difference.max() <= 1.0,
+      "after the pan, converged: the picture of a pass that started there (max %.1f)"
+      % difference.max())
+# a pan by a fraction of a pixel, and any pan in perspective, samples anew
+pan_camera(renderer.GetActiveCamera(), 0.5, 0)
+image(window)
+check(sndf.GetNumberOfPans() == 1 and sndf.GetNumberOfRestarts() == restarts + 1,
+      "a half-pixel pan restarts")
 
 # --- ConvergeOnRender: one Render() converges (also the render of a change), with progress ---
 from vtkmodules.util.misc import calldata_type  # noqa: E402
