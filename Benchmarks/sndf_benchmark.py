@@ -9,13 +9,15 @@ lattice constants, headlight, at WIDTHxHEIGHT. Measured in the same run:
 - re-sample to the same quality: SAMPLES sample passes (what plain super-sampling costs after the
   same light change);
 - memory of the S-NDFs;
+- a pan by 10 pixels in parallel projection: the frame that moves the S-NDFs with the picture
+  and takes one sample, against a restart's frame (the plain image);
 - per-stage GPU times (timer queries, a second run with CollectTimings on): a sample pass's
   delegate draw into the G-buffer, its accumulation into the S-NDFs, the shade + composite; and
   the re-light's shade (table + bin sums formed again + composite).
 
 usage: Scripts/with_xvfb.sh python3 Benchmarks/sndf_benchmark.py [CELLS WIDTH HEIGHT SAMPLES]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
-Benchmarks/results/sndf_timings.csv
+Benchmarks/results/sndf_timings.csv and (the pan) sndf_pan.csv
 """
 import os
 import sys
@@ -89,6 +91,30 @@ renderer.AddLight(light)
 timed(window)
 relight_shade = sndf.GetLastShadeSeconds()
 
+# pan (parallel projection, 10 pixels right): the frame that moves the S-NDFs and takes one
+# sample, against the frame of a restart (plain)
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(16)
+sndf.SetTargetSamples(samples)
+renderer, window = view(sndf)
+camera = renderer.GetActiveCamera()
+camera.ParallelProjectionOn()
+camera.SetParallelScale(0.6 * cells)
+renderer.ResetCameraClippingRange()
+timed(window)
+while not sndf.GetConverged():
+    timed(window)
+sndf.SetSamplesPerFrame(1)
+pixel = 2.0 * camera.GetParallelScale() / height
+m = camera.GetViewTransformMatrix()
+move = [10 * pixel * m.GetElement(0, a) for a in range(3)]
+camera.SetPosition(*[p + d for p, d in zip(camera.GetPosition(), move)])
+camera.SetFocalPoint(*[f + d for f, d in zip(camera.GetFocalPoint(), move)])
+pan = timed(window)
+assert sndf.GetNumberOfPans() == 1
+camera.Azimuth(1)
+restart = timed(window)
+
 row = [len(xyz), width, height, samples, sndf.GetActiveBinsPerAxis(), plain, sample,
        sample / plain, relight, resample, resample / relight, sndf.GetMemoryBytes() / 2**20,
        stages[0], stages[1], stages[2], relight_shade]
@@ -102,3 +128,10 @@ with open(path, "a") as f:
         f.write(header)
     f.write(",".join("%.6g" % v if isinstance(v, float) else str(v) for v in row) + "\n")
 print(header + ",".join(str(v) for v in row))
+pan_path = os.path.join(os.path.dirname(__file__), "results", "sndf_pan.csv")
+new = not os.path.exists(pan_path)
+with open(pan_path, "a") as f:
+    if new:
+        f.write("particles,width,height,samples,pan_frame_s,restart_frame_s\n")
+    f.write("%d,%d,%d,%d,%.6g,%.6g\n" % (len(xyz), width, height, samples, pan, restart))
+print("pan frame %.3f s, restart frame %.3f s" % (pan, restart))
