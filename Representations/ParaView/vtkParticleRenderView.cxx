@@ -214,6 +214,7 @@ void vtkParticleRenderView::SetScaleConsistentShading(int on)
     return;
   }
   this->ScaleConsistentShading = on;
+  this->SetUseFXAA(this->RequestedFXAA);
   if (on)
   {
     // outermost: the AO passes added later (AddPass) stay inside, so that the samples see them
@@ -224,6 +225,16 @@ void vtkParticleRenderView::SetScaleConsistentShading(int on)
     this->TakeOutOfChain(this->SNDFRenderPass);
   }
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetUseFXAA(bool use)
+{
+  // The S-NDF picture is box-filtered over each pixel already; FXAA on top only blurs it (and
+  // with ParaView's FXAA pass around the chain the S-NDF picture came out black: measured, the
+  // cause not found). The view's property is kept and applies again when the shading is off.
+  this->RequestedFXAA = use;
+  this->Superclass::SetUseFXAA(use && !this->ScaleConsistentShading);
 }
 
 //------------------------------------------------------------------------------
@@ -278,14 +289,6 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
   // still renders converge when asked (screenshots, batch); interactive ones never do
   this->SNDFRenderPass->SetConvergeOnRender(
     this->SNDFConvergeStillRenders != 0 && !interactive);
-  if (this->ScaleConsistentShading)
-  {
-    // The S-NDF picture is box-filtered over each pixel already; FXAA on top only blurs it (and
-    // with ParaView's FXAA pass around the chain the S-NDF picture came out black: measured, the
-    // cause not found). The superclass set FXAA from the view's property just before this call.
-    this->GetRenderer()->SetUseFXAA(false);
-    this->SynchronizedRenderers->SetUseFXAA(false);
-  }
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
 }
 

@@ -143,6 +143,11 @@ public:
   int GetScaleConsistentShading();
   ///@}
 
+  /**
+   * FXAA as the view's property asks, but off while ScaleConsistentShading is on.
+   */
+  void SetUseFXAA(bool use) override;
+
   ///@{
   /**
    * With scale-consistent shading on, every still render converges (takes all TargetSamples
@@ -188,6 +193,7 @@ protected:
   vtkSmartPointer<vtkSNDFRenderPass> SNDFRenderPass;
   int ScaleConsistentShading = 0;
   int SNDFConvergeStillRenders = 0;
+  bool RequestedFXAA = false; // the view's UseFXAA property (in effect without S-NDF shading)
   unsigned long PassProgressTag = 0;
   unsigned long SNDFProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;

@@ -201,7 +201,7 @@ public:
   // Moves the S-NDFs (bins and sums) with a pan of the picture: the new pixel (x, y) takes the
   // old pixel (x + pan[0], y + pan[1]); pixels with no old one are cleared. Row by row through
   // a one-row scratch buffer, in the order that reads every old row before it is overwritten.
-  void ShiftPixels(vtkOpenGLRenderWindow*, int width, int height, const int pan[2])
+  void ShiftPixels(int width, int height, const int pan[2])
   {
     const std::size_t binBytes = static_cast<std::size_t>(this->WordsPerPixel) * 4;
     const std::size_t sumBytes = static_cast<std::size_t>(SumBytesPerPixel);
@@ -209,48 +209,40 @@ public:
     const int x0 = std::max(0, -pan[0]);
     const int x1 = std::min(width, width - pan[0]);
     const GLuint zero = 0;
+    auto clear = [&](GLintptr start, GLsizeiptr bytes) {
+      glClearBufferSubData(
+        GL_COPY_WRITE_BUFFER, GL_R32UI, start, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    };
     for (vtkOpenGLBufferObject* buffer : { this->Counts.Get(), this->Sums.Get() })
     {
       const std::size_t pixelBytes = buffer == this->Counts.Get() ? binBytes : sumBytes;
       const GLsizeiptr rowBytes = static_cast<GLsizeiptr>(pixelBytes * width);
-      glBindBuffer(GL_COPY_READ_BUFFER, buffer->GetHandle());
-      glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
+      const GLsizeiptr segment = static_cast<GLsizeiptr>(pixelBytes * (x1 - x0));
       for (int k = 0; k < height; ++k)
       {
         const int y = pan[1] >= 0 ? k : height - 1 - k;
         const int oldY = y + pan[1];
         const GLintptr rowStart = static_cast<GLintptr>(y) * rowBytes;
+        glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
         if (oldY < 0 || oldY >= height)
         {
-          glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
-          glClearBufferSubData(
-            GL_COPY_WRITE_BUFFER, GL_R32UI, rowStart, rowBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-          glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
+          clear(rowStart, rowBytes);
           continue;
         }
-        const GLsizeiptr segment = static_cast<GLsizeiptr>(pixelBytes * (x1 - x0));
-        const GLintptr from = static_cast<GLintptr>(oldY) * rowBytes +
-          static_cast<GLintptr>(pixelBytes * (x0 + pan[0]));
+        // old row segment -> scratch -> new row segment (the two may overlap)
         glBindBuffer(GL_COPY_READ_BUFFER, buffer->GetHandle());
         glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
-        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, from, 0, segment);
+        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
+          static_cast<GLintptr>(oldY) * rowBytes + static_cast<GLintptr>(pixelBytes * (x0 + pan[0])),
+          0, segment);
         glBindBuffer(GL_COPY_READ_BUFFER, this->Row->GetHandle());
         glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
         glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0,
           rowStart + static_cast<GLintptr>(pixelBytes * x0), segment);
         // the columns the pan uncovers
-        if (x0 > 0)
-        {
-          glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, rowStart,
-            static_cast<GLsizeiptr>(pixelBytes * x0), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        }
-        if (x1 < width)
-        {
-          glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI,
-            rowStart + static_cast<GLintptr>(pixelBytes * x1),
-            static_cast<GLsizeiptr>(pixelBytes * (width - x1)), GL_RED_INTEGER, GL_UNSIGNED_INT,
-            &zero);
-        }
+        clear(rowStart, static_cast<GLsizeiptr>(pixelBytes * x0));
+        clear(rowStart + static_cast<GLintptr>(pixelBytes * x1),
+          static_cast<GLsizeiptr>(pixelBytes * (width - x1)));
       }
     }
     glBindBuffer(GL_COPY_READ_BUFFER, 0);
@@ -350,7 +342,6 @@ bool vtkSNDFRenderPass::PanShift(vtkCamera* camera, const double oldPosition[3],
     return false;
   }
   double move[3];
-  double focalMove[3];
   const double* position = camera->GetPosition();
   const double* focal = camera->GetFocalPoint();
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();
@@ -359,8 +350,7 @@ bool vtkSNDFRenderPass::PanShift(vtkCamera* camera, const double oldPosition[3],
   for (int a = 0; a < 3; ++a)
   {
     move[a] = position[a] - oldPosition[a];
-    focalMove[a] = focal[a] - oldFocalPoint[a];
-    if (std::abs(move[a] - focalMove[a]) > 1e-9 * (pixel + std::abs(move[a])))
+    if (std::abs(move[a] - (focal[a] - oldFocalPoint[a])) > 1e-9 * (pixel + std::abs(move[a])))
     {
       return false;
     }
@@ -683,7 +673,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     this->PanShift(camera, internals.Position, internals.FocalPoint, height, pan) &&
     std::abs(pan[0]) < width && std::abs(pan[1]) < height)
   {
-    internals.ShiftPixels(context, width, height, pan);
+    internals.ShiftPixels(width, height, pan);
     internals.SampleState = state;
     internals.ResolveKey.clear();
     // the uncovered pixels refine from their first sample on; the others get more samples

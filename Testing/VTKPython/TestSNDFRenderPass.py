@@ -42,6 +42,16 @@ W, H = 120, 90
 S = 16  # reference super-sampling per axis
 
 
+def add_actor(renderer, source, colour):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*colour)
+    renderer.AddActor(actor)
+    return actor
+
+
 def scene(xyz, rgb, size, sndf=None, box=False, box_opacity=1.0, line_width=1.0):
     """The crystal (prVTKTesting.crystal_view: camera pass -> [sndf ->] render steps), with box:
     an opaque (or box_opacity) box through part of it and its outline."""
@@ -49,23 +59,11 @@ def scene(xyz, rgb, size, sndf=None, box=False, box_opacity=1.0, line_width=1.0)
     if box:
         cube = vtkCubeSource()
         cube.SetBounds(9, 20, -1, 5, 15, 19)
-        cube_mapper = vtkPolyDataMapper()
-        cube_mapper.SetInputConnection(cube.GetOutputPort())
-        cube_actor = vtkActor()
-        cube_actor.SetMapper(cube_mapper)
-        cube_actor.GetProperty().SetColor(0.9, 0.85, 0.3)
-        cube_actor.GetProperty().SetOpacity(box_opacity)
-        renderer.AddActor(cube_actor)
+        add_actor(renderer, cube, (0.9, 0.85, 0.3)).GetProperty().SetOpacity(box_opacity)
         # the simulation box's outline, as ParaView shows a LAMMPS box: lines
         outline = vtkOutlineSource()
         outline.SetBounds(-0.5, 16.5, -0.5, 16.5, -0.5, 16.5)
-        outline_mapper = vtkPolyDataMapper()
-        outline_mapper.SetInputConnection(outline.GetOutputPort())
-        outline_actor = vtkActor()
-        outline_actor.SetMapper(outline_mapper)
-        outline_actor.GetProperty().SetColor(0.2, 0.9, 0.3)
-        outline_actor.GetProperty().SetLineWidth(line_width)
-        renderer.AddActor(outline_actor)
+        add_actor(renderer, outline, (0.2, 0.9, 0.3)).GetProperty().SetLineWidth(line_width)
         renderer.ResetCameraClippingRange()
     return renderer, window, actor
 
