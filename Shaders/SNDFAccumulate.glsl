@@ -15,12 +15,16 @@
 //              when its third component exceeds 1.5
 //   prDiffuse  particles: the diffuse colour (VTK's diffuseColor)
 //   prDepth    window depth
-// Per pixel (prSums, 4 vec4):
+// The S-NDFs live in the S-MIP cache (SNDFTiles.glsl): window pixel p is
+// texel prSNDFFindTexel(p) of the cache, every one mapped. Texels that hold
+// prTarget samples or more take no more (a zoomed-out level averaged from a
+// finer one, tiles converged before a pan): they stay as they are.
+// Per texel (prSums, 4 vec4):
 //   [0] = sum prColour (rgba)
 //   [1] = (sum AO * diffuseColor * D(bin), max(1 - depth))
 //   [2] = (sum S(bin), number of particle samples Nc)
-//   [3] = (sum AO, number of samples N, 0, 0)   (N per pixel: after a pan the
-//         pixels it uncovered have fewer than the others)
+//   [3] = (sum AO, number of samples N, 0, 0)   (N per texel: after a pan the
+//         texels it uncovered have fewer than the others)
 // D and S are the lighting table's diffuse and specular rows (SNDFResolve.glsl).
 // Shading is linear in the samples for a fixed table, so [1].rgb and [2].rgb
 // are the shaded bin sums of SNDFResolve.glsl kept up to date sample by
@@ -37,6 +41,7 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 
 //PR::Include SNDFBins
+//PR::Include SNDFTiles
 
 uniform sampler2D prColour;
 uniform sampler2D prNormal;
@@ -46,6 +51,7 @@ uniform sampler2D prTable;
 uniform ivec2 prSize;
 uniform int prBins;
 uniform int prWordsPerPixel;
+uniform float prTarget;
 
 layout(std430, binding = 0) buffer prBinBuffer
 {
@@ -68,7 +74,11 @@ void main()
   {
     return;
   }
-  uint pixel = uint(p.y) * uint(prSize.x) + uint(p.x);
+  uint pixel;
+  if (!prSNDFFindTexel(p, pixel) || prSums[4u * pixel + 3u].y >= prTarget)
+  {
+    return;
+  }
   vec4 normal = texelFetch(prNormal, p, 0);
   vec4 s1 = prSums[4u * pixel + 1u];
   float depth = texelFetch(prDepth, p, 0).r;

@@ -8,6 +8,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMetaballMapper.h"
 #include "vtkObjectFactory.h"
@@ -19,12 +20,14 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkSNDFTileCache.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
@@ -43,21 +46,12 @@ namespace
 {
 // the colour attachments of the G-buffer (0: colour as drawn; see SNDFAccumulate.glsl)
 const unsigned int NumberOfAttachments = 3;
-// bytes per pixel besides the bin counts: four vec4 of sums
-const double SumBytesPerPixel = 64.0;
 // sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
 // the bins per axis, at least 8)
 const int TableSubsamplesPerAxis = 512;
 
 // sample passes in one Render() from which it reports progress
 const int ProgressSamples = 8;
-
-// words per pixel of the bin buffer: two per bin (count and mean colour), then one bit per bin
-// marking the occupied ones
-int WordsPerPixel(int bins)
-{
-  return 2 * bins * bins + std::max(1, bins * bins / 32);
-}
 
 // the radical inverse in base b of k (Halton sequence)
 double RadicalInverse(unsigned int k, unsigned int base)
@@ -126,26 +120,34 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   vtkNew<vtkParticleComputeProgram> Accumulate;
   vtkNew<vtkParticleComputeProgram> Resolve;
-  vtkSmartPointer<vtkOpenGLBufferObject> Counts = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  vtkSmartPointer<vtkOpenGLBufferObject> Sums = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkNew<vtkSNDFTileCache> Cache;
   vtkParticleShaderHooks Hooks;
   vtkTimeStamp ShaderTime;
   vtkNew<vtkLightsPass> Lights;
 
   int Width = 0;
   int Height = 0;
-  int Bins = 0;
-  int WordsPerPixel = 0;
   bool HaveTable = false;
-  // the shaded bin sums need summing again over the bins (the table changed under samples)
-  bool Rebake = false;
   int TableBins = 0;
-  std::vector<double> SampleState;
-  // the state but for the camera position and focal point, and those (pans)
+  // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
+  // position, focal point and parallel scale in parallel projection), and its virtual plane:
+  // the view rotation, the camera's offset from the focal point, the focal point's distance
+  // along the view, the size of a level-0 texel and the plane position of texel (0, 0)'s
+  // lower-left corner.
   std::vector<double> FixedState;
-  double Position[3] = { 0.0, 0.0, 0.0 };
-  double FocalPoint[3] = { 0.0, 0.0, 0.0 };
-  vtkSmartPointer<vtkOpenGLBufferObject> Row = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  bool FrameValid = false;
+  double Rotation[3][3] = { { 0.0 } };
+  double Offset[3] = { 0.0, 0.0, 0.0 };
+  double Along = 0.0;
+  double TexelSize = 1.0;
+  double Plane[2] = { 0.0, 0.0 };
+  // the view of the last MapView(), and the view of the last frame (mapped or plain)
+  vtkSNDFTileCache::Placement Placement;
+  bool Placed = false;
+  vtkSNDFTileCache::Placement ShownView;
+  bool Shown = false;
+  // jittered sample passes since the frame started (the Halton index of the next one)
+  int Sequence = 0;
   std::vector<double> TableKey;
   std::vector<double> ResolveKey;
   std::set<std::string> Warned;
@@ -198,56 +200,105 @@ public:
     this->TimesRead = true;
   }
 
-  // Moves the S-NDFs (bins and sums) with a pan of the picture: the new pixel (x, y) takes the
-  // old pixel (x + pan[0], y + pan[1]); pixels with no old one are cleared. Row by row through
-  // a one-row scratch buffer, in the order that reads every old row before it is overwritten.
-  void ShiftPixels(int width, int height, const int pan[2])
+  // The lower-left corner of a width x height parallel view in the coordinates of the frame's
+  // rotation (right, up) and the distance of its focal point along the view: VTK's orthographic
+  // window spans (WindowCenter -/+ 1) * (parallel scale * aspect, parallel scale) around the
+  // focal point.
+  void Corner(vtkCamera* camera, int width, int height, double corner[2], double& along) const
   {
-    const std::size_t binBytes = static_cast<std::size_t>(this->WordsPerPixel) * 4;
-    const std::size_t sumBytes = static_cast<std::size_t>(SumBytesPerPixel);
-    vtkParticleComputeProgram::AllocateStorage(this->Row, width * std::max(binBytes, sumBytes));
-    const int x0 = std::max(0, -pan[0]);
-    const int x1 = std::min(width, width - pan[0]);
-    const GLuint zero = 0;
-    auto clear = [&](GLintptr start, GLsizeiptr bytes) {
-      glClearBufferSubData(
-        GL_COPY_WRITE_BUFFER, GL_R32UI, start, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    };
-    for (vtkOpenGLBufferObject* buffer : { this->Counts.Get(), this->Sums.Get() })
+    const double* focal = camera->GetFocalPoint();
+    double plane[3] = { 0.0, 0.0, 0.0 };
+    for (int row = 0; row < 3; ++row)
     {
-      const std::size_t pixelBytes = buffer == this->Counts.Get() ? binBytes : sumBytes;
-      const GLsizeiptr rowBytes = static_cast<GLsizeiptr>(pixelBytes * width);
-      const GLsizeiptr segment = static_cast<GLsizeiptr>(pixelBytes * (x1 - x0));
-      for (int k = 0; k < height; ++k)
+      for (int a = 0; a < 3; ++a)
       {
-        const int y = pan[1] >= 0 ? k : height - 1 - k;
-        const int oldY = y + pan[1];
-        const GLintptr rowStart = static_cast<GLintptr>(y) * rowBytes;
-        glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
-        if (oldY < 0 || oldY >= height)
-        {
-          clear(rowStart, rowBytes);
-          continue;
-        }
-        // old row segment -> scratch -> new row segment (the two may overlap)
-        glBindBuffer(GL_COPY_READ_BUFFER, buffer->GetHandle());
-        glBindBuffer(GL_COPY_WRITE_BUFFER, this->Row->GetHandle());
-        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
-          static_cast<GLintptr>(oldY) * rowBytes + static_cast<GLintptr>(pixelBytes * (x0 + pan[0])),
-          0, segment);
-        glBindBuffer(GL_COPY_READ_BUFFER, this->Row->GetHandle());
-        glBindBuffer(GL_COPY_WRITE_BUFFER, buffer->GetHandle());
-        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0,
-          rowStart + static_cast<GLintptr>(pixelBytes * x0), segment);
-        // the columns the pan uncovers
-        clear(rowStart, static_cast<GLsizeiptr>(pixelBytes * x0));
-        clear(rowStart + static_cast<GLintptr>(pixelBytes * x1),
-          static_cast<GLsizeiptr>(pixelBytes * (width - x1)));
+        plane[row] += this->Rotation[row][a] * focal[a];
       }
     }
-    glBindBuffer(GL_COPY_READ_BUFFER, 0);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    const double* centre = camera->GetWindowCenter();
+    const double scale = camera->GetParallelScale();
+    corner[0] = plane[0] + (centre[0] - 1.0) * scale * width / height;
+    corner[1] = plane[1] + (centre[1] - 1.0) * scale;
+    along = plane[2];
+  }
+
+  // Starts the S-MIP's frame at this view: its pixels are the level-0 texels.
+  void StartFrame(vtkCamera* camera, int width, int height)
+  {
+    vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Rotation[row][a] = view->GetElement(row, a);
+      }
+      this->Offset[row] = camera->GetPosition()[row] - camera->GetFocalPoint()[row];
+    }
+    this->TexelSize = camera->GetParallelProjection() ? 2.0 * camera->GetParallelScale() / height : 1.0;
+    this->Corner(camera, width, height, this->Plane, this->Along);
+    this->Placement = vtkSNDFTileCache::Placement();
+    this->FrameValid = true;
+  }
+
+  // Where a parallel view of the frame lies in the S-MIP: false unless its pixels are the
+  // texels of a level (pixel size 2^L level-0 texels; the camera moved in the view plane only,
+  // the direction kept). Its grid is placed to 1/256 level-0 texel.
+  bool PlaceView(vtkCamera* camera, int width, int height, vtkSNDFTileCache::Placement& placed) const
+  {
+    if (!camera->GetParallelProjection())
+    {
+      placed = vtkSNDFTileCache::Placement();
+      return true;
+    }
+    const double pixel = 2.0 * camera->GetParallelScale() / height;
+    const double lod = std::log2(pixel / this->TexelSize);
+    if (!std::isfinite(lod))
+    {
+      return false;
+    }
+    const long level = std::lround(lod);
+    if (std::abs(lod - level) > 1e-6 || level < vtkSNDFTileCache::MinimumLevel ||
+      level > vtkSNDFTileCache::MaximumLevel)
+    {
+      return false;
+    }
+    double reach = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      reach += this->Offset[a] * this->Offset[a];
+    }
+    reach = std::sqrt(reach);
+    for (int a = 0; a < 3; ++a)
+    {
+      const double offset = camera->GetPosition()[a] - camera->GetFocalPoint()[a];
+      if (std::abs(offset - this->Offset[a]) > 1e-9 * reach + 1e-6 * this->TexelSize)
+      {
+        return false;
+      }
+    }
+    double corner[2];
+    double along;
+    this->Corner(camera, width, height, corner, along);
+    if (std::abs(along - this->Along) > 1e-3 * this->TexelSize)
+    {
+      return false;
+    }
+    placed.Level = static_cast<int>(level);
+    const long long texel = 1LL << (level + 8);
+    for (int a = 0; a < 2; ++a)
+    {
+      // in 1/256 of a level-0 texel
+      const double position = 256.0 * (corner[a] - this->Plane[a]) / this->TexelSize;
+      if (!(std::abs(position) < 1e15))
+      {
+        return false;
+      }
+      // (a grid of 1/256 pixel: the texels lie within 1/512 level-0 pixel of the view's pixels)
+      const long long whole = std::llround(position);
+      placed.Phase[a] = ((whole % texel) + texel) % texel;
+      placed.Origin[a] = (whole - placed.Phase[a]) / texel;
+    }
+    return true;
   }
 
   // true the first time `what` is reported
@@ -327,55 +378,14 @@ void vtkSNDFRenderPass::SetBinsPerAxis(int bins)
 //------------------------------------------------------------------------------
 void vtkSNDFRenderPass::Restart()
 {
-  this->Internals->SampleState.clear();
+  this->Internals->FrameValid = false;
   this->NumberOfSamples = 0;
 }
 
 //------------------------------------------------------------------------------
-bool vtkSNDFRenderPass::PanShift(vtkCamera* camera, const double oldPosition[3],
-  const double oldFocalPoint[3], int height, int pan[2])
+vtkSNDFTileCache* vtkSNDFRenderPass::GetTileCache()
 {
-  // exact only where the picture moves as a whole: parallel projection, position and focal
-  // point moved by the same vector in the view plane, a whole number of pixels
-  if (!camera->GetParallelProjection() || height < 1)
-  {
-    return false;
-  }
-  double move[3];
-  const double* position = camera->GetPosition();
-  const double* focal = camera->GetFocalPoint();
-  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
-  const double pixel = 2.0 * camera->GetParallelScale() / height;
-  double along[3] = { 0.0, 0.0, 0.0 };
-  for (int a = 0; a < 3; ++a)
-  {
-    move[a] = position[a] - oldPosition[a];
-    if (std::abs(move[a] - (focal[a] - oldFocalPoint[a])) > 1e-9 * (pixel + std::abs(move[a])))
-    {
-      return false;
-    }
-  }
-  for (int row = 0; row < 3; ++row)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      along[row] += view->GetElement(row, a) * move[a];
-    }
-  }
-  if (!(pixel > 0.0) || std::abs(along[2]) > 1e-6 * pixel)
-  {
-    return false;
-  }
-  for (int axis = 0; axis < 2; ++axis)
-  {
-    const double shift = along[axis] / pixel;
-    pan[axis] = static_cast<int>(std::lround(shift));
-    if (std::abs(shift - pan[axis]) > 1e-3)
-    {
-      return false;
-    }
-  }
-  return pan[0] != 0 || pan[1] != 0;
+  return this->Internals->Cache;
 }
 
 //------------------------------------------------------------------------------
@@ -471,9 +481,21 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   std::vector<vtkActor*> particles;
   std::string unsupported;
   std::vector<double> state;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  // The renderer's props, not those of the render state: the renderer leaves out the props
+  // outside the view, and a pan to empty space and back keeps the S-MIP.
+  std::vector<vtkProp*> props;
+  if (ren)
   {
-    vtkProp* prop = s->GetPropArray()[i];
+    vtkCollectionSimpleIterator pit;
+    vtkPropCollection* viewProps = ren->GetViewProps();
+    viewProps->InitTraversal(pit);
+    while (vtkProp* prop = viewProps->GetNextProp(pit))
+    {
+      props.push_back(prop);
+    }
+  }
+  for (vtkProp* prop : props)
+  {
     if (!prop->GetVisibility())
     {
       continue;
@@ -534,11 +556,28 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     this->NumberOfSamples = 0;
     this->ActiveBinsPerAxis = 0;
-    internals.SampleState.clear();
+    internals.FrameValid = false;
+    internals.Shown = false;
   };
   if (particles.empty() || !ren || !context)
   {
     renderPlain();
+    return;
+  }
+  bool drawn = false; // a particle actor in the view
+  for (int i = 0; i < s->GetPropArrayCount() && !drawn; ++i)
+  {
+    drawn = std::find(particles.begin(), particles.end(), s->GetPropArray()[i]) != particles.end();
+  }
+  if (!drawn)
+  {
+    // no particle in the view (panned off): the plain image is exact (converged); the S-MIP
+    // stays for the way back
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->NumberOfSamples = this->TargetSamples;
+    internals.Shown = false;
+    internals.Placed = false;
     return;
   }
   if (!unsupported.empty())
@@ -573,12 +612,15 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     return;
   }
 
-  // bins that fit the memory limit
-  int bins = this->BinsPerAxis;
-  auto bytesFor = [&](int b) {
-    return static_cast<double>(width) * height * (4.0 * WordsPerPixel(b) + SumBytesPerPixel);
+  // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up
+  // to four views' worth of tiles (pans back, zoomed-out levels) where the limit allows
+  const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
+  auto slotsFor = [&](int b) {
+    return static_cast<int>(std::min(4.0 * viewTiles,
+      std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b))));
   };
-  while (bins >= 4 && bytesFor(bins) > this->MaximumMemory * 1048576.0)
+  int bins = this->BinsPerAxis;
+  while (bins >= 4 && slotsFor(bins) < viewTiles)
   {
     bins /= 2;
   }
@@ -587,8 +629,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     const std::string what = "memory " + std::to_string(width) + "x" + std::to_string(height);
     if (internals.FirstWarning(what))
     {
-      vtkWarningMacro(<< "The S-NDFs of a " << width << " x " << height << " view need "
-                      << bytesFor(4) / 1048576.0 << " MB even with 4 x 4 bins, more than "
+      vtkWarningMacro(<< "The S-MIP cache of a " << width << " x " << height << " view needs "
+                      << viewTiles * vtkSNDFTileCache::GetTileBytes(4) / 1048576.0
+                      << " MB for its " << viewTiles << " tiles even with 4 x 4 bins, more than "
                       << "MaximumMemory (" << this->MaximumMemory
                       << " MB): the view is rendered as without S-NDF shading.");
     }
@@ -601,25 +644,31 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       " " + std::to_string(bins);
     if (internals.FirstWarning(what))
     {
-      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) holds the S-NDFs of "
-                      << "this " << width << " x " << height << " view with " << bins << " x "
-                      << bins << " bins only, not " << this->BinsPerAxis << " x "
+      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) holds the S-MIP "
+                      << "tiles of this " << width << " x " << height << " view with " << bins
+                      << " x " << bins << " bins only, not " << this->BinsPerAxis << " x "
                       << this->BinsPerAxis << ".");
     }
   }
+  const int slots = slotsFor(bins);
 
-  // the view: camera, size, bins, background. The camera's values are compared in single
-  // precision: vtkWindowToImageFilter restores the view angle with a last-bit difference.
+  // The view: camera, size, bins, background. The camera's values are compared in single
+  // precision: vtkWindowToImageFilter restores the view angle with a last-bit difference. In
+  // parallel projection the position, focal point and parallel scale are left out: a view
+  // whose pixels are the texels of an S-MIP level keeps the samples (PlaceView()).
   vtkCamera* camera = ren->GetActiveCamera();
-  const std::size_t panAt = state.size(); // camera position and focal point: state[panAt, +6)
+  const bool parallel = camera->GetParallelProjection() != 0;
   std::vector<double> view;
-  view.insert(view.end(), camera->GetPosition(), camera->GetPosition() + 3);
-  view.insert(view.end(), camera->GetFocalPoint(), camera->GetFocalPoint() + 3);
+  if (!parallel)
+  {
+    view.insert(view.end(), camera->GetPosition(), camera->GetPosition() + 3);
+    view.insert(view.end(), camera->GetFocalPoint(), camera->GetFocalPoint() + 3);
+    view.push_back(camera->GetParallelScale());
+  }
   view.insert(view.end(), camera->GetViewUp(), camera->GetViewUp() + 3);
   view.insert(view.end(), camera->GetClippingRange(), camera->GetClippingRange() + 2);
   view.insert(view.end(), camera->GetWindowCenter(), camera->GetWindowCenter() + 2);
   view.push_back(camera->GetViewAngle());
-  view.push_back(camera->GetParallelScale());
   view.push_back(camera->GetParallelProjection());
   AppendMatrix(view, camera->GetModelTransformMatrix());
   for (double v : view)
@@ -631,6 +680,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   state.push_back(x0);
   state.push_back(y0);
   state.push_back(bins);
+  state.push_back(slots);
   state.insert(state.end(), ren->GetBackground(), ren->GetBackground() + 3);
   state.insert(state.end(), ren->GetBackground2(), ren->GetBackground2() + 3);
   state.push_back(ren->GetGradientBackground());
@@ -663,31 +713,14 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.TimesRead = false;
   }
 
-  // a pan: the S-NDFs move with the picture, only the pixels it uncovers start empty
-  std::vector<double> fixedState = state;
-  fixedState.erase(fixedState.begin() + panAt, fixedState.begin() + panAt + 6);
-  int pan[2] = { 0, 0 };
-  if (state != internals.SampleState && this->NumberOfSamples > 0 &&
-    fixedState == internals.FixedState && width == internals.Width &&
-    height == internals.Height && bins == internals.Bins &&
-    this->PanShift(camera, internals.Position, internals.FocalPoint, height, pan) &&
-    std::abs(pan[0]) < width && std::abs(pan[1]) < height)
+  // the same frame (a pan or zoom by levels of the S-MIP keeps the samples), or a restart
+  vtkSNDFTileCache::Placement placement;
+  const bool sameFrame = internals.FrameValid && state == internals.FixedState &&
+    internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
+    internals.PlaceView(camera, width, height, placement);
+  if (!sameFrame)
   {
-    internals.ShiftPixels(width, height, pan);
-    internals.SampleState = state;
-    internals.ResolveKey.clear();
-    // the uncovered pixels refine from their first sample on; the others get more samples
-    this->NumberOfSamples = 0;
-    ++this->NumberOfPans;
-  }
-  internals.FixedState = fixedState;
-  camera->GetPosition(internals.Position);
-  camera->GetFocalPoint(internals.FocalPoint);
-
-  // (re)start
-  if (state != internals.SampleState)
-  {
-    if (width != internals.Width || height != internals.Height || bins != internals.Bins ||
+    if (width != internals.Width || height != internals.Height ||
       !internals.Depth || !internals.Depth->GetHandle())
     {
       internals.ReleaseTextures(context);
@@ -731,44 +764,46 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       }
       internals.Target->AddDepthAttachment(internals.Depth);
       ostate->PopFramebufferBindings();
-
-      internals.WordsPerPixel = WordsPerPixel(bins);
-      const std::size_t pixels = static_cast<std::size_t>(width) * height;
-      if (!vtkParticleComputeProgram::AllocateStorage(
-            internals.Counts, pixels * internals.WordsPerPixel * 4) ||
-        !vtkParticleComputeProgram::AllocateStorage(
-          internals.Sums, pixels * static_cast<std::size_t>(SumBytesPerPixel)))
+      internals.Width = width;
+      internals.Height = height;
+    }
+    if (internals.Cache->GetNumberOfSlots() != slots || internals.Cache->GetBins() != bins)
+    {
+      if (!internals.Cache->Allocate(context, bins, slots))
       {
-        vtkErrorMacro(<< "Could not allocate " << bytesFor(bins) / 1048576.0
-                      << " MB for the S-NDFs: the view is rendered as without them.");
+        vtkErrorMacro(<< "Could not allocate " << slots * vtkSNDFTileCache::GetTileBytes(bins) / 1048576.0
+                      << " MB for the S-MIP cache: the view is rendered as without S-NDFs.");
         internals.ReleaseTextures(context);
         renderPlain();
         return;
       }
-      internals.Width = width;
-      internals.Height = height;
-      internals.Bins = bins;
-      this->MemoryBytes = bytesFor(bins);
+      this->MemoryBytes = internals.Cache->GetBytes();
     }
-    const std::size_t pixels = static_cast<std::size_t>(width) * height;
-    vtkParticleComputeProgram::ClearStorage(internals.Counts, pixels * internals.WordsPerPixel * 4, 0u);
-    vtkParticleComputeProgram::ClearStorage(
-      internals.Sums, pixels * static_cast<std::size_t>(SumBytesPerPixel), 0u);
-    internals.Rebake = false;
-    internals.SampleState = state;
+    internals.Cache->Clear();
+    internals.StartFrame(camera, width, height);
+    internals.FixedState = state;
+    internals.Placed = false;
+    internals.Sequence = 0;
     internals.ResolveKey.clear();
+    placement = internals.Placement;
     this->NumberOfSamples = 0;
     ++this->NumberOfRestarts;
-    // The frame of a change (e.g. each frame of an interaction) is the plain image: one S-NDF
-    // sample would shade with bin means, coarser than the exact normal. Sampling starts with the
-    // next frame -- unless this render is to converge (ConvergeOnRender).
-    if (!this->ConvergeOnRender)
-    {
-      this->DelegatePass->Render(s);
-      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-      this->ActiveBinsPerAxis = bins;
-      return;
-    }
+  }
+  // The frame of a change (e.g. each frame of an interaction: a restart, a pan off the grids in
+  // the cache) is the plain image: one S-NDF sample would shade with bin means, coarser than the
+  // exact normal. Sampling starts with the next frame -- unless this render is to converge
+  // (ConvergeOnRender). A view with tiles in the cache shows them at once.
+  const bool changed = !sameFrame || !internals.Shown || !(placement == internals.ShownView);
+  internals.ShownView = placement;
+  internals.Shown = true;
+  if (changed && !this->ConvergeOnRender &&
+    internals.Cache->CountAvailable(placement, width, height) == 0)
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->ActiveBinsPerAxis = bins;
+    this->NumberOfSamples = 0;
+    return;
   }
   this->ActiveBinsPerAxis = bins;
 
@@ -808,12 +843,45 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   vtkLightCollection* lights = ren->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
+  // what the table depends on: each light's colour, its direction in view coordinates and,
+  // for positional lights, its position there and its cone (a pan moves neither the view
+  // direction nor a directional light's: the tiles keep their shading)
+  vtkMatrix4x4* modelView = camera->GetModelViewTransformMatrix();
   while (vtkLight* light = lights->GetNextLight(it))
   {
-    tableKey.push_back(static_cast<double>(light->GetMTime()));
-    AppendMatrix(tableKey, light->GetTransformMatrix());
+    if (!light->GetSwitch())
+    {
+      continue;
+    }
+    double colour[3];
+    light->GetDiffuseColor(colour);
+    double position[4] = { 0.0, 0.0, 0.0, 1.0 };
+    double focal[4] = { 0.0, 0.0, 0.0, 1.0 };
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    double positionVC[4];
+    double focalVC[4];
+    modelView->MultiplyPoint(position, positionVC);
+    modelView->MultiplyPoint(focal, focalVC);
+    tableKey.push_back(light->GetIntensity());
+    tableKey.insert(tableKey.end(), colour, colour + 3);
+    // (the direction to six digits: a pan there and back moves a headlight by rounding errors)
+    double direction[3] = { focalVC[0] - positionVC[0], focalVC[1] - positionVC[1],
+      focalVC[2] - positionVC[2] };
+    const double length = vtkMath::Norm(direction);
+    for (double d : direction)
+    {
+      tableKey.push_back(length > 0.0 ? std::round(1e6 * d / length) : 0.0);
+    }
+    tableKey.push_back(light->GetPositional());
+    if (light->GetPositional())
+    {
+      tableKey.insert(tableKey.end(), positionVC, positionVC + 3);
+      tableKey.insert(tableKey.end(), light->GetAttenuationValues(), light->GetAttenuationValues() + 3);
+      tableKey.push_back(light->GetExponent());
+      tableKey.push_back(light->GetConeAngle());
+    }
   }
-  AppendMatrix(tableKey, camera->GetModelViewTransformMatrix());
   if (tableKey != internals.TableKey || !internals.HaveTable)
   {
     const std::string uniforms = ren->GetLightingUniforms();
@@ -908,10 +976,34 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.TableKey = tableKey;
     internals.HaveTable = true;
     ++this->NumberOfTableBuilds;
-    // the samples taken so far were shaded with the old table (none after a restart)
-    internals.Rebake = internals.Rebake || this->NumberOfSamples > 0;
   }
 
+  // the view's tiles of the S-MIP: found in the cache, averaged from a finer level, or new;
+  // rebaked where shaded with an older table (re-lighting)
+  const long long changes =
+    internals.Cache->GetNumberOfDownsampledTiles() + internals.Cache->GetNumberOfClearedTiles();
+  if (!internals.Cache->MapView(placement, width, height, internals.Table,
+        static_cast<long long>(this->NumberOfTableBuilds)))
+  {
+    internals.EndStage(timing);
+    vtkErrorMacro(<< "The S-MIP cache does not hold the view's tiles.");
+    renderPlain();
+    return;
+  }
+  const bool moved = !internals.Placed || !(placement == internals.Placement);
+  if (moved && internals.Placed)
+  {
+    ++(placement.Level == internals.Placement.Level ? this->NumberOfPans : this->NumberOfZooms);
+  }
+  if (moved || changes != internals.Cache->GetNumberOfDownsampledTiles() +
+        internals.Cache->GetNumberOfClearedTiles())
+  {
+    // a pan or zoom brought other texels into the view: count the fewest samples a pixel holds
+    this->NumberOfSamples = static_cast<int>(std::min<unsigned int>(
+      internals.Cache->CountMinimumSamples(width, height), static_cast<unsigned int>(this->TargetSamples)));
+  }
+  internals.Placement = placement;
+  internals.Placed = true;
   internals.EndStage(timing);
 
   // sample passes
@@ -934,7 +1026,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     double centre[2];
     camera->GetWindowCenter(centre);
     double offset[2];
-    JitterOffset(this->NumberOfSamples, offset);
+    JitterOffset(internals.Sequence++, offset);
     camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / width, centre[1] + 2.0 * offset[1] / height);
 
     internals.BeginStage(timing, 0);
@@ -981,9 +1073,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
     accumulate->SetUniform2i("prSize", width, height);
     accumulate->SetUniformi("prBins", bins);
-    accumulate->SetUniformi("prWordsPerPixel", internals.WordsPerPixel);
-    vtkParticleComputeProgram::BindStorage(0, internals.Counts);
-    vtkParticleComputeProgram::BindStorage(1, internals.Sums);
+    accumulate->SetUniformi("prWordsPerPixel", vtkSNDFTileCache::GetWordsPerTexel(bins));
+    accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
+    internals.Cache->BindView(accumulate);
     accumulate->Dispatch(groupsX, groupsY);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     for (unsigned int a = 0; a < NumberOfAttachments; ++a)
@@ -1010,7 +1102,12 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   {
     c *= material->GetSpecular();
   }
-  std::vector<double> resolveKey = { static_cast<double>(this->NumberOfSamples),
+  std::vector<double> resolveKey = { static_cast<double>(this->NumberOfSamplePasses),
+    static_cast<double>(placement.Level), static_cast<double>(placement.Origin[0]),
+    static_cast<double>(placement.Origin[1]), static_cast<double>(placement.Phase[0]),
+    static_cast<double>(placement.Phase[1]),
+    static_cast<double>(internals.Cache->GetNumberOfDownsampledTiles()),
+    static_cast<double>(internals.Cache->GetNumberOfClearedTiles()),
     static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2] };
   if (resolveKey != internals.ResolveKey)
   {
@@ -1020,12 +1117,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     resolve->SetUniformi("prTable", internals.Table->GetTextureUnit());
     resolve->SetUniform2i("prSize", width, height);
     resolve->SetUniformi("prBins", bins);
-    resolve->SetUniformi("prWordsPerPixel", internals.WordsPerPixel);
-    resolve->SetUniformi("prRebake", internals.Rebake ? 1 : 0);
     resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
       static_cast<float>(specular[1]), static_cast<float>(specular[2]));
-    vtkParticleComputeProgram::BindStorage(0, internals.Counts);
-    vtkParticleComputeProgram::BindStorage(1, internals.Sums);
+    internals.Cache->BindView(resolve);
     glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     resolve->Dispatch(groupsX, groupsY);
@@ -1035,7 +1129,6 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Table->Deactivate();
     vtkParticleComputeProgram::UseNone();
     internals.ResolveKey = resolveKey;
-    internals.Rebake = false;
     ++this->NumberOfResolves;
   }
 
@@ -1115,15 +1208,12 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   internals.Accumulate->ReleaseGraphicsResources(w);
   internals.Resolve->ReleaseGraphicsResources(w);
-  const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
-  vtkParticleComputeProgram::ReleaseStorage(internals.Counts, current);
-  vtkParticleComputeProgram::ReleaseStorage(internals.Sums, current);
-  vtkParticleComputeProgram::ReleaseStorage(internals.Row, current);
-  internals.SampleState.clear();
+  internals.Cache->ReleaseGraphicsResources(w);
+  internals.FrameValid = false;
+  internals.Placed = false;
   internals.FixedState.clear();
   internals.TableKey.clear();
   internals.ResolveKey.clear();
-  internals.Bins = 0;
   this->NumberOfSamples = 0;
   this->MemoryBytes = 0.0;
   this->Superclass::ReleaseGraphicsResources(w);

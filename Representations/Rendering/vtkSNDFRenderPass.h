@@ -112,8 +112,8 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
-class vtkCamera;
 class vtkFloatArray;
+class vtkSNDFTileCache;
 
 class VTKPARTICLERENDERING_EXPORT vtkSNDFRenderPass : public vtkImageProcessingPass
 {
@@ -205,7 +205,13 @@ public:
   vtkGetMacro(NumberOfTableBuilds, vtkIdType);
   vtkGetMacro(NumberOfResolves, vtkIdType);
   vtkGetMacro(NumberOfPans, vtkIdType);
+  vtkGetMacro(NumberOfZooms, vtkIdType);
   ///@}
+
+  /**
+   * The S-MIP cache (its tiles, slots and counters; owned by the pass).
+   */
+  vtkSNDFTileCache* GetTileCache();
 
   /**
    * A Render() that takes 8 sample passes or more (ConvergeOnRender, a large SamplesPerFrame)
@@ -266,16 +272,10 @@ protected:
   vtkIdType NumberOfTableBuilds = 0;
   vtkIdType NumberOfResolves = 0;
   vtkIdType NumberOfPans = 0;
+  vtkIdType NumberOfZooms = 0;
   bool CollectTimings = false;
   bool ConvergeOnRender = false;
 
-  /**
-   * The whole-pixel shift of the picture (pan[0] right, pan[1] up) when the camera moved from
-   * oldPosition / oldFocalPoint by a pan that moves the picture exactly (parallel projection, a
-   * move in the view plane by whole pixels); false otherwise.
-   */
-  static bool PanShift(vtkCamera* camera, const double oldPosition[3],
-    const double oldFocalPoint[3], int height, int pan[2]);
 
 private:
   vtkSNDFRenderPass(const vtkSNDFRenderPass&) = delete;

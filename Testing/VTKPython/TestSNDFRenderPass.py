@@ -16,7 +16,12 @@ from plain VTK Python. Checked:
   particles; translucent geometry: one warning and the plain image;
 - pan (parallel projection, whole pixels): no restart, the kept pixels converged at once (the
   picture before, shifted), the uncovered ones refine; converged, the picture of a pass that
-  started at the new view; a half-pixel pan restarts;
+  started at the new view;
+- the S-MIP (Sec. 6): a pan back finds the tiles in the cache (the picture before, no sample); a
+  half-pixel pan uses tiles of another grid phase, a 0.3-pixel pan restarts; a zoom out by 2
+  averages level 1 from level 0 (against level 1 rendered directly) and a zoom back in shows the
+  cached level 0; tiles out of view during a light change are rebaked when they come back; a
+  cache of one view's tiles evicts the least recently used and samples them again;
 - ConvergeOnRender: one render (also the render of a change) takes all 256 samples and gives
   the progressive picture, reporting its progress (vtkCommand::ProgressEvent, 0 to 1);
 - bad input: an empty input, a memory limit below 4x4 bins (a warning, the plain image), a limit
@@ -179,11 +184,12 @@ image(window)
 check(sndf.GetNumberOfSamplePasses() == passes, "converged: no more sample passes")
 
 # the shaded bin sums kept per sample equal the sums formed again from the bins (a table build
-# forced by touching the light)
+# forced by a light intensity changed in the sixth digit)
 lights = renderer.GetLights()
 lights.InitTraversal()
 builds = sndf.GetNumberOfTableBuilds()
-lights.GetNextItem().Modified()
+headlight = lights.GetNextItem()
+headlight.SetIntensity(headlight.GetIntensity() * (1.0 + 1e-6))
 rebaked = image(window)
 print("per-sample shading vs shading from the bins: max %.1f /255" % np.abs(rebaked - out).max())
 check(sndf.GetNumberOfTableBuilds() == builds + 1 and sndf.GetNumberOfSamplePasses() == passes
@@ -307,11 +313,144 @@ difference = np.abs(panned - image(fresh_window))
 check(difference.max() <= 1.0,
       "after the pan, converged: the picture of a pass that started there (max %.1f)"
       % difference.max())
-# a pan by a fraction of a pixel, and any pan in perspective, samples anew
-pan_camera(renderer.GetActiveCamera(), 0.5, 0)
+# --- the S-MIP: tiles in an LRU cache, pan back, zoom out by levels, re-light while away -----
+cache = sndf.GetTileCache()
+cleared = cache.GetNumberOfClearedTiles()
+pan_camera(renderer.GetActiveCamera(), -7, 5)
+back = image(window)
+check(sndf.GetNumberOfPans() == 2 and sndf.GetNumberOfRestarts() == restarts
+      and cache.GetNumberOfClearedTiles() == cleared and sndf.GetConverged()
+      and np.array_equal(back, before),
+      "a pan back finds the tiles in the cache: converged at once, the picture before (max %.1f)"
+      % np.abs(back - before).max())
+# a pan by 0.3 pixel lies on another grid of the level: no tile in the cache, so the frame of
+# the change is the plain image, then new tiles refine; the pan back finds the first grid's
+passes = sndf.GetNumberOfSamplePasses()
+pan_camera(renderer.GetActiveCamera(), 0.3, 0)
+shifted_plain = image(window)
+shifted_renderer, shifted_window = parallel_view(None)
+pan_camera(shifted_renderer.GetActiveCamera(), 0.3, 0)
+check(sndf.GetNumberOfRestarts() == restarts and sndf.GetNumberOfSamples() == 0
+      and np.array_equal(shifted_plain, image(shifted_window)),
+      "a pan by 0.3 pixel: no restart, the plain image on the frame of the change")
 image(window)
-check(sndf.GetNumberOfPans() == 1 and sndf.GetNumberOfRestarts() == restarts + 1,
-      "a half-pixel pan restarts")
+check(sndf.GetNumberOfSamples() == 64 and cache.GetNumberOfClearedTiles() > cleared,
+      "then tiles of another grid phase, sampled from the first sample on")
+pan_camera(renderer.GetActiveCamera(), -0.3, 0)
+check(np.array_equal(image(window), before) and sndf.GetNumberOfSamplePasses() == passes + 64,
+      "and back: the tiles of the first grid, converged")
+# a rotation restarts
+renderer.GetActiveCamera().Azimuth(1)
+image(window)
+check(sndf.GetNumberOfRestarts() == restarts + 1, "a rotation restarts")
+renderer.GetActiveCamera().Azimuth(-1)
+
+# zoom out by one level: the level-1 tiles are averaged from level 0 (2x2), no sample is taken
+# where level 0 was sampled; compared with rendering level 1 directly
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(64)
+renderer, window = parallel_view(sndf)
+image(window)
+converge(sndf, window)
+level0 = image(window)
+cache = sndf.GetTileCache()
+restarts = sndf.GetNumberOfRestarts()
+renderer.GetActiveCamera().SetParallelScale(32.0)
+zoomed = image(window)
+direct = pr.vtkSNDFRenderPass()
+direct.SetSamplesPerFrame(64)
+direct_renderer, direct_window = parallel_view(direct)
+direct_renderer.GetActiveCamera().SetParallelScale(32.0)
+image(direct_window)
+converge(direct, direct_window)
+level1 = image(direct_window)
+# the middle half of the view: texels whose 2x2 finer texels were all in the level-0 view
+middle = (slice(H // 4 + 1, 3 * H // 4 - 1), slice(W // 4 + 1, 3 * W // 4 - 1))
+zoom_error = error(zoomed[middle], level1[middle])
+print("zoom out by one level, averaged from level 0 vs level 1 rendered directly: mean %.2f "
+      "p99 %.1f max %.1f /255 (%d tiles averaged)" % (zoom_error + (cache.GetNumberOfDownsampledTiles(),)))
+check(sndf.GetNumberOfZooms() == 1 and sndf.GetNumberOfRestarts() == restarts
+      and cache.GetNumberOfDownsampledTiles() > 0,
+      "a zoom out by a factor 2 keeps the samples (averaged tiles, no restart)")
+check(zoom_error[0] < 0.5 and zoom_error[1] < 4.0 and zoom_error[2] < 8.0,
+      "zoomed out at once: within mean 0.5, p99 4, max 8 /255 of level 1 rendered directly")
+converge(sndf, window)
+whole = error(image(window), level1)
+print("zoomed out and converged vs level 1 rendered directly: mean %.2f p99 %.1f max %.1f /255" % whole)
+check(whole[0] < 0.5 and whole[2] < 8.0, "zoomed out and converged: level 1 within mean 0.5, max 8")
+renderer.GetActiveCamera().SetParallelScale(16.0)
+passes = sndf.GetNumberOfSamplePasses()
+check(np.array_equal(image(window), level0) and sndf.GetNumberOfSamplePasses() == passes
+      and sndf.GetNumberOfZooms() == 2,
+      "zoom back in: the level-0 tiles from the cache, no sample")
+
+# re-light while tiles are out of view: they are rebaked when they come back, never stale
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(64)
+renderer, window = parallel_view(sndf)
+image(window)
+converge(sndf, window)
+# (a pan by 150 pixels leaves the crystal out of the view: no tile of the first view is seen)
+pan_camera(renderer.GetActiveCamera(), 150, 0)
+image(window)
+converge(sndf, window)
+light = vtkLight()
+light.SetLightTypeToSceneLight()
+light.SetPosition(-30, 40, 20)
+light.SetFocalPoint(8, 8, 8)
+light.SetColor(0.9, 0.6, 0.5)
+renderer.AddLight(light)
+image(window)
+rebaked = sndf.GetTileCache().GetNumberOfRebakedTiles()
+passes = sndf.GetNumberOfSamplePasses()
+restarts = sndf.GetNumberOfRestarts()
+pan_camera(renderer.GetActiveCamera(), -150, 0)
+relit_back = image(window)
+fresh = pr.vtkSNDFRenderPass()
+fresh.SetSamplesPerFrame(64)
+fresh_renderer, fresh_window = parallel_view(fresh)
+image(fresh_window)  # (the first render adds the headlight)
+fresh_light = vtkLight()
+fresh_light.DeepCopy(light)
+fresh_renderer.AddLight(fresh_light)
+image(fresh_window)
+converge(fresh, fresh_window)
+stale = np.abs(relit_back - image(fresh_window))
+check(sndf.GetTileCache().GetNumberOfRebakedTiles() > rebaked and sndf.GetNumberOfRestarts() == restarts
+      and sndf.GetNumberOfSamplePasses() == passes and stale.max() <= 1.0,
+      "re-lit while out of view: the tiles rebaked on the pan back, no sample, the new light "
+      "(max %.1f /255 from a pass that sampled under it)" % stale.max())
+
+# a cache that holds one view's tiles only: the least recently used tiles make room (evicted),
+# a pan back samples them again, never shows a wrong one
+tiles = pr.vtkSNDFTileCache.GetTilesForView(W, H)
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(64)
+sndf.SetMaximumMemory(tiles * pr.vtkSNDFTileCache.GetTileBytes(8) / 1048576.0 + 0.01)
+messages = Messages(sndf)
+renderer, window = parallel_view(sndf)
+image(window)
+converge(sndf, window)
+cache = sndf.GetTileCache()
+# four tiles at the start, 8 after a pan by (-30, -30), 10 wanted after (+60, +60): one evicted
+pan_camera(renderer.GetActiveCamera(), -30, -30)
+image(window)
+converge(sndf, window)
+first = image(window)
+pan_camera(renderer.GetActiveCamera(), 60, 60)
+image(window)
+converge(sndf, window)
+cleared = cache.GetNumberOfClearedTiles()
+pan_camera(renderer.GetActiveCamera(), -60, -60)
+image(window)
+evicted = cache.GetNumberOfEvictedTiles()
+check(cache.GetNumberOfSlots() == tiles and evicted > 0 and sndf.GetNumberOfSamples() < 256
+      and cache.GetNumberOfClearedTiles() > cleared and not messages.warnings,
+      "a cache of %d tiles: %d evicted by the pan, sampled again on the pan back" % (tiles, evicted))
+converge(sndf, window)
+lru = error(image(window), first)
+check(lru[0] < 0.2 and lru[2] <= 4.0,
+      "and converged again: the first picture (mean %.2f max %.1f /255, other jitter)" % (lru[0], lru[2]))
 
 # --- ConvergeOnRender: one Render() converges (also the render of a change), with progress ---
 from vtkmodules.util.misc import calldata_type  # noqa: E402
@@ -362,7 +501,8 @@ check(np.array_equal(small, plain) and len(messages.warnings) == 1 and "MaximumM
 
 # a limit between 4x4 and 8x8: 4x4 bins with a warning, still converging
 sndf = pr.vtkSNDFRenderPass()
-sndf.SetMaximumMemory(W * H * (8 * 16 + 64) * 1.5 / 1048576.0)
+sndf.SetMaximumMemory(pr.vtkSNDFTileCache.GetTilesForView(W, H) * pr.vtkSNDFTileCache.GetTileBytes(4)
+                      * 1.5 / 1048576.0)
 sndf.SetSamplesPerFrame(64)
 messages = Messages(sndf)
 renderer, window, _ = scene(xyz, rgb, (W, H), sndf)

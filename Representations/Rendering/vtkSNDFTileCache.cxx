@@ -1,0 +1,522 @@
+#include "vtkSNDFTileCache.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleShaders.h"
+#include "vtkTextureObject.h"
+#include "vtkWeakPointer.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <vector>
+
+namespace
+{
+// bytes per texel besides the bin words: four vec4 sums
+const double SumBytesPerTexel = 64.0;
+const std::size_t TileTexels = static_cast<std::size_t>(vtkSNDFTileCache::TileSize) *
+  static_cast<std::size_t>(vtkSNDFTileCache::TileSize);
+// the most samples a texel averaged from finer ones claims (bin counts are 16 bits)
+const float MaxDownsampledSamples = 32768.0f;
+
+// a tile: level, phase of the level's grid (x, y), tile position (x, y)
+using Key = std::array<long long, 5>;
+
+long long FloorDiv(long long a, long long b)
+{
+  long long q = a / b;
+  return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
+}
+
+// the finer tiles under a tile: their slots (-1 where not in the cache) over a rectangle
+// TilesX wide, and the texel of that rectangle under the tile's first texel
+struct Children
+{
+  std::vector<int> Slots;
+  int TilesX = 0;
+  int TexelOffset[2] = { 0, 0 };
+};
+
+struct Slot
+{
+  Key Tile{};
+  bool Used = false;
+  long long LastUsed = 0;  // the MapView() that last touched it
+  long long Shown = -1;    // the MapView() that shows it (not to be evicted)
+  long long Version = 0;   // the lighting table its shaded sums were formed with
+};
+}
+
+//------------------------------------------------------------------------------
+class vtkSNDFTileCache::vtkInternals
+{
+public:
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
+  vtkSmartPointer<vtkOpenGLBufferObject> Counts = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Sums = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  // the page table of the view (binding 2); a scratch table for downsampling and rebaking
+  vtkSmartPointer<vtkOpenGLBufferObject> Page = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Scratch = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Minimum = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  std::size_t PageBytes = 0;
+  std::size_t ScratchBytes = 0;
+  vtkNew<vtkParticleComputeProgram> Downsample;
+  vtkNew<vtkParticleComputeProgram> Rebake;
+  vtkNew<vtkParticleComputeProgram> MinSamples;
+
+  std::vector<Slot> Slots;
+  std::map<Key, int> Table;
+  long long Stamp = 0;
+  int WordsPerTexel = 0;
+  // the last mapped view: its tile rectangle and the window's offset into it
+  int TilesX = 0;
+  int TexelOffset[2] = { 0, 0 };
+
+  // uploads `values` into `buffer` (grown as needed) for binding 2
+  static void Upload(vtkOpenGLBufferObject* buffer, std::size_t& capacity, const std::vector<int>& values)
+  {
+    const std::size_t bytes = std::max<std::size_t>(1, values.size()) * sizeof(int);
+    if (bytes > capacity)
+    {
+      vtkParticleComputeProgram::AllocateStorage(buffer, std::max(bytes, 2 * capacity));
+      capacity = std::max(bytes, 2 * capacity);
+    }
+    if (!values.empty())
+    {
+      vtkParticleComputeProgram::UploadStorage(buffer, 0, values.size() * sizeof(int), values.data());
+    }
+  }
+
+  // The tiles `down` levels finer (their texels 2^down times smaller) under tile (tx, ty) of the
+  // view's level and grid; false when none of them is in the cache.
+  bool FindChildren(const vtkSNDFTileCache::Placement& view, long long tx, long long ty, int down,
+    Children& children) const
+  {
+    const int level = view.Level - down;
+    if (level < vtkSNDFTileCache::MinimumLevel)
+    {
+      return false;
+    }
+    const long long texel = 1LL << (level + 8); // a texel of that level, in 1/256 level-0 texels
+    const long long size = vtkSNDFTileCache::TileSize;
+    const long long span = size << down; // its texels under one tile
+    long long phase[2];
+    long long first[2];
+    long long tile0[2];
+    int tiles[2];
+    for (int a = 0; a < 2; ++a)
+    {
+      // the finer grid shares the phase modulo its texel; texel i of the view's level covers
+      // its texels offset + i * 2^down ...
+      phase[a] = view.Phase[a] % texel;
+      const long long offset = (view.Phase[a] - phase[a]) / texel;
+      first[a] = offset + span * (a == 0 ? tx : ty);
+      tile0[a] = FloorDiv(first[a], size);
+      tiles[a] = static_cast<int>(FloorDiv(first[a] + span - 1, size) - tile0[a] + 1);
+      children.TexelOffset[a] = static_cast<int>(first[a] - size * tile0[a]);
+    }
+    children.TilesX = tiles[0];
+    children.Slots.assign(static_cast<std::size_t>(tiles[0]) * tiles[1], -1);
+    bool any = false;
+    for (int j = 0; j < tiles[1]; ++j)
+    {
+      for (int i = 0; i < tiles[0]; ++i)
+      {
+        auto it = this->Table.find(Key{ level, phase[0], phase[1], tile0[0] + i, tile0[1] + j });
+        if (it != this->Table.end())
+        {
+          children.Slots[static_cast<std::size_t>(j) * tiles[0] + i] = it->second;
+          any = true;
+        }
+      }
+    }
+    return any;
+  }
+
+  void ClearSlot(int slot)
+  {
+    const GLuint zero = 0;
+    const std::size_t binBytes = TileTexels * this->WordsPerTexel * 4;
+    const std::size_t sumBytes = TileTexels * static_cast<std::size_t>(SumBytesPerTexel);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(this->Counts->GetHandle()));
+    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, static_cast<GLintptr>(binBytes * slot),
+      static_cast<GLsizeiptr>(binBytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(this->Sums->GetHandle()));
+    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, static_cast<GLintptr>(sumBytes * slot),
+      static_cast<GLsizeiptr>(sumBytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  }
+
+  // a slot for a new tile: a free one, else the least recently used one the view does not show;
+  // -1 when every slot is shown
+  int TakeSlot(long long& evictions)
+  {
+    int best = -1;
+    for (int i = 0; i < static_cast<int>(this->Slots.size()); ++i)
+    {
+      const Slot& slot = this->Slots[i];
+      if (!slot.Used)
+      {
+        return i;
+      }
+      if (slot.Shown != this->Stamp && (best < 0 || slot.LastUsed < this->Slots[best].LastUsed))
+      {
+        best = i;
+      }
+    }
+    if (best >= 0)
+    {
+      this->Table.erase(this->Slots[best].Tile);
+      this->Slots[best].Used = false;
+      ++evictions;
+    }
+    return best;
+  }
+};
+
+vtkStandardNewMacro(vtkSNDFTileCache);
+
+//------------------------------------------------------------------------------
+vtkSNDFTileCache::vtkSNDFTileCache()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkSNDFTileCache::~vtkSNDFTileCache()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::GetWordsPerTexel(int bins)
+{
+  return 2 * bins * bins + std::max(1, bins * bins / 32);
+}
+
+//------------------------------------------------------------------------------
+double vtkSNDFTileCache::GetTileBytes(int bins)
+{
+  return static_cast<double>(TileTexels) * (4.0 * GetWordsPerTexel(bins) + SumBytesPerTexel);
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::GetTilesForView(int width, int height)
+{
+  return ((width + TileSize - 1) / TileSize + 1) * ((height + TileSize - 1) / TileSize + 1);
+}
+
+//------------------------------------------------------------------------------
+double vtkSNDFTileCache::GetBytes() const
+{
+  return this->NumberOfSlots * GetTileBytes(this->Bins);
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::GetNumberOfTiles() const
+{
+  return static_cast<int>(this->Internals->Table.size());
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int slots)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Context = context;
+  internals.WordsPerTexel = GetWordsPerTexel(bins);
+  this->Clear();
+  if (!vtkParticleComputeProgram::AllocateStorage(
+        internals.Counts, TileTexels * slots * internals.WordsPerTexel * 4) ||
+    !vtkParticleComputeProgram::AllocateStorage(
+      internals.Sums, TileTexels * slots * static_cast<std::size_t>(SumBytesPerTexel)) ||
+    !vtkParticleComputeProgram::AllocateStorage(internals.Minimum, 4))
+  {
+    const bool current = true;
+    vtkParticleComputeProgram::ReleaseStorage(internals.Counts, current);
+    vtkParticleComputeProgram::ReleaseStorage(internals.Sums, current);
+    this->NumberOfSlots = 0;
+    this->Bins = 0;
+    return false;
+  }
+  if (!internals.Downsample->IsBuilt())
+  {
+    internals.Downsample->SetSource(vtkParticleShaders::Get("SNDFDownsample"));
+    internals.Rebake->SetSource(vtkParticleShaders::Get("SNDFRebake"));
+    internals.MinSamples->SetSource(vtkParticleShaders::Get("SNDFMinSamples"));
+    if (!internals.Downsample->Build(context) || !internals.Rebake->Build(context) ||
+      !internals.MinSamples->Build(context))
+    {
+      vtkErrorMacro(<< "The S-MIP shaders did not build.");
+      this->NumberOfSlots = 0;
+      return false;
+    }
+  }
+  internals.Slots.assign(static_cast<std::size_t>(slots), Slot());
+  this->NumberOfSlots = slots;
+  this->Bins = bins;
+  this->NumberOfDownsampledTiles = 0;
+  this->NumberOfClearedTiles = 0;
+  this->NumberOfEvictedTiles = 0;
+  this->NumberOfRebakedTiles = 0;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFTileCache::Clear()
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Table.clear();
+  for (Slot& slot : internals.Slots)
+  {
+    slot = Slot();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
+  vtkTextureObject* table, long long tableVersion, int* cleared)
+{
+  vtkInternals& internals = *this->Internals;
+  if (cleared)
+  {
+    *cleared = 0;
+  }
+  if (this->NumberOfSlots < 1 || width < 1 || height < 1)
+  {
+    return false;
+  }
+  const long long tx0 = FloorDiv(view.Origin[0], TileSize);
+  const long long ty0 = FloorDiv(view.Origin[1], TileSize);
+  const int tilesX = static_cast<int>(FloorDiv(view.Origin[0] + width - 1, TileSize) - tx0 + 1);
+  const int tilesY = static_cast<int>(FloorDiv(view.Origin[1] + height - 1, TileSize) - ty0 + 1);
+  if (tilesX * tilesY > this->NumberOfSlots)
+  {
+    return false;
+  }
+  ++internals.Stamp;
+  std::vector<int> page(static_cast<std::size_t>(tilesX) * tilesY, -1);
+  std::vector<int> stale;
+  auto keyOf = [&](int level, long long px, long long py, long long tx, long long ty) {
+    return Key{ level, px, py, tx, ty };
+  };
+  auto touch = [&](int slot) {
+    Slot& s = internals.Slots[slot];
+    s.LastUsed = internals.Stamp;
+    if (s.Version != tableVersion)
+    {
+      stale.push_back(slot);
+      s.Version = tableVersion;
+    }
+  };
+  // rebake the stale tiles gathered so far (before they are shown or averaged)
+  auto rebake = [&]() {
+    if (stale.empty())
+    {
+      return;
+    }
+    vtkParticleComputeProgram* program = internals.Rebake;
+    program->Use();
+    table->Activate();
+    program->SetUniformi("prTable", table->GetTextureUnit());
+    program->SetUniformi("prBins", this->Bins);
+    program->SetUniformi("prWordsPerPixel", internals.WordsPerTexel);
+    vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, stale);
+    vtkParticleComputeProgram::BindStorage(0, internals.Counts);
+    vtkParticleComputeProgram::BindStorage(1, internals.Sums);
+    vtkParticleComputeProgram::BindStorage(2, internals.Scratch);
+    program->Dispatch(TileSize / 16, TileSize / 16, static_cast<unsigned int>(stale.size()));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    table->Deactivate();
+    vtkParticleComputeProgram::UseNone();
+    this->NumberOfRebakedTiles += static_cast<long long>(stale.size());
+    stale.clear();
+  };
+
+  // the tiles in the cache: shown as they are
+  for (int j = 0; j < tilesY; ++j)
+  {
+    for (int i = 0; i < tilesX; ++i)
+    {
+      auto it = internals.Table.find(keyOf(view.Level, view.Phase[0], view.Phase[1], tx0 + i, ty0 + j));
+      if (it != internals.Table.end())
+      {
+        page[static_cast<std::size_t>(j) * tilesX + i] = it->second;
+        internals.Slots[it->second].Shown = internals.Stamp;
+        touch(it->second);
+      }
+    }
+  }
+  // the others: a slot each, averaged from a finer level where it has tiles, else empty
+  for (int j = 0; j < tilesY; ++j)
+  {
+    for (int i = 0; i < tilesX; ++i)
+    {
+      int& entry = page[static_cast<std::size_t>(j) * tilesX + i];
+      if (entry >= 0)
+      {
+        continue;
+      }
+      const int slot = internals.TakeSlot(this->NumberOfEvictedTiles);
+      if (slot < 0)
+      {
+        return false; // (cannot happen: the view's tiles fit)
+      }
+      entry = slot;
+      Slot& s = internals.Slots[slot];
+      s.Tile = keyOf(view.Level, view.Phase[0], view.Phase[1], tx0 + i, ty0 + j);
+      s.Used = true;
+      s.Shown = internals.Stamp;
+      s.LastUsed = internals.Stamp;
+      s.Version = tableVersion;
+      internals.Table[s.Tile] = slot;
+      internals.ClearSlot(slot);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+      bool averaged = false;
+      for (int down = 1; down <= 2 && !averaged; ++down)
+      {
+        Children children;
+        if (!internals.FindChildren(view, tx0 + i, ty0 + j, down, children))
+        {
+          continue;
+        }
+        for (int child : children.Slots)
+        {
+          if (child >= 0)
+          {
+            touch(child);
+          }
+        }
+        rebake();
+        vtkParticleComputeProgram* program = internals.Downsample;
+        program->Use();
+        program->SetUniformi("prDestSlot", slot);
+        program->SetUniformi("prFactor", 1 << down);
+        program->SetUniformi("prBins", this->Bins);
+        program->SetUniformi("prWordsPerPixel", internals.WordsPerTexel);
+        program->SetUniformf("prMaxSamples", MaxDownsampledSamples);
+        program->SetUniform2i("prTexelOffset", children.TexelOffset[0], children.TexelOffset[1]);
+        program->SetUniformi("prTilesX", children.TilesX);
+        vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, children.Slots);
+        vtkParticleComputeProgram::BindStorage(0, internals.Counts);
+        vtkParticleComputeProgram::BindStorage(1, internals.Sums);
+        vtkParticleComputeProgram::BindStorage(2, internals.Scratch);
+        program->Dispatch(TileSize / 16, TileSize / 16);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        vtkParticleComputeProgram::UseNone();
+        ++this->NumberOfDownsampledTiles;
+        averaged = true;
+      }
+      if (!averaged)
+      {
+        ++this->NumberOfClearedTiles;
+        if (cleared)
+        {
+          ++*cleared;
+        }
+      }
+    }
+  }
+  rebake();
+  vtkInternals::Upload(internals.Page, internals.PageBytes, page);
+  internals.TilesX = tilesX;
+  internals.TexelOffset[0] = static_cast<int>(view.Origin[0] - TileSize * tx0);
+  internals.TexelOffset[1] = static_cast<int>(view.Origin[1] - TileSize * ty0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::CountAvailable(const Placement& view, int width, int height)
+{
+  vtkInternals& internals = *this->Internals;
+  const long long tx0 = FloorDiv(view.Origin[0], TileSize);
+  const long long ty0 = FloorDiv(view.Origin[1], TileSize);
+  const long long tx1 = FloorDiv(view.Origin[0] + width - 1, TileSize);
+  const long long ty1 = FloorDiv(view.Origin[1] + height - 1, TileSize);
+  int available = 0;
+  Children children;
+  for (long long ty = ty0; ty <= ty1; ++ty)
+  {
+    for (long long tx = tx0; tx <= tx1; ++tx)
+    {
+      if (internals.Table.count(Key{ view.Level, view.Phase[0], view.Phase[1], tx, ty }) ||
+        internals.FindChildren(view, tx, ty, 1, children) ||
+        internals.FindChildren(view, tx, ty, 2, children))
+      {
+        ++available;
+      }
+    }
+  }
+  return available;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFTileCache::BindView(vtkParticleComputeProgram* program)
+{
+  vtkInternals& internals = *this->Internals;
+  program->SetUniform2i("prTexelOffset", internals.TexelOffset[0], internals.TexelOffset[1]);
+  program->SetUniformi("prTilesX", internals.TilesX);
+  vtkParticleComputeProgram::BindStorage(0, internals.Counts);
+  vtkParticleComputeProgram::BindStorage(1, internals.Sums);
+  vtkParticleComputeProgram::BindStorage(2, internals.Page);
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkSNDFTileCache::CountMinimumSamples(int width, int height)
+{
+  vtkInternals& internals = *this->Internals;
+  const unsigned int none = 0xFFFFFFFFu;
+  vtkParticleComputeProgram::UploadStorage(internals.Minimum, 0, 4, &none);
+  vtkParticleComputeProgram* program = internals.MinSamples;
+  program->Use();
+  program->SetUniform2i("prSize", width, height);
+  this->BindView(program);
+  vtkParticleComputeProgram::BindStorage(3, internals.Minimum);
+  program->Dispatch(static_cast<unsigned int>((width + 15) / 16),
+    static_cast<unsigned int>((height + 15) / 16));
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  vtkParticleComputeProgram::UseNone();
+  unsigned int minimum = 0;
+  vtkParticleComputeProgram::DownloadStorage(internals.Minimum, 0, 4, &minimum);
+  return minimum == none ? 0u : minimum;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Downsample->ReleaseGraphicsResources(w);
+  internals.Rebake->ReleaseGraphicsResources(w);
+  internals.MinSamples->ReleaseGraphicsResources(w);
+  const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
+  for (auto* buffer : { &internals.Counts, &internals.Sums, &internals.Page, &internals.Scratch,
+         &internals.Minimum })
+  {
+    vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
+  }
+  internals.PageBytes = 0;
+  internals.ScratchBytes = 0;
+  internals.Slots.clear();
+  internals.Table.clear();
+  this->NumberOfSlots = 0;
+  this->Bins = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFTileCache::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSlots: " << this->NumberOfSlots << "\n";
+  os << indent << "Bins: " << this->Bins << "\n";
+  os << indent << "NumberOfTiles: " << this->GetNumberOfTiles() << "\n";
+  os << indent << "NumberOfDownsampledTiles: " << this->NumberOfDownsampledTiles << "\n";
+  os << indent << "NumberOfClearedTiles: " << this->NumberOfClearedTiles << "\n";
+  os << indent << "NumberOfEvictedTiles: " << this->NumberOfEvictedTiles << "\n";
+  os << indent << "NumberOfRebakedTiles: " << this->NumberOfRebakedTiles << "\n";
+}

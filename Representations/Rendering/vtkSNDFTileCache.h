@@ -1,0 +1,173 @@
+/**
+ * @class   vtkSNDFTileCache
+ * @brief   the S-MIP of vtkSNDFRenderPass: S-NDF tiles of a virtual screen-space mipmap in a
+ *          fixed pool of GPU memory with a page table and least-recently-used replacement
+ *          (Ibrahim et al. 2017, Sec. 6.1, Fig. 9 and 10)
+ *
+ * The S-NDFs of a view are texels of a virtual image plane parallel to the screen. Level L of the
+ * screen-space mipmap (S-MIP) has texels 2^L times the size of level 0 (the level the pass started
+ * at; -8 <= L <= 24); it is cut into TileSize^2 = 64^2 tiles (the paper's T_L). Only the tiles a
+ * view needs are kept, in a pool of slots allocated once (Allocate()); a CPU page table maps a tile
+ * (its level, the phase of its level's grid and its position) to its slot, and for each dispatch
+ * a small GPU table maps the rectangle of tiles the dispatch reads to slots (Shaders/SNDFTiles.glsl
+ * has the addressing). A slot holds, per texel, the bin words and four vec4 sums of
+ * Shaders/SNDFAccumulate.glsl.
+ *
+ * MapView() makes every tile of a view resident:
+ * - a tile in the cache is used as it is (a pan back, a zoom back in: no sample is taken again);
+ * - a tile that is not takes a free slot, or the least recently used slot that the view does not
+ *   show (LRU, Sec. 6.1.1), is cleared, and is computed by averaging the finer level one or two
+ *   levels down where that level has tiles in the cache (2 x 2 or 4 x 4 texels per texel, Sec.
+ *   6.1.2; Shaders/SNDFDownsample.glsl): zooming out needs no new samples where the finer level
+ *   was sampled. Texels whose finer texels are missing stay empty and are sampled;
+ * - a tile whose shaded sums were formed with an older lighting table than the current one is
+ *   rebaked (Shaders/SNDFRebake.glsl) before it is shown or averaged: re-lighting visits the tiles
+ *   when they are used, never a stale tile.
+ * A view needs at most (ceil(W / 64) + 1) (ceil(H / 64) + 1) tiles (GetTilesForView()); a pool
+ * with fewer slots is refused (MapView() returns false) rather than showing a wrong tile.
+ *
+ * Levels are placed by the integer position of their grid on the virtual plane in units of 1/256
+ * of a level-0 texel; the phase of a level's grid (its origin modulo its texel size) is part of a
+ * tile's key, so that views reached by different pans and zooms never share a texel that covers a
+ * different footprint.
+ *
+ * Every method that talks to OpenGL expects the context given to Allocate() to be current.
+ *
+ * @sa vtkSNDFRenderPass
+ */
+#ifndef vtkSNDFTileCache_h
+#define vtkSNDFTileCache_h
+
+#include "vtkObject.h"
+#include "vtkParticleRenderingModule.h" // for export macro
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkParticleComputeProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKPARTICLERENDERING_EXPORT vtkSNDFTileCache : public vtkObject
+{
+public:
+  static vtkSNDFTileCache* New();
+  vtkTypeMacro(vtkSNDFTileCache, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Texels per tile side (64), and the finest and coarsest level.
+   */
+  static constexpr int TileSize = 64;
+  static constexpr int MinimumLevel = -8;
+  static constexpr int MaximumLevel = 24;
+
+  /**
+   * 32-bit words per texel for the bins (two per bin and the occupancy bits), and bytes per tile.
+   */
+  static int GetWordsPerTexel(int bins);
+  static double GetTileBytes(int bins);
+
+  /**
+   * The most tiles a width x height view can touch.
+   */
+  static int GetTilesForView(int width, int height);
+
+  /**
+   * (Re)allocate a pool of `slots` tiles for `bins` x `bins` bins, dropping every tile. False
+   * (with the pool released) when the GPU refuses the memory.
+   */
+  bool Allocate(vtkOpenGLRenderWindow* context, int bins, int slots);
+
+  /**
+   * Drop every tile (a restart: the view direction, the data or the size changed).
+   */
+  void Clear();
+
+  ///@{
+  /**
+   * The pool: slots, bins, bytes; tiles resident now.
+   */
+  vtkGetMacro(NumberOfSlots, int);
+  vtkGetMacro(Bins, int);
+  double GetBytes() const;
+  int GetNumberOfTiles() const;
+  ///@}
+
+  /**
+   * Where a view lies on the virtual plane: its level, the phase of the level's grid (in 1/256
+   * of a level-0 texel, in [0, 2^(level + 8))) and the level's texel under the view's lower-left
+   * pixel.
+   */
+  struct Placement
+  {
+    int Level = 0;
+    long long Phase[2] = { 0, 0 };
+    long long Origin[2] = { 0, 0 };
+    bool operator==(const Placement& o) const
+    {
+      return this->Level == o.Level && this->Phase[0] == o.Phase[0] &&
+        this->Phase[1] == o.Phase[1] && this->Origin[0] == o.Origin[0] &&
+        this->Origin[1] == o.Origin[1];
+    }
+  };
+
+  /**
+   * Make every tile of a width x height view placed at `view` resident (see the class comment)
+   * and load its page table for BindView(). `table` and `tableVersion` are the lighting table
+   * and its build number (tiles shaded with another one are rebaked). False when the pool holds
+   * fewer slots than the view has tiles. *cleared counts the tiles that came empty (neither
+   * found nor averaged from a finer level).
+   */
+  bool MapView(const Placement& view, int width, int height, vtkTextureObject* table,
+    long long tableVersion, int* cleared = nullptr);
+
+  /**
+   * How many tiles of a view the cache has, or could average from a finer level (no GPU work).
+   */
+  int CountAvailable(const Placement& view, int width, int height);
+
+  /**
+   * For a dispatch over the window's pixels with `program` (in use): the page table of the last
+   * MapView() at storage binding 2, its uniforms (prTexelOffset, prTilesX), the bins at binding 0
+   * and the sums at binding 1.
+   */
+  void BindView(vtkParticleComputeProgram* program);
+
+  /**
+   * The fewest samples a pixel of the last mapped view holds (a dispatch and a read-back).
+   */
+  unsigned int CountMinimumSamples(int width, int height);
+
+  ///@{
+  /**
+   * Counters since the pool was allocated: tiles averaged from a finer level, tiles that came
+   * empty, tiles evicted (least recently used), tiles rebaked after a table change.
+   */
+  vtkGetMacro(NumberOfDownsampledTiles, long long);
+  vtkGetMacro(NumberOfClearedTiles, long long);
+  vtkGetMacro(NumberOfEvictedTiles, long long);
+  vtkGetMacro(NumberOfRebakedTiles, long long);
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+protected:
+  vtkSNDFTileCache();
+  ~vtkSNDFTileCache() override;
+
+  int NumberOfSlots = 0;
+  int Bins = 0;
+  long long NumberOfDownsampledTiles = 0;
+  long long NumberOfClearedTiles = 0;
+  long long NumberOfEvictedTiles = 0;
+  long long NumberOfRebakedTiles = 0;
+
+private:
+  vtkSNDFTileCache(const vtkSNDFTileCache&) = delete;
+  void operator=(const vtkSNDFTileCache&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif

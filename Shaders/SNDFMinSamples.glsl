@@ -1,0 +1,45 @@
+#version 430
+//=========================================================================
+// SNDFMinSamples.glsl -- vtkSNDFRenderPass: the fewest samples any window
+// pixel's S-NDF holds (prSums[3].y of its S-MIP texel; 0 where a tile is not
+// mapped) into prMinimum, which the caller set to 0xFFFFFFFF. Refinement goes
+// on until this reaches the target; it is counted after a pan or zoom has
+// brought tiles of different sample counts into the view.
+//=========================================================================
+layout(local_size_x = 16, local_size_y = 16) in;
+
+uniform ivec2 prSize;
+
+//PR::Include SNDFTiles
+
+layout(std430, binding = 1) readonly buffer prSumBuffer
+{
+  vec4 prSums[];
+};
+layout(std430, binding = 3) buffer prMinimumBuffer
+{
+  uint prMinimum;
+};
+
+shared uint prGroupMinimum;
+
+void main()
+{
+  if (gl_LocalInvocationIndex == 0u)
+  {
+    prGroupMinimum = 0xFFFFFFFFu;
+  }
+  barrier();
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x < prSize.x && p.y < prSize.y)
+  {
+    uint texel;
+    uint n = prSNDFFindTexel(p, texel) ? uint(prSums[4u * texel + 3u].y) : 0u;
+    atomicMin(prGroupMinimum, n);
+  }
+  barrier();
+  if (gl_LocalInvocationIndex == 0u)
+  {
+    atomicMin(prMinimum, prGroupMinimum);
+  }
+}
