@@ -30,7 +30,7 @@
 // are the shaded bin sums of SNDFResolve.glsl kept up to date sample by
 // sample: a refinement frame costs O(1) per pixel, not O(bins); only a new
 // table (re-lighting) sums the bins again.
-// Per bin two words (prBinWords): its sample count (low 16 bits) and the
+// Per bin two words (prBinWord()): its sample count (low 16 bits) and the
 // running mean of AO * diffuseColor of its samples, 16-bit fixed point over
 // [0, 2] per channel (R in the high half of word 0, G and B in word 1): the
 // colour is kept per bin because colour and normal are correlated where
@@ -50,17 +50,8 @@ uniform sampler2D prDepth;
 uniform sampler2D prTable;
 uniform ivec2 prSize;
 uniform int prBins;
-uniform int prWordsPerPixel;
 uniform float prTarget;
 
-layout(std430, binding = 0) buffer prBinBuffer
-{
-  uint prBinWords[];
-};
-layout(std430, binding = 1) buffer prSumBuffer
-{
-  vec4 prSums[];
-};
 
 vec4 prFinite(vec4 v)
 {
@@ -75,36 +66,36 @@ void main()
     return;
   }
   uint pixel;
-  if (!prSNDFFindTexel(p, pixel) || prSums[4u * pixel + 3u].y >= prTarget)
+  if (!prSNDFFindTexel(p, pixel) || prSum(pixel, 3u).y >= prTarget)
   {
     return;
   }
   vec4 normal = texelFetch(prNormal, p, 0);
-  vec4 s1 = prSums[4u * pixel + 1u];
+  vec4 s1 = prSum(pixel, 1u);
+  vec4 s3 = prSum(pixel, 3u);
   float depth = texelFetch(prDepth, p, 0).r;
   if (normal.z > 1.5 && !any(isnan(normal.xy)))
   {
     float ao = clamp(normal.z - 2.0, 0.0, 1.0);
     vec3 diffuse = clamp(prFinite(vec4(ao * texelFetch(prDiffuse, p, 0).rgb, 0.0)).rgb, 0.0, 2.0);
     uint bin = prSNDFBin(normal.xy, prBins);
-    uint first = pixel * uint(prWordsPerPixel);
-    uint word = first + 2u * bin;
-    uint w0 = prBinWords[word];
-    uint w1 = prBinWords[word + 1u];
+    uint w0 = prBinWord(pixel, 2u * bin);
+    uint w1 = prBinWord(pixel, 2u * bin + 1u);
     uint count = (w0 & 0xFFFFu) + 1u;
     vec3 mean = prSNDFUnpackMean(w0, w1);
     mean += (diffuse - mean) / float(count);
     prSNDFPackMean(count, mean, w0, w1);
-    prBinWords[word] = w0;
-    prBinWords[word + 1u] = w1;
-    uint mask = first + uint(2 * prBins * prBins) + (bin >> 5u);
-    prBinWords[mask] |= 1u << (bin & 31u);
+    prSetBinWord(pixel, 2u * bin, w0);
+    prSetBinWord(pixel, 2u * bin + 1u, w1);
+    uint mask = uint(2 * prBins * prBins) + (bin >> 5u);
+    prSetBinWord(pixel, mask, prBinWord(pixel, mask) | (1u << (bin & 31u)));
     s1.rgb += diffuse * texelFetch(prTable, ivec2(int(bin), 0), 0).rgb;
-    prSums[4u * pixel + 2u] += vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0);
-    prSums[4u * pixel + 3u].x += ao;
+    prSetSum(pixel, 2u, prSum(pixel, 2u) + vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0));
+    s3.x += ao;
   }
-  prSums[4u * pixel + 3u].y += 1.0;
+  s3.y += 1.0;
+  prSetSum(pixel, 3u, s3);
   s1.w = max(s1.w, 1.0 - depth);
-  prSums[4u * pixel + 1u] = s1;
-  prSums[4u * pixel] += prFinite(texelFetch(prColour, p, 0));
+  prSetSum(pixel, 1u, s1);
+  prSetSum(pixel, 0u, prSum(pixel, 0u) + prFinite(texelFetch(prColour, p, 0)));
 }

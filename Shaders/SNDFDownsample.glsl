@@ -23,20 +23,11 @@ layout(local_size_x = 16, local_size_y = 16) in;
 uniform int prDestSlot;
 uniform int prFactor;
 uniform int prBins;
-uniform int prWordsPerPixel;
 uniform float prMaxSamples;
 
 //PR::Include SNDFBins
 //PR::Include SNDFTiles
 
-layout(std430, binding = 0) buffer prBinBuffer
-{
-  uint prBinWords[];
-};
-layout(std430, binding = 1) buffer prSumBuffer
-{
-  vec4 prSums[];
-};
 
 void main()
 {
@@ -53,7 +44,7 @@ void main()
     {
       return;
     }
-    float n = prSums[4u * texel + 3u].y;
+    float n = prSum(texel, 3u).y;
     if (!(n > 0.0))
     {
       return;
@@ -72,27 +63,26 @@ void main()
   for (int c = 0; c < count; ++c)
   {
     uint t = children[c];
-    colours += weight[c] * prSums[4u * t];
-    vec4 v1 = prSums[4u * t + 1u];
+    colours += weight[c] * prSum(t, 0u);
+    vec4 v1 = prSum(t, 1u);
     s1.rgb += weight[c] * v1.rgb;
     s1.w = max(s1.w, v1.w);
-    s2 += weight[c] * prSums[4u * t + 2u];
-    ao += weight[c] * prSums[4u * t + 3u].x;
+    s2 += weight[c] * prSum(t, 2u);
+    ao += weight[c] * prSum(t, 3u).x;
   }
-  prSums[4u * dest] = scale * colours;
-  prSums[4u * dest + 1u] = vec4(scale * s1.rgb, s1.w);
-  prSums[4u * dest + 2u] = scale * s2;
-  prSums[4u * dest + 3u] = vec4(scale * ao, samples, 0.0, 0.0);
+  prSetSum(dest, 0u, scale * colours);
+  prSetSum(dest, 1u, vec4(scale * s1.rgb, s1.w));
+  prSetSum(dest, 2u, scale * s2);
+  prSetSum(dest, 3u, vec4(scale * ao, samples, 0.0, 0.0));
 
   uint binWords = uint(2 * prBins * prBins);
-  uint first = dest * uint(prWordsPerPixel);
   int maskWords = max(1, prBins * prBins / 32);
   for (int m = 0; m < maskWords; ++m)
   {
     uint mask = 0u;
     for (int c = 0; c < count; ++c)
     {
-      mask |= prBinWords[children[c] * uint(prWordsPerPixel) + binWords + uint(m)];
+      mask |= prBinWord(children[c], binWords + uint(m));
     }
     uint occupied = 0u;
     while (mask != 0u)
@@ -104,11 +94,10 @@ void main()
       vec3 mean = vec3(0.0);
       for (int c = 0; c < count; ++c)
       {
-        uint word = children[c] * uint(prWordsPerPixel) + 2u * bin;
-        uint w0 = prBinWords[word];
+        uint w0 = prBinWord(children[c], 2u * bin);
         float k = weight[c] * float(w0 & 0xFFFFu);
         share += k;
-        mean += k * prSNDFUnpackMean(w0, prBinWords[word + 1u]);
+        mean += k * prSNDFUnpackMean(w0, prBinWord(children[c], 2u * bin + 1u));
       }
       uint q = min(uint(scale * share + 0.5), 0xFFFFu);
       if (q > 0u)
@@ -116,11 +105,11 @@ void main()
         uint w0;
         uint w1;
         prSNDFPackMean(q, mean / share, w0, w1);
-        prBinWords[first + 2u * bin] = w0;
-        prBinWords[first + 2u * bin + 1u] = w1;
+        prSetBinWord(dest, 2u * bin, w0);
+        prSetBinWord(dest, 2u * bin + 1u, w1);
         occupied |= 1u << uint(bit);
       }
     }
-    prBinWords[first + binWords + uint(m)] = occupied;
+    prSetBinWord(dest, binWords + uint(m), occupied);
   }
 }

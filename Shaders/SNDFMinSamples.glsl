@@ -12,11 +12,7 @@ uniform ivec2 prSize;
 
 //PR::Include SNDFTiles
 
-layout(std430, binding = 1) readonly buffer prSumBuffer
-{
-  vec4 prSums[];
-};
-layout(std430, binding = 3) buffer prMinimumBuffer
+layout(std430, binding = 1) buffer prMinimumBuffer
 {
   uint prMinimum;
 };
@@ -34,7 +30,7 @@ void main()
   if (p.x < prSize.x && p.y < prSize.y)
   {
     uint texel;
-    uint n = prSNDFFindTexel(p, texel) ? uint(prSums[4u * texel + 3u].y) : 0u;
+    uint n = prSNDFFindTexel(p, texel) ? uint(prSum(texel, 3u).y) : 0u;
     atomicMin(prGroupMinimum, n);
   }
   barrier();

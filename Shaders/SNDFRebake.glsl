@@ -9,58 +9,44 @@
 //
 // (see SNDFAccumulate.glsl for the storage). No sample is taken again.
 // Dispatch: (4, 4, number of tiles) groups of 16 x 16; group z rebakes the
-// tile in slot prSlots[z].
+// tile in slot prPageTable[z] (SNDFTiles.glsl: the page table holds the list).
 //=========================================================================
 layout(local_size_x = 16, local_size_y = 16) in;
 
 uniform sampler2D prTable;
 uniform int prBins;
-uniform int prWordsPerPixel;
 
 //PR::Include SNDFBins
-
-layout(std430, binding = 0) readonly buffer prBinBuffer
-{
-  uint prBinWords[];
-};
-layout(std430, binding = 1) buffer prSumBuffer
-{
-  vec4 prSums[];
-};
-layout(std430, binding = 2) readonly buffer prSlotBuffer
-{
-  int prSlots[];
-};
+//PR::Include SNDFTiles
 
 void main()
 {
   uvec2 local = gl_GlobalInvocationID.xy;
-  uint texel = uint(prSlots[gl_WorkGroupID.z]) * 4096u + local.y * 64u + local.x;
-  vec4 s2 = prSums[4u * texel + 2u];
+  uint texel = uint(prPageTable[gl_WorkGroupID.z]) * prTileTexels + local.y * 64u + local.x;
+  vec4 s2 = prSum(texel, 2u);
   if (s2.a <= 0.0)
   {
     return; // no particle sample: both sums are zero
   }
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
-  uint first = texel * uint(prWordsPerPixel);
-  uint masks = first + uint(2 * prBins * prBins);
+  uint masks = uint(2 * prBins * prBins);
   int maskWords = max(1, prBins * prBins / 32);
   for (int m = 0; m < maskWords; ++m)
   {
-    uint mask = prBinWords[masks + uint(m)];
+    uint mask = prBinWord(texel, masks + uint(m));
     while (mask != 0u)
     {
       int bit = findLSB(mask);
       mask &= mask - 1u;
       int bin = 32 * m + bit;
-      uint w0 = prBinWords[first + 2u * uint(bin)];
+      uint w0 = prBinWord(texel, 2u * uint(bin));
       float count = float(w0 & 0xFFFFu);
-      vec3 mean = prSNDFUnpackMean(w0, prBinWords[first + 2u * uint(bin) + 1u]);
+      vec3 mean = prSNDFUnpackMean(w0, prBinWord(texel, 2u * uint(bin) + 1u));
       diffuse += count * mean * texelFetch(prTable, ivec2(bin, 0), 0).rgb;
       specular += count * texelFetch(prTable, ivec2(bin, 1), 0).rgb;
     }
   }
-  prSums[4u * texel + 1u].rgb = diffuse;
-  prSums[4u * texel + 2u].rgb = specular;
+  prSetSum(texel, 1u, vec4(diffuse, prSum(texel, 1u).w));
+  prSetSum(texel, 2u, vec4(specular, s2.w));
 }

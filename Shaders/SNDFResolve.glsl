@@ -28,10 +28,6 @@ uniform vec3 prSpecularColour;
 
 //PR::Include SNDFTiles
 
-layout(std430, binding = 1) readonly buffer prSumBuffer
-{
-  vec4 prSums[];
-};
 layout(rgba32f, binding = 0) uniform writeonly image2D prImage;
 layout(r32f, binding = 1) uniform writeonly image2D prDepthImage;
 
@@ -47,10 +43,10 @@ void main()
   float depth = 1.0;
   if (prSNDFFindTexel(p, texel))
   {
-    vec4 colours = prSums[4u * texel];
-    vec4 s1 = prSums[4u * texel + 1u];
-    vec4 s2 = prSums[4u * texel + 2u];
-    vec2 s3 = prSums[4u * texel + 3u].xy;
+    vec4 colours = prSum(texel, 0u);
+    vec4 s1 = prSum(texel, 1u);
+    vec4 s2 = prSum(texel, 2u);
+    vec2 s3 = prSum(texel, 3u).xy;
     vec3 particles = s1.rgb;
     if (s2.a > 0.0)
     {

@@ -613,11 +613,13 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
 
   // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up
-  // to four views' worth of tiles (pans back, zoomed-out levels) where the limit allows
+  // to eight views' worth of tiles where the limit allows (a zoom out by one level over a view
+  // sampled whole needs five: four of the finer level, one of the coarser)
   const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
   auto slotsFor = [&](int b) {
-    return static_cast<int>(std::min(4.0 * viewTiles,
-      std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b))));
+    return static_cast<int>(std::min({ 8.0 * viewTiles,
+      std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b)),
+      static_cast<double>(internals.Cache->GetMaximumSlots(context, b)) }));
   };
   int bins = this->BinsPerAxis;
   while (bins >= 4 && slotsFor(bins) < viewTiles)
@@ -632,8 +634,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       vtkWarningMacro(<< "The S-MIP cache of a " << width << " x " << height << " view needs "
                       << viewTiles * vtkSNDFTileCache::GetTileBytes(4) / 1048576.0
                       << " MB for its " << viewTiles << " tiles even with 4 x 4 bins, more than "
-                      << "MaximumMemory (" << this->MaximumMemory
-                      << " MB): the view is rendered as without S-NDF shading.");
+                      << "MaximumMemory (" << this->MaximumMemory << " MB) or the GPU's "
+                      << "shader-storage limits hold (" << internals.Cache->GetMaximumSlots(context, 4)
+                      << " tiles): the view is rendered as without S-NDF shading.");
     }
     renderPlain();
     return;
@@ -644,10 +647,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       " " + std::to_string(bins);
     if (internals.FirstWarning(what))
     {
-      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) holds the S-MIP "
-                      << "tiles of this " << width << " x " << height << " view with " << bins
-                      << " x " << bins << " bins only, not " << this->BinsPerAxis << " x "
-                      << this->BinsPerAxis << ".");
+      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) and the GPU's "
+                      << "shader-storage limits hold the S-MIP tiles of this " << width << " x "
+                      << height << " view with " << bins << " x " << bins << " bins only, not "
+                      << this->BinsPerAxis << " x " << this->BinsPerAxis << ".");
     }
   }
   const int slots = slotsFor(bins);
@@ -809,8 +812,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
 
   if (!internals.Accumulate->IsBuilt())
   {
-    internals.Accumulate->SetSource(vtkParticleShaders::Get("SNDFAccumulate"));
-    internals.Resolve->SetSource(vtkParticleShaders::Get("SNDFResolve"));
+    internals.Accumulate->SetSource(internals.Cache->GetShaderSource("SNDFAccumulate"));
+    internals.Resolve->SetSource(internals.Cache->GetShaderSource("SNDFResolve"));
     if (!internals.Accumulate->Build(context) || !internals.Resolve->Build(context))
     {
       renderPlain();
@@ -1073,7 +1076,6 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
     accumulate->SetUniform2i("prSize", width, height);
     accumulate->SetUniformi("prBins", bins);
-    accumulate->SetUniformi("prWordsPerPixel", vtkSNDFTileCache::GetWordsPerTexel(bins));
     accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
     internals.Cache->BindView(accumulate);
     accumulate->Dispatch(groupsX, groupsY);

@@ -63,28 +63,47 @@
  *   when the particle actors differ); a change of any particle actor's ambient or diffuse
  *   material, of its colours (colour map, scalars) or of its geometry samples again (the samples
  *   store colours, and colour mapping is not linear in the data). Changing lights re-shades only.
- * - Memory. The S-NDF of the view takes width * height * (8 BinsPerAxis^2 + 4 max(1,
- *   BinsPerAxis^2 / 32) + 64) bytes (a 16-bit count and three 16-bit mean colour channels per
- *   bin, the occupancy bits, four float sums; 8 x 8 bins: 584 bytes per pixel, 513 MiB at
- *   1280 x 720). Above MaximumMemory (MB) the pass uses fewer bins, and renders the plain
- *   delegate when even 4 x 4 do not fit, with a warning each time.
+ * - Memory. An S-NDF texel takes 8 BinsPerAxis^2 + 4 max(1, BinsPerAxis^2 / 32) + 64 bytes (a
+ *   16-bit count and three 16-bit mean colour channels per bin, the occupancy bits, four float
+ *   sums; 8 x 8 bins: 584 bytes, 2.4 MB per 64^2 tile). The S-MIP cache (below) takes
+ *   MaximumMemory MB, at most eight views' worth of tiles; a view needs up to (ceil(W / 64) + 1)
+ *   (ceil(H / 64) + 1) tiles (273 at 1280 x 720: 652 MB with 8 x 8 bins). Where MaximumMemory
+ *   does not hold the view's tiles the pass uses fewer bins, and renders the plain delegate when
+ *   even 4 x 4 do not fit, with a warning each time ("cache too small": never a wrong tile).
+ *   The cache is one shader-storage buffer for the bins and one for the sums; a driver's
+ *   GL_MAX_SHADER_STORAGE_BLOCK_SIZE below their size (llvmpipe reports 128 MB and addresses the
+ *   whole buffer) is not checked.
  *
- * Pan (paper Sec. 6.1.3, 6.2.1). Where a pan moves the picture exactly -- parallel projection,
- * camera position and focal point moved together in the view plane by a whole number of pixels
- * (1e-3 pixel tolerance), nothing else changed -- the S-NDFs move with the picture (row copies of
- * the bins and sums), the pixels it uncovers start empty, and refinement goes on from there
- * instead of restarting: the kept pixels are converged at once, each pixel is shaded with its
- * own sample count. Perspective pans (parallax) and fractions of a pixel sample anew.
+ * S-MIP (paper Sec. 6, vtkSNDFTileCache). The S-NDFs are texels of a virtual image plane parallel
+ * to the screen, fixed at the restart: level 0 has the restart view's pixels as texels, level L
+ * texels 2^L times as large. They are kept in 64^2 tiles in a fixed pool of GPU memory with a
+ * page table and least-recently-used replacement. In parallel projection, a view whose pixels
+ * are texels of a level -- parallel scale 2^L times that of the restart (-8 <= L <= 24), the
+ * camera moved in the view plane only -- keeps the samples:
+ * - a pan (Sec. 6.1.3, 6.2.1) shows the tiles in the cache at once (converged where they were)
+ *   and samples only the texels the cache does not have (texels holding TargetSamples take no
+ *   more); a pan back finds the old tiles while the cache holds them. A pan by a whole number
+ *   of pixels stays on the level's grid; other pans use a grid of another phase (placed to
+ *   1/256 pixel: the texels lie within 1/512 pixel of the view's pixels), whose tiles are new
+ *   unless that grid was seen before;
+ * - a zoom out by 2 or 4 (parallel scale times 2 or 4) averages the coarser level from the
+ *   finer one in the cache (Sec. 6.1.2: 2 x 2 or 4 x 4 normalised S-NDFs per texel, a box
+ *   filter); where the finer level was sampled no sample is taken; a zoom back in shows the
+ *   cached finer level;
+ * - a view none of whose tiles the cache has or can average is the frame of a change: the
+ *   plain image, sampling from the next frame on (unless ConvergeOnRender).
+ * Other zoom factors, rotations and perspective camera moves restart (the paper's S-MIP, too,
+ * is invalidated by a new view direction; its trilinear display between levels for other zoom
+ * factors is not here: those zooms sample anew).
  *
- * Not (yet) here: the rest of the S-MIP of paper Sec. 6 (64^2 tiles over a virtual image plane
- * with a page table and an LRU tile cache, so that panning back finds the old tiles; zoom out
- * from the finer level): other camera changes sample again.
- *
- * What invalidates the samples: the viewport size, the camera (position, focal point but for the
- * pans above, view up,
- * angle, parallel scale, projection, clipping range, window centre), the bins, and any visible
- * prop's or mapper's or input's modification time, the background, the passes inside this one (their
- * objects and modification times: an AO pass put into the chain or changed). What does not: lights, the
+ * What invalidates the samples: the viewport size, the camera (but for the pans and zooms
+ * above: view up, view direction, view angle, projection, clipping range, window centre, in
+ * perspective also position, focal point), the bins, the cache size, and any
+ * prop's or mapper's or input's modification time (props outside the view count too: panning
+ * them out of the view and back keeps the S-MIP), the background, the passes inside this one
+ * (their objects and modification times: an AO pass put into the chain or changed). What does
+ * not: lights (the table is rebuilt when a light's colour or its direction or position in view
+ * coordinates changes; each cached tile is rebaked when it is next shown or averaged), the
  * particle actors' specular colour and power.
  *
  * Other geometry. Opaque polygonal props (surfaces, lines, points: any vtkActor whose mapper takes
@@ -166,16 +185,16 @@ public:
 
   ///@{
   /**
-   * The most GPU memory the S-NDF of the view may take, in MB (default 1024). See the class
-   * description for what happens above it.
+   * The size of the S-MIP cache in MB (default 1024; it takes at most eight views' worth of
+   * tiles). See the class description for a view whose tiles do not fit.
    */
   vtkSetClampMacro(MaximumMemory, double, 0.0, 1.0e7);
   vtkGetMacro(MaximumMemory, double);
   ///@}
 
   /**
-   * Samples per pixel gathered so far for the current view (0 before the first render or after
-   * a change).
+   * The fewest samples any pixel of the current view holds, at most TargetSamples (0 before the
+   * first render or after a change; TargetSamples when no particle is in the view).
    */
   vtkGetMacro(NumberOfSamples, int);
 
@@ -191,14 +210,15 @@ public:
   vtkGetMacro(ActiveBinsPerAxis, int);
 
   /**
-   * Bytes of GPU memory the S-NDF buffers take now.
+   * Bytes of GPU memory the S-MIP cache takes now.
    */
   vtkGetMacro(MemoryBytes, double);
 
   ///@{
   /**
    * Counters for tests and benchmarks: delegate renders into the G-buffer (sample passes), S-NDF
-   * restarts, lighting-table builds and re-shades since the pass was created.
+   * restarts, lighting-table builds, re-shades, pans and zooms that kept the S-MIP since the pass
+   * was created.
    */
   vtkGetMacro(NumberOfSamplePasses, vtkIdType);
   vtkGetMacro(NumberOfRestarts, vtkIdType);

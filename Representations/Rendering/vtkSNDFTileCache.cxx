@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace
@@ -23,6 +24,15 @@ const std::size_t TileTexels = static_cast<std::size_t>(vtkSNDFTileCache::TileSi
   static_cast<std::size_t>(vtkSNDFTileCache::TileSize);
 // the most samples a texel averaged from finer ones claims (bin counts are 16 bits)
 const float MaxDownsampledSamples = 32768.0f;
+
+// storage bindings: the page table (or a list of slots) 0, the minimum 1, the sums from 2, the
+// bins from 4 (SNDFTiles.glsl)
+const unsigned int PageBinding = 0;
+const unsigned int MinimumBinding = 1;
+const unsigned int SumBinding = 2;
+const int MaximumSumBuffers = 2;
+const unsigned int BinBinding = 4;
+const int MaximumBinBuffers = 12;
 
 // a tile: level, phase of the level's grid (x, y), tile position (x, y)
 using Key = std::array<long long, 5>;
@@ -57,8 +67,16 @@ class vtkSNDFTileCache::vtkInternals
 {
 public:
   vtkWeakPointer<vtkOpenGLRenderWindow> Context;
-  vtkSmartPointer<vtkOpenGLBufferObject> Counts = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  vtkSmartPointer<vtkOpenGLBufferObject> Sums = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  // the pool: the bins and the sums, each split over buffers of whole tiles within the
+  // context's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (SlotsPer* tiles each)
+  std::vector<vtkSmartPointer<vtkOpenGLBufferObject>> BinBuffers;
+  std::vector<vtkSmartPointer<vtkOpenGLBufferObject>> SumBuffers;
+  int SlotsPerBinBuffer = 1;
+  int SlotsPerSumBuffer = 1;
+  // the buffers the shaders declare (from the context's limits), and the block size limit
+  int BinBufferCount = 0;
+  int SumBufferCount = 0;
+  double BlockBytes = 0.0;
   // the page table of the view (binding 2); a scratch table for downsampling and rebaking
   vtkSmartPointer<vtkOpenGLBufferObject> Page = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   vtkSmartPointer<vtkOpenGLBufferObject> Scratch = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -143,13 +161,80 @@ public:
     const GLuint zero = 0;
     const std::size_t binBytes = TileTexels * this->WordsPerTexel * 4;
     const std::size_t sumBytes = TileTexels * static_cast<std::size_t>(SumBytesPerTexel);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(this->Counts->GetHandle()));
-    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, static_cast<GLintptr>(binBytes * slot),
-      static_cast<GLsizeiptr>(binBytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(this->Sums->GetHandle()));
-    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, static_cast<GLintptr>(sumBytes * slot),
-      static_cast<GLsizeiptr>(sumBytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    auto clear = [&](vtkOpenGLBufferObject* buffer, std::size_t bytes, int index) {
+      glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
+      glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, static_cast<GLintptr>(bytes * index),
+        static_cast<GLsizeiptr>(bytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    };
+    clear(this->BinBuffers[slot / this->SlotsPerBinBuffer], binBytes, slot % this->SlotsPerBinBuffer);
+    clear(this->SumBuffers[slot / this->SlotsPerSumBuffer], sumBytes, slot % this->SlotsPerSumBuffer);
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  }
+
+  // The pool's buffers and their layout uniforms for `program` (in use); unused bindings get
+  // the first buffer (never read).
+  void BindPool(vtkParticleComputeProgram* program)
+  {
+    program->SetUniformi("prWordsPerPixel", this->WordsPerTexel);
+    program->SetUniformui("prSlotsPerBinBuffer", static_cast<unsigned int>(this->SlotsPerBinBuffer));
+    program->SetUniformui("prSlotsPerSumBuffer", static_cast<unsigned int>(this->SlotsPerSumBuffer));
+    for (int b = 0; b < this->BinBufferCount; ++b)
+    {
+      vtkParticleComputeProgram::BindStorage(BinBinding + b,
+        this->BinBuffers[b < static_cast<int>(this->BinBuffers.size()) ? b : 0]);
+    }
+    for (int b = 0; b < this->SumBufferCount; ++b)
+    {
+      vtkParticleComputeProgram::BindStorage(SumBinding + b,
+        this->SumBuffers[b < static_cast<int>(this->SumBuffers.size()) ? b : 0]);
+    }
+  }
+
+  // The storage declarations and accessors of SNDFTiles.glsl for BinBufferCount and
+  // SumBufferCount buffers.
+  std::string StorageCode() const
+  {
+    std::string code = "layout(std430, binding = " + std::to_string(PageBinding) +
+      ") readonly buffer prPageBuffer\n{\n  int prPageTable[];\n};\n"
+      "uniform int prWordsPerPixel;\nuniform uint prSlotsPerBinBuffer;\n"
+      "uniform uint prSlotsPerSumBuffer;\n";
+    auto declare = [&](const char* type, const char* name, unsigned int binding, int count) {
+      for (int b = 0; b < count; ++b)
+      {
+        code += "layout(std430, binding = " + std::to_string(binding + b) + ") buffer " + name +
+          "Buffer" + std::to_string(b) + "\n{\n  " + type + " " + name + std::to_string(b) +
+          "[];\n};\n";
+      }
+    };
+    declare("vec4", "prSums", SumBinding, this->SumBufferCount);
+    declare("uint", "prBins", BinBinding, this->BinBufferCount);
+    // one accessor pair per array family: the buffer of the texel's tile, the index in it
+    auto access = [&](const char* type, const char* get, const char* set, const char* name,
+                    const char* per, const char* stride, int count) {
+      const std::string index = std::string("  uint b = min((texel >> 12u) / ") + per + ", " +
+        std::to_string(count - 1) + "u);\n  uint i = (texel - b * " + per + " * 4096u) * " +
+        stride + " + k;\n";
+      code += std::string(type) + " " + get + "(uint texel, uint k)\n{\n" + index +
+        "  switch (b)\n  {\n";
+      for (int b = 0; b < count; ++b)
+      {
+        code += "    " + std::string(b + 1 < count ? "case " + std::to_string(b) + "u" : "default") +
+          ": return " + name + std::to_string(b) + "[i];\n";
+      }
+      code += "  }\n}\n";
+      code += std::string("void ") + set + "(uint texel, uint k, " + type + " value)\n{\n" +
+        index + "  switch (b)\n  {\n";
+      for (int b = 0; b < count; ++b)
+      {
+        code += "    " + std::string(b + 1 < count ? "case " + std::to_string(b) + "u" : "default") +
+          ": " + name + std::to_string(b) + "[i] = value; break;\n";
+      }
+      code += "  }\n}\n";
+    };
+    access("vec4", "prSum", "prSetSum", "prSums", "prSlotsPerSumBuffer", "4u", this->SumBufferCount);
+    access("uint", "prBinWord", "prSetBinWord", "prBins", "prSlotsPerBinBuffer",
+      "uint(prWordsPerPixel)", this->BinBufferCount);
+    return code;
   }
 
   // a slot for a new tile: a free one, else the least recently used one the view does not show;
@@ -224,30 +309,120 @@ int vtkSNDFTileCache::GetNumberOfTiles() const
 }
 
 //------------------------------------------------------------------------------
+void vtkSNDFTileCache::QueryLimits(vtkOpenGLRenderWindow* context)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.Context == context && internals.BinBufferCount > 0)
+  {
+    return;
+  }
+  if (internals.Context && internals.Context != context)
+  {
+    this->ReleaseGraphicsResources(internals.Context);
+  }
+  internals.Context = context;
+  GLint64 blockSize = 0;
+  GLint blocks = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockSize);
+  glGetIntegerv(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, &blocks);
+  // (at least the GL 4.3 minima: 2^27 bytes, 8 blocks; and int-addressable)
+  internals.BlockBytes = static_cast<double>(std::min<GLint64>(
+    std::max<GLint64>(blockSize, GLint64(1) << 27), (GLint64(1) << 31) - 1));
+  blocks = std::max(blocks, 8);
+  internals.SumBufferCount = MaximumSumBuffers;
+  internals.BinBufferCount =
+    std::min(MaximumBinBuffers, blocks - static_cast<int>(BinBinding));
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins)
+{
+  this->QueryLimits(context);
+  const vtkInternals& internals = *this->Internals;
+  const double binTile = static_cast<double>(TileTexels) * 4.0 * GetWordsPerTexel(bins);
+  const double sumTile = static_cast<double>(TileTexels) * SumBytesPerTexel;
+  return static_cast<int>(std::min(internals.BinBufferCount * std::floor(internals.BlockBytes / binTile),
+    internals.SumBufferCount * std::floor(internals.BlockBytes / sumTile)));
+}
+
+//------------------------------------------------------------------------------
+double vtkSNDFTileCache::GetBlockBytes() const
+{
+  return this->Internals->BlockBytes;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSNDFTileCache::GetShaderSource(const std::string& name)
+{
+  std::string source = vtkParticleShaders::Get(name);
+  const std::string tag = "//PR::SNDFStorage";
+  const std::size_t at = source.find(tag);
+  if (at != std::string::npos)
+  {
+    source.replace(at, tag.size(), this->Internals->StorageCode());
+  }
+  return source;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int slots)
 {
   vtkInternals& internals = *this->Internals;
-  internals.Context = context;
+  this->QueryLimits(context);
   internals.WordsPerTexel = GetWordsPerTexel(bins);
   this->Clear();
-  if (!vtkParticleComputeProgram::AllocateStorage(
-        internals.Counts, TileTexels * slots * internals.WordsPerTexel * 4) ||
-    !vtkParticleComputeProgram::AllocateStorage(
-      internals.Sums, TileTexels * slots * static_cast<std::size_t>(SumBytesPerTexel)) ||
-    !vtkParticleComputeProgram::AllocateStorage(internals.Minimum, 4))
+  const std::size_t binTile = TileTexels * internals.WordsPerTexel * 4;
+  const std::size_t sumTile = TileTexels * static_cast<std::size_t>(SumBytesPerTexel);
+  internals.SlotsPerBinBuffer = std::max(1, static_cast<int>(internals.BlockBytes / binTile));
+  internals.SlotsPerSumBuffer = std::max(1, static_cast<int>(internals.BlockBytes / sumTile));
+  const int binBuffers = (slots + internals.SlotsPerBinBuffer - 1) / internals.SlotsPerBinBuffer;
+  const int sumBuffers = (slots + internals.SlotsPerSumBuffer - 1) / internals.SlotsPerSumBuffer;
+  bool ok = slots > 0 && binBuffers <= internals.BinBufferCount &&
+    sumBuffers <= internals.SumBufferCount &&
+    vtkParticleComputeProgram::AllocateStorage(internals.Minimum, 4);
+  auto allocate = [&](std::vector<vtkSmartPointer<vtkOpenGLBufferObject>>& buffers, int count,
+                    int per, std::size_t tileBytes) {
+    for (int b = 0; b < count && ok; ++b)
+    {
+      if (static_cast<int>(buffers.size()) <= b)
+      {
+        buffers.push_back(vtkSmartPointer<vtkOpenGLBufferObject>::New());
+      }
+      ok = vtkParticleComputeProgram::AllocateStorage(
+        buffers[b], tileBytes * static_cast<std::size_t>(std::min(per, slots - b * per)));
+    }
+  };
+  allocate(internals.BinBuffers, binBuffers, internals.SlotsPerBinBuffer, binTile);
+  allocate(internals.SumBuffers, sumBuffers, internals.SlotsPerSumBuffer, sumTile);
+  if (!ok)
   {
-    const bool current = true;
-    vtkParticleComputeProgram::ReleaseStorage(internals.Counts, current);
-    vtkParticleComputeProgram::ReleaseStorage(internals.Sums, current);
+    for (auto* family : { &internals.BinBuffers, &internals.SumBuffers })
+    {
+      for (auto& buffer : *family)
+      {
+        vtkParticleComputeProgram::ReleaseStorage(buffer, true);
+      }
+      family->clear();
+    }
     this->NumberOfSlots = 0;
     this->Bins = 0;
     return false;
   }
+  // (buffers beyond the ones needed now are released)
+  for (auto* family : { &internals.BinBuffers, &internals.SumBuffers })
+  {
+    const std::size_t used = static_cast<std::size_t>(family == &internals.BinBuffers ? binBuffers : sumBuffers);
+    for (std::size_t b = used; b < family->size(); ++b)
+    {
+      vtkParticleComputeProgram::ReleaseStorage((*family)[b], true);
+    }
+    family->resize(used);
+  }
   if (!internals.Downsample->IsBuilt())
   {
-    internals.Downsample->SetSource(vtkParticleShaders::Get("SNDFDownsample"));
-    internals.Rebake->SetSource(vtkParticleShaders::Get("SNDFRebake"));
-    internals.MinSamples->SetSource(vtkParticleShaders::Get("SNDFMinSamples"));
+    internals.Downsample->SetSource(this->GetShaderSource("SNDFDownsample"));
+    internals.Rebake->SetSource(this->GetShaderSource("SNDFRebake"));
+    internals.MinSamples->SetSource(this->GetShaderSource("SNDFMinSamples"));
     if (!internals.Downsample->Build(context) || !internals.Rebake->Build(context) ||
       !internals.MinSamples->Build(context))
     {
@@ -325,11 +500,9 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
     table->Activate();
     program->SetUniformi("prTable", table->GetTextureUnit());
     program->SetUniformi("prBins", this->Bins);
-    program->SetUniformi("prWordsPerPixel", internals.WordsPerTexel);
+    internals.BindPool(program);
     vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, stale);
-    vtkParticleComputeProgram::BindStorage(0, internals.Counts);
-    vtkParticleComputeProgram::BindStorage(1, internals.Sums);
-    vtkParticleComputeProgram::BindStorage(2, internals.Scratch);
+    vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
     program->Dispatch(TileSize / 16, TileSize / 16, static_cast<unsigned int>(stale.size()));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     table->Deactivate();
@@ -399,14 +572,12 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         program->SetUniformi("prDestSlot", slot);
         program->SetUniformi("prFactor", 1 << down);
         program->SetUniformi("prBins", this->Bins);
-        program->SetUniformi("prWordsPerPixel", internals.WordsPerTexel);
+        internals.BindPool(program);
         program->SetUniformf("prMaxSamples", MaxDownsampledSamples);
         program->SetUniform2i("prTexelOffset", children.TexelOffset[0], children.TexelOffset[1]);
         program->SetUniformi("prTilesX", children.TilesX);
         vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, children.Slots);
-        vtkParticleComputeProgram::BindStorage(0, internals.Counts);
-        vtkParticleComputeProgram::BindStorage(1, internals.Sums);
-        vtkParticleComputeProgram::BindStorage(2, internals.Scratch);
+        vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
         program->Dispatch(TileSize / 16, TileSize / 16);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         vtkParticleComputeProgram::UseNone();
@@ -462,9 +633,8 @@ void vtkSNDFTileCache::BindView(vtkParticleComputeProgram* program)
   vtkInternals& internals = *this->Internals;
   program->SetUniform2i("prTexelOffset", internals.TexelOffset[0], internals.TexelOffset[1]);
   program->SetUniformi("prTilesX", internals.TilesX);
-  vtkParticleComputeProgram::BindStorage(0, internals.Counts);
-  vtkParticleComputeProgram::BindStorage(1, internals.Sums);
-  vtkParticleComputeProgram::BindStorage(2, internals.Page);
+  internals.BindPool(program);
+  vtkParticleComputeProgram::BindStorage(PageBinding, internals.Page);
 }
 
 //------------------------------------------------------------------------------
@@ -477,7 +647,7 @@ unsigned int vtkSNDFTileCache::CountMinimumSamples(int width, int height)
   program->Use();
   program->SetUniform2i("prSize", width, height);
   this->BindView(program);
-  vtkParticleComputeProgram::BindStorage(3, internals.Minimum);
+  vtkParticleComputeProgram::BindStorage(MinimumBinding, internals.Minimum);
   program->Dispatch(static_cast<unsigned int>((width + 15) / 16),
     static_cast<unsigned int>((height + 15) / 16));
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -495,11 +665,20 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   internals.Rebake->ReleaseGraphicsResources(w);
   internals.MinSamples->ReleaseGraphicsResources(w);
   const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
-  for (auto* buffer : { &internals.Counts, &internals.Sums, &internals.Page, &internals.Scratch,
-         &internals.Minimum })
+  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum })
   {
     vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
   }
+  for (auto* family : { &internals.BinBuffers, &internals.SumBuffers })
+  {
+    for (auto& buffer : *family)
+    {
+      vtkParticleComputeProgram::ReleaseStorage(buffer, current);
+    }
+    family->clear();
+  }
+  internals.BinBufferCount = 0;
+  internals.SumBufferCount = 0;
   internals.PageBytes = 0;
   internals.ScratchBytes = 0;
   internals.Slots.clear();

@@ -41,6 +41,8 @@
 #include "vtkObject.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
+#include <string> // for std::string
+
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkParticleComputeProgram;
@@ -71,6 +73,23 @@ public:
    * The most tiles a width x height view can touch.
    */
   static int GetTilesForView(int width, int height);
+
+  /**
+   * The most tiles a pool can hold in the current `context` with `bins` x `bins` bins: the bins
+   * and the sums are split over shader-storage buffers of whole tiles, each within the
+   * context's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (GetBlockBytes(); at most 2^31 - 1 bytes), up to
+   * 12 buffers of bins (fewer where GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS is below 16) and 2 of
+   * sums. llvmpipe: 128 MB blocks, 756 tiles with 8 x 8 bins.
+   */
+  int GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins);
+  double GetBlockBytes() const;
+
+  /**
+   * The GLSL source `name` of Shaders/ with the pool's storage declarations and accessors
+   * (the //PR::SNDFStorage tag of SNDFTiles.glsl) for the context of the last
+   * GetMaximumSlots() or Allocate().
+   */
+  std::string GetShaderSource(const std::string& name);
 
   /**
    * (Re)allocate a pool of `slots` tiles for `bins` x `bins` bins, dropping every tile. False
@@ -165,6 +184,8 @@ protected:
 private:
   vtkSNDFTileCache(const vtkSNDFTileCache&) = delete;
   void operator=(const vtkSNDFTileCache&) = delete;
+
+  void QueryLimits(vtkOpenGLRenderWindow* context);
 
   class vtkInternals;
   vtkInternals* Internals;

@@ -452,6 +452,35 @@ lru = error(image(window), first)
 check(lru[0] < 0.2 and lru[2] <= 4.0,
       "and converged again: the first picture (mean %.2f max %.1f /255, other jitter)" % (lru[0], lru[2]))
 
+# a view whose tiles span several shader-storage buffers (llvmpipe: 128 MB blocks, 63 tiles of
+# 8x8 bins each): every tile against the 4x4 super-sampled core
+BW, BH = 640, 480
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(16)
+sndf.SetTargetSamples(16)
+renderer, window, _ = scene(xyz, rgb, (BW, BH), sndf)
+image(window, BW, BH)
+converge(sndf, window)
+big = image(window, BW, BH)
+cache = sndf.GetTileCache()
+per_buffer = int(cache.GetBlockBytes() // (4096 * 4 * pr.vtkSNDFTileCache.GetWordsPerTexel(8)))
+_, big_window, _ = scene(xyz, rgb, (4 * BW, 4 * BH))
+big_ref = image(big_window, 4 * BW, 4 * BH).reshape(BH, 4, BW, 4, 3).mean(axis=(1, 3))
+tile_errors = [np.abs(big[y:y + 64, x:x + 64] - big_ref[y:y + 64, x:x + 64]).mean()
+               for y in range(0, BH, 64) for x in range(0, BW, 64)]
+_, plain_big_window, _ = scene(xyz, rgb, (BW, BH))
+plain_big = image(plain_big_window, BW, BH)
+plain_tile_errors = [np.abs(plain_big[y:y + 64, x:x + 64] - big_ref[y:y + 64, x:x + 64]).mean()
+                     for y in range(0, BH, 64) for x in range(0, BW, 64)]
+excess = max(e - p for e, p in zip(tile_errors, plain_tile_errors))
+print("640x480 (about 3 px per atom), %d tiles in a pool of %d slots, %d per storage buffer: "
+      "tile mean errors against the 4x4 core up to %.2f /255 (plain image: %.2f)"
+      % (cache.GetNumberOfTiles(), cache.GetNumberOfSlots(), per_buffer, max(tile_errors),
+         max(plain_tile_errors)))
+check(cache.GetNumberOfTiles() > per_buffer and excess < 0.5,
+      "tiles over several storage buffers: no tile further from the 4x4 core than the plain "
+      "image's (by %.2f /255 at most)" % excess)
+
 # --- ConvergeOnRender: one Render() converges (also the render of a change), with progress ---
 from vtkmodules.util.misc import calldata_type  # noqa: E402
 from vtkmodules.util.vtkConstants import VTK_DOUBLE  # noqa: E402
