@@ -65,37 +65,43 @@ void main()
   {
     return;
   }
-  uint pixel;
-  if (!prSNDFFindTexel(p, pixel) || prSum(pixel, 3u).y >= prTarget)
+  uint texel;
+  if (!prSNDFFindTexel(p, texel))
+  {
+    return;
+  }
+  uvec2 sums = prSumAddress(texel);
+  vec4 s3 = prSumAt(sums, 3u);
+  if (s3.y >= prTarget)
   {
     return;
   }
   vec4 normal = texelFetch(prNormal, p, 0);
-  vec4 s1 = prSum(pixel, 1u);
-  vec4 s3 = prSum(pixel, 3u);
+  vec4 s1 = prSumAt(sums, 1u);
   float depth = texelFetch(prDepth, p, 0).r;
   if (normal.z > 1.5 && !any(isnan(normal.xy)))
   {
     float ao = clamp(normal.z - 2.0, 0.0, 1.0);
     vec3 diffuse = clamp(prFinite(vec4(ao * texelFetch(prDiffuse, p, 0).rgb, 0.0)).rgb, 0.0, 2.0);
     uint bin = prSNDFBin(normal.xy, prBins);
-    uint w0 = prBinWord(pixel, 2u * bin);
-    uint w1 = prBinWord(pixel, 2u * bin + 1u);
+    uvec2 bins = prBinWordAddress(texel);
+    uint w0 = prBinWordAt(bins, 2u * bin);
+    uint w1 = prBinWordAt(bins, 2u * bin + 1u);
     uint count = (w0 & 0xFFFFu) + 1u;
     vec3 mean = prSNDFUnpackMean(w0, w1);
     mean += (diffuse - mean) / float(count);
     prSNDFPackMean(count, mean, w0, w1);
-    prSetBinWord(pixel, 2u * bin, w0);
-    prSetBinWord(pixel, 2u * bin + 1u, w1);
+    prSetBinWordAt(bins, 2u * bin, w0);
+    prSetBinWordAt(bins, 2u * bin + 1u, w1);
     uint mask = uint(2 * prBins * prBins) + (bin >> 5u);
-    prSetBinWord(pixel, mask, prBinWord(pixel, mask) | (1u << (bin & 31u)));
+    prSetBinWordAt(bins, mask, prBinWordAt(bins, mask) | (1u << (bin & 31u)));
     s1.rgb += diffuse * texelFetch(prTable, ivec2(int(bin), 0), 0).rgb;
-    prSetSum(pixel, 2u, prSum(pixel, 2u) + vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0));
+    prSetSumAt(sums, 2u, prSumAt(sums, 2u) + vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0));
     s3.x += ao;
   }
   s3.y += 1.0;
-  prSetSum(pixel, 3u, s3);
+  prSetSumAt(sums, 3u, s3);
   s1.w = max(s1.w, 1.0 - depth);
-  prSetSum(pixel, 1u, s1);
-  prSetSum(pixel, 0u, prSum(pixel, 0u) + prFinite(texelFetch(prColour, p, 0)));
+  prSetSumAt(sums, 1u, s1);
+  prSetSumAt(sums, 0u, prSumAt(sums, 0u) + prFinite(texelFetch(prColour, p, 0)));
 }

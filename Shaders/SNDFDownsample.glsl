@@ -33,7 +33,8 @@ void main()
 {
   ivec2 d = ivec2(gl_GlobalInvocationID.xy);
   uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
-  uint children[16];
+  uvec2 children[16];
+  uvec2 childSums[16];
   float weight[16];
   int count = prFactor * prFactor;
   float total = 0.0;
@@ -44,12 +45,13 @@ void main()
     {
       return;
     }
-    float n = prSum(texel, 3u).y;
+    childSums[c] = prSumAddress(texel);
+    float n = prSumAt(childSums[c], 3u).y;
     if (!(n > 0.0))
     {
       return;
     }
-    children[c] = texel;
+    children[c] = prBinWordAddress(texel);
     weight[c] = 1.0 / n;
     total += n;
   }
@@ -62,18 +64,20 @@ void main()
   float ao = 0.0;
   for (int c = 0; c < count; ++c)
   {
-    uint t = children[c];
-    colours += weight[c] * prSum(t, 0u);
-    vec4 v1 = prSum(t, 1u);
+    uvec2 t = childSums[c];
+    colours += weight[c] * prSumAt(t, 0u);
+    vec4 v1 = prSumAt(t, 1u);
     s1.rgb += weight[c] * v1.rgb;
     s1.w = max(s1.w, v1.w);
-    s2 += weight[c] * prSum(t, 2u);
-    ao += weight[c] * prSum(t, 3u).x;
+    s2 += weight[c] * prSumAt(t, 2u);
+    ao += weight[c] * prSumAt(t, 3u).x;
   }
-  prSetSum(dest, 0u, scale * colours);
-  prSetSum(dest, 1u, vec4(scale * s1.rgb, s1.w));
-  prSetSum(dest, 2u, scale * s2);
-  prSetSum(dest, 3u, vec4(scale * ao, samples, 0.0, 0.0));
+  uvec2 destSums = prSumAddress(dest);
+  prSetSumAt(destSums, 0u, scale * colours);
+  prSetSumAt(destSums, 1u, vec4(scale * s1.rgb, s1.w));
+  prSetSumAt(destSums, 2u, scale * s2);
+  prSetSumAt(destSums, 3u, vec4(scale * ao, samples, 0.0, 0.0));
+  uvec2 destBins = prBinWordAddress(dest);
 
   uint binWords = uint(2 * prBins * prBins);
   int maskWords = max(1, prBins * prBins / 32);
@@ -82,7 +86,7 @@ void main()
     uint mask = 0u;
     for (int c = 0; c < count; ++c)
     {
-      mask |= prBinWord(children[c], binWords + uint(m));
+      mask |= prBinWordAt(children[c], binWords + uint(m));
     }
     uint occupied = 0u;
     while (mask != 0u)
@@ -94,10 +98,10 @@ void main()
       vec3 mean = vec3(0.0);
       for (int c = 0; c < count; ++c)
       {
-        uint w0 = prBinWord(children[c], 2u * bin);
+        uint w0 = prBinWordAt(children[c], 2u * bin);
         float k = weight[c] * float(w0 & 0xFFFFu);
         share += k;
-        mean += k * prSNDFUnpackMean(w0, prBinWord(children[c], 2u * bin + 1u));
+        mean += k * prSNDFUnpackMean(w0, prBinWordAt(children[c], 2u * bin + 1u));
       }
       uint q = min(uint(scale * share + 0.5), 0xFFFFu);
       if (q > 0u)
@@ -105,11 +109,11 @@ void main()
         uint w0;
         uint w1;
         prSNDFPackMean(q, mean / share, w0, w1);
-        prSetBinWord(dest, 2u * bin, w0);
-        prSetBinWord(dest, 2u * bin + 1u, w1);
+        prSetBinWordAt(destBins, 2u * bin, w0);
+        prSetBinWordAt(destBins, 2u * bin + 1u, w1);
         occupied |= 1u << uint(bit);
       }
     }
-    prSetBinWord(dest, binWords + uint(m), occupied);
+    prSetBinWordAt(destBins, binWords + uint(m), occupied);
   }
 }

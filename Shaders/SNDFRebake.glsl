@@ -23,30 +23,32 @@ void main()
 {
   uvec2 local = gl_GlobalInvocationID.xy;
   uint texel = uint(prPageTable[gl_WorkGroupID.z]) * prTileTexels + local.y * 64u + local.x;
-  vec4 s2 = prSum(texel, 2u);
+  uvec2 sums = prSumAddress(texel);
+  vec4 s2 = prSumAt(sums, 2u);
   if (s2.a <= 0.0)
   {
     return; // no particle sample: both sums are zero
   }
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
+  uvec2 words = prBinWordAddress(texel);
   uint masks = uint(2 * prBins * prBins);
   int maskWords = max(1, prBins * prBins / 32);
   for (int m = 0; m < maskWords; ++m)
   {
-    uint mask = prBinWord(texel, masks + uint(m));
+    uint mask = prBinWordAt(words, masks + uint(m));
     while (mask != 0u)
     {
       int bit = findLSB(mask);
       mask &= mask - 1u;
       int bin = 32 * m + bit;
-      uint w0 = prBinWord(texel, 2u * uint(bin));
+      uint w0 = prBinWordAt(words, 2u * uint(bin));
       float count = float(w0 & 0xFFFFu);
-      vec3 mean = prSNDFUnpackMean(w0, prBinWord(texel, 2u * uint(bin) + 1u));
+      vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(words, 2u * uint(bin) + 1u));
       diffuse += count * mean * texelFetch(prTable, ivec2(bin, 0), 0).rgb;
       specular += count * texelFetch(prTable, ivec2(bin, 1), 0).rgb;
     }
   }
-  prSetSum(texel, 1u, vec4(diffuse, prSum(texel, 1u).w));
-  prSetSum(texel, 2u, vec4(specular, s2.w));
+  prSetSumAt(sums, 1u, vec4(diffuse, prSumAt(sums, 1u).w));
+  prSetSumAt(sums, 2u, vec4(specular, s2.w));
 }

@@ -120,6 +120,11 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   vtkNew<vtkParticleComputeProgram> Accumulate;
   vtkNew<vtkParticleComputeProgram> Resolve;
+  // the error estimate: the picture at the last check, the difference program and its sums
+  vtkSmartPointer<vtkTextureObject> Checkpoint;
+  vtkNew<vtkParticleComputeProgram> Difference;
+  vtkSmartPointer<vtkOpenGLBufferObject> Totals = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  int CheckedSamples = 0;
   vtkNew<vtkSNDFTileCache> Cache;
   vtkParticleShaderHooks Hooks;
   vtkTimeStamp ShaderTime;
@@ -318,7 +323,7 @@ public:
       }
       attachment = nullptr;
     }
-    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth })
+    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth, &this->Checkpoint })
     {
       if (*texture)
       {
@@ -341,6 +346,7 @@ public:
     this->Depth = vtkSmartPointer<vtkTextureObject>::New();
     this->Image = vtkSmartPointer<vtkTextureObject>::New();
     this->ImageDepth = vtkSmartPointer<vtkTextureObject>::New();
+    this->Checkpoint = vtkSmartPointer<vtkTextureObject>::New();
   }
 };
 
@@ -556,6 +562,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     this->NumberOfSamples = 0;
     this->ActiveBinsPerAxis = 0;
+    this->ErrorTargetReached = false;
     internals.FrameValid = false;
     internals.Shown = false;
   };
@@ -759,6 +766,11 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       internals.ImageDepth->SetFormat(GL_RED);
       internals.ImageDepth->SetDataType(GL_FLOAT);
       internals.ImageDepth->Allocate2D(width, height, 1, VTK_FLOAT);
+      internals.Checkpoint->SetContext(context);
+      internals.Checkpoint->SetInternalFormat(GL_RGBA32F);
+      internals.Checkpoint->SetFormat(GL_RGBA);
+      internals.Checkpoint->SetDataType(GL_FLOAT);
+      internals.Checkpoint->Allocate2D(width, height, 4, VTK_FLOAT);
       ostate->PushFramebufferBindings();
       internals.Target->Bind();
       for (unsigned int a = 0; a < NumberOfAttachments; ++a)
@@ -790,6 +802,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.ResolveKey.clear();
     placement = internals.Placement;
     this->NumberOfSamples = 0;
+    internals.CheckedSamples = 0;
+    this->ErrorTargetReached = false;
+    this->EstimatedError = -1.0;
     ++this->NumberOfRestarts;
   }
   // The frame of a change (e.g. each frame of an interaction: a restart, a pan off the grids in
@@ -806,6 +821,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     this->ActiveBinsPerAxis = bins;
     this->NumberOfSamples = 0;
+    this->ErrorTargetReached = false;
     return;
   }
   this->ActiveBinsPerAxis = bins;
@@ -1004,17 +1020,103 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     // a pan or zoom brought other texels into the view: count the fewest samples a pixel holds
     this->NumberOfSamples = static_cast<int>(std::min<unsigned int>(
       internals.Cache->CountMinimumSamples(width, height), static_cast<unsigned int>(this->TargetSamples)));
+    internals.CheckedSamples = 0;
+    this->ErrorTargetReached = false;
+    this->EstimatedError = -1.0;
   }
   internals.Placement = placement;
   internals.Placed = true;
   internals.EndStage(timing);
 
-  // sample passes
-  const int samples = this->ConvergeOnRender
-    ? this->TargetSamples - this->NumberOfSamples
-    : std::min(this->SamplesPerFrame, this->TargetSamples - this->NumberOfSamples);
+  // the shade: each pixel from its S-NDF, when samples, table or specular colour changed
+  double specular[3];
+  material->GetSpecularColor(specular);
+  for (double& c : specular)
+  {
+    c *= material->GetSpecular();
+  }
   const unsigned int groupsX = static_cast<unsigned int>((width + 15) / 16);
   const unsigned int groupsY = static_cast<unsigned int>((height + 15) / 16);
+  auto resolveNow = [&]() {
+    std::vector<double> resolveKey = { static_cast<double>(this->NumberOfSamplePasses),
+      static_cast<double>(placement.Level), static_cast<double>(placement.Origin[0]),
+      static_cast<double>(placement.Origin[1]), static_cast<double>(placement.Phase[0]),
+      static_cast<double>(placement.Phase[1]),
+      static_cast<double>(internals.Cache->GetNumberOfDownsampledTiles()),
+      static_cast<double>(internals.Cache->GetNumberOfClearedTiles()),
+      static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2] };
+    if (resolveKey == internals.ResolveKey)
+    {
+      return;
+    }
+    vtkParticleComputeProgram* resolve = internals.Resolve;
+    resolve->Use();
+    resolve->SetUniform2i("prSize", width, height);
+    resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
+      static_cast<float>(specular[1]), static_cast<float>(specular[2]));
+    internals.Cache->BindView(resolve);
+    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    resolve->Dispatch(groupsX, groupsY);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    vtkParticleComputeProgram::UseNone();
+    internals.ResolveKey = resolveKey;
+    ++this->NumberOfResolves;
+  };
+  // The error estimate (ErrorTarget): the picture I_N after N samples against I_M, the one at
+  // the last check (M <= N / 2): the mean |I_N - I_M| * sqrt(M / (N - M)) over the view
+  // estimates the mean error of I_N (for independent samples I_N - I_M has the variance of
+  // I_N's error times (N - M) / M). Checked at N >= 4 and N >= 2 M.
+  auto checkError = [&]() {
+    const int n = this->NumberOfSamples;
+    const int m = internals.CheckedSamples;
+    if (!(this->ErrorTarget > 0.0) || n < 2 || (m > 0 && (n < 4 || n < 2 * m)))
+    {
+      return;
+    }
+    resolveNow();
+    if (m > 0)
+    {
+      if (!internals.Difference->IsBuilt())
+      {
+        internals.Difference->SetSource(vtkParticleShaders::Get("SNDFImageDifference"));
+        internals.Difference->Build(context);
+      }
+      std::vector<unsigned int> totals(1024, 0u);
+      vtkParticleComputeProgram::AllocateStorage(internals.Totals, totals.size() * 4);
+      vtkParticleComputeProgram::UploadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
+      vtkParticleComputeProgram* difference = internals.Difference;
+      difference->Use();
+      difference->SetUniform2i("prSize", width, height);
+      glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      glBindImageTexture(1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      vtkParticleComputeProgram::BindStorage(1, internals.Totals);
+      difference->Dispatch(groupsX, groupsY);
+      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+      glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      vtkParticleComputeProgram::UseNone();
+      vtkParticleComputeProgram::DownloadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
+      double total = 0.0;
+      for (unsigned int t : totals)
+      {
+        total += t;
+      }
+      // mean over pixels and channels, in 1/255
+      const double mean = total / (64.0 * 3.0 * width * height);
+      this->EstimatedError = mean * std::sqrt(static_cast<double>(m) / (n - m));
+      this->ErrorTargetReached = this->EstimatedError <= this->ErrorTarget;
+    }
+    glCopyImageSubData(internals.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
+      internals.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+    internals.CheckedSamples = n;
+  };
+
+  // sample passes
+  const int missing = this->ErrorTargetReached ? 0 : this->TargetSamples - this->NumberOfSamples;
+  const int samples = this->ConvergeOnRender ? missing : std::min(this->SamplesPerFrame, missing);
   // a render of many sample passes (ConvergeOnRender, a large SamplesPerFrame) reports them
   const bool reporting = samples >= ProgressSamples;
   if (reporting)
@@ -1089,50 +1191,21 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     vtkParticleComputeProgram::UseNone();
     internals.EndStage(timing);
     ++this->NumberOfSamples;
+    checkError();
     if (reporting)
     {
-      double fraction = static_cast<double>(k + 1) / samples;
+      double fraction = this->ErrorTargetReached ? 1.0 : static_cast<double>(k + 1) / samples;
       this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+    }
+    if (this->ErrorTargetReached)
+    {
+      break;
     }
   }
 
   // shade when samples, table or specular colour changed
   internals.BeginStage(timing, 2);
-  double specular[3];
-  material->GetSpecularColor(specular);
-  for (double& c : specular)
-  {
-    c *= material->GetSpecular();
-  }
-  std::vector<double> resolveKey = { static_cast<double>(this->NumberOfSamplePasses),
-    static_cast<double>(placement.Level), static_cast<double>(placement.Origin[0]),
-    static_cast<double>(placement.Origin[1]), static_cast<double>(placement.Phase[0]),
-    static_cast<double>(placement.Phase[1]),
-    static_cast<double>(internals.Cache->GetNumberOfDownsampledTiles()),
-    static_cast<double>(internals.Cache->GetNumberOfClearedTiles()),
-    static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2] };
-  if (resolveKey != internals.ResolveKey)
-  {
-    vtkParticleComputeProgram* resolve = internals.Resolve;
-    resolve->Use();
-    internals.Table->Activate();
-    resolve->SetUniformi("prTable", internals.Table->GetTextureUnit());
-    resolve->SetUniform2i("prSize", width, height);
-    resolve->SetUniformi("prBins", bins);
-    resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
-      static_cast<float>(specular[1]), static_cast<float>(specular[2]));
-    internals.Cache->BindView(resolve);
-    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    resolve->Dispatch(groupsX, groupsY);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    internals.Table->Deactivate();
-    vtkParticleComputeProgram::UseNone();
-    internals.ResolveKey = resolveKey;
-    ++this->NumberOfResolves;
-  }
+  resolveNow();
 
   // the composite: colour and depth into the render state's target, over the whole viewport
   if (!internals.CompositeQuad)
@@ -1210,6 +1283,10 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   internals.Accumulate->ReleaseGraphicsResources(w);
   internals.Resolve->ReleaseGraphicsResources(w);
+  internals.Difference->ReleaseGraphicsResources(w);
+  vtkParticleComputeProgram::ReleaseStorage(
+    internals.Totals, vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
+  internals.CheckedSamples = 0;
   internals.Cache->ReleaseGraphicsResources(w);
   internals.FrameValid = false;
   internals.Placed = false;
@@ -1233,5 +1310,7 @@ void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ActiveBinsPerAxis: " << this->ActiveBinsPerAxis << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";
   os << indent << "ConvergeOnRender: " << this->ConvergeOnRender << "\n";
+  os << indent << "ErrorTarget: " << this->ErrorTarget << "\n";
+  os << indent << "EstimatedError: " << this->EstimatedError << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
 }

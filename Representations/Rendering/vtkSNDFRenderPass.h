@@ -198,10 +198,30 @@ public:
    */
   vtkGetMacro(NumberOfSamples, int);
 
+  ///@{
   /**
-   * True when NumberOfSamples reached TargetSamples (refinement stopped).
+   * Stop refinement early once the estimated mean error of the picture falls to ErrorTarget (in
+   * 1/255 of the colour range, over the view's pixels and channels; default 0: off, refinement
+   * goes on to TargetSamples). The estimate compares the picture after N samples with the one
+   * after M <= N / 2 (checked at N = 2, 4, 8, ... as the samples arrive): mean |I_N - I_M| *
+   * sqrt(M / (N - M)), the mean error of I_N for independent samples (for the jittered
+   * low-discrepancy samples here it errs on the safe side). It measures the sampling noise, not
+   * the binning's error (what 256 samples leave: TestSNDFRenderPass). GetEstimatedError() is the
+   * last estimate (-1 before the first). A change of the view starts again.
    */
-  bool GetConverged() { return this->NumberOfSamples >= this->TargetSamples; }
+  vtkSetClampMacro(ErrorTarget, double, 0.0, 255.0);
+  vtkGetMacro(ErrorTarget, double);
+  vtkGetMacro(EstimatedError, double);
+  ///@}
+
+  /**
+   * True when refinement stopped: NumberOfSamples reached TargetSamples, or the estimated error
+   * reached ErrorTarget.
+   */
+  bool GetConverged()
+  {
+    return this->NumberOfSamples >= this->TargetSamples || this->ErrorTargetReached;
+  }
 
   /**
    * The bins per axis in use (BinsPerAxis, or fewer when MaximumMemory forced it; 0 when the pass
@@ -295,6 +315,9 @@ protected:
   vtkIdType NumberOfZooms = 0;
   bool CollectTimings = false;
   bool ConvergeOnRender = false;
+  double ErrorTarget = 0.0;
+  double EstimatedError = -1.0;
+  bool ErrorTargetReached = false;
 
 
 private:

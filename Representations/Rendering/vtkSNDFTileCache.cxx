@@ -208,22 +208,24 @@ public:
     };
     declare("vec4", "prSums", SumBinding, this->SumBufferCount);
     declare("uint", "prBins", BinBinding, this->BinBufferCount);
-    // one accessor pair per array family: the buffer of the texel's tile, the index in it
-    auto access = [&](const char* type, const char* get, const char* set, const char* name,
-                    const char* per, const char* stride, int count) {
-      const std::string index = std::string("  uint b = min((texel >> 12u) / ") + per + ", " +
-        std::to_string(count - 1) + "u);\n  uint i = (texel - b * " + per + " * 4096u) * " +
-        stride + " + k;\n";
-      code += std::string(type) + " " + get + "(uint texel, uint k)\n{\n" + index +
-        "  switch (b)\n  {\n";
+    // per array family: the address of a texel (its tile's buffer, its first element there),
+    // reading and writing element k at an address, and both by texel
+    auto access = [&](const char* type, const char* family, const char* name, const char* per,
+                    const char* stride, int count) {
+      const std::string f = family;
+      code += "uvec2 pr" + f + "Address(uint texel)\n{\n  uint b = min((texel >> 12u) / " + per +
+        ", " + std::to_string(count - 1) + "u);\n  return uvec2(b, (texel - b * " + per +
+        " * 4096u) * " + stride + ");\n}\n";
+      code += std::string(type) + " pr" + f + "At(uvec2 a, uint k)\n{\n  uint i = a.y + k;\n"
+        "  switch (a.x)\n  {\n";
       for (int b = 0; b < count; ++b)
       {
         code += "    " + std::string(b + 1 < count ? "case " + std::to_string(b) + "u" : "default") +
           ": return " + name + std::to_string(b) + "[i];\n";
       }
       code += "  }\n}\n";
-      code += std::string("void ") + set + "(uint texel, uint k, " + type + " value)\n{\n" +
-        index + "  switch (b)\n  {\n";
+      code += "void prSet" + f + "At(uvec2 a, uint k, " + type + " value)\n{\n  uint i = a.y + k;\n"
+        "  switch (a.x)\n  {\n";
       for (int b = 0; b < count; ++b)
       {
         code += "    " + std::string(b + 1 < count ? "case " + std::to_string(b) + "u" : "default") +
@@ -231,9 +233,16 @@ public:
       }
       code += "  }\n}\n";
     };
-    access("vec4", "prSum", "prSetSum", "prSums", "prSlotsPerSumBuffer", "4u", this->SumBufferCount);
-    access("uint", "prBinWord", "prSetBinWord", "prBins", "prSlotsPerBinBuffer",
-      "uint(prWordsPerPixel)", this->BinBufferCount);
+    access("vec4", "Sum", "prSums", "prSlotsPerSumBuffer", "4u", this->SumBufferCount);
+    access("uint", "BinWord", "prBins", "prSlotsPerBinBuffer", "uint(prWordsPerPixel)",
+      this->BinBufferCount);
+    code += "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n"
+            "void prSetSum(uint texel, uint k, vec4 value)\n{\n"
+            "  prSetSumAt(prSumAddress(texel), k, value);\n}\n"
+            "uint prBinWord(uint texel, uint k)\n{\n"
+            "  return prBinWordAt(prBinWordAddress(texel), k);\n}\n"
+            "void prSetBinWord(uint texel, uint k, uint value)\n{\n"
+            "  prSetBinWordAt(prBinWordAddress(texel), k, value);\n}\n";
     return code;
   }
 

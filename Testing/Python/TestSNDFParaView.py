@@ -180,6 +180,47 @@ if not args.must_fail:
           and darker.min() > -3.0 * 2.0, "AO darkens the S-NDF picture, brightens nothing")
     view.ParticleAmbientOcclusion = "None"
 
+    # --- the S-MIP through ParaView: a pan in parallel projection and back keeps the samples ---
+    view.SNDFConvergeStillRenders = 0
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = 16.0
+    simple.Render(view)
+    for _ in range(6):
+        simple.Render(view)
+    before_pan = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_smip0.png")))
+    converged_samples = view_info(view, "SNDFNumberOfSamples")
+    pixel = 2.0 * view.CameraParallelScale / H
+    forward = numpy.array(view.CameraFocalPoint) - numpy.array(view.CameraPosition)
+    up = numpy.array(view.CameraViewUp)
+    right = numpy.cross(forward, up)
+    right /= numpy.linalg.norm(right)
+    move = 20 * pixel * right
+    position, focal = numpy.array(view.CameraPosition), numpy.array(view.CameraFocalPoint)
+    view.CameraPosition, view.CameraFocalPoint = list(position + move), list(focal + move)
+    simple.Render(view)
+    panned_samples = view_info(view, "SNDFNumberOfSamples")
+    view.CameraPosition, view.CameraFocalPoint = list(position), list(focal)
+    back = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_smip1.png")))
+    print("parallel projection: %d samples, %d after a pan by 20 px, %d back, max change %.1f /255"
+          % (converged_samples, panned_samples, view_info(view, "SNDFNumberOfSamples"),
+             numpy.abs(back - before_pan).max()))
+    check(converged_samples == 256 and panned_samples == 64
+          and view_info(view, "SNDFNumberOfSamples") == 256
+          and numpy.abs(back - before_pan).max() <= 1.0,
+          "a pan in parallel projection samples only the uncovered texels; back: the cached tiles")
+    view.CameraParallelProjection = 0
+
+    # --- an error target stops refinement early ------------------------------------------------
+    view.SNDFErrorTarget = 2.0
+    view.SNDFConvergeStillRenders = 1
+    view.CameraPosition = [40.5, 30.0, 55.0]
+    simple.Render(view)
+    early = view_info(view, "SNDFNumberOfSamples")
+    check(0 < early < 256, "S-NDF Error Target 2: refinement stops at %d samples" % early)
+    view.SNDFErrorTarget = 0.0
+    view.CameraPosition = [40.0, 30.0, 55.0]
+    view.SNDFConvergeStillRenders = 0
+
     # --- translucent particles: plain image, one warning ----------------------------------------
     display.Opacity = 0.5
     with pr.captured_messages() as messages:

@@ -481,6 +481,28 @@ check(cache.GetNumberOfTiles() > per_buffer and excess < 0.5,
       "tiles over several storage buffers: no tile further from the 4x4 core than the plain "
       "image's (by %.2f /255 at most)" % excess)
 
+# --- an error target stops refinement early: the estimate against the true distance to the
+# 256-sample picture
+for target in (2.0, 0.5):
+    sndf = pr.vtkSNDFRenderPass()
+    sndf.SetSamplesPerFrame(4)
+    sndf.SetErrorTarget(target)
+    renderer, window, _ = scene(xyz, rgb, (W, H), sndf)
+    image(window)
+    converge(sndf, window)
+    early = image(window)
+    true_error = np.abs(early - out).mean()
+    print("error target %.1f /255: stopped at %d samples, estimate %.2f, distance to the "
+          "256-sample picture %.2f /255" % (target, sndf.GetNumberOfSamples(),
+                                             sndf.GetEstimatedError(), true_error))
+    check(sndf.GetConverged() and sndf.GetNumberOfSamples() < 256
+          and 0.0 < sndf.GetEstimatedError() <= target and true_error <= target,
+          "error target %.1f: refinement stops early, the picture within the target of the "
+          "converged one" % target)
+    passes = sndf.GetNumberOfSamplePasses()
+    image(window)
+    check(sndf.GetNumberOfSamplePasses() == passes, "and takes no more samples")
+
 # --- ConvergeOnRender: one Render() converges (also the render of a change), with progress ---
 from vtkmodules.util.misc import calldata_type  # noqa: E402
 from vtkmodules.util.vtkConstants import VTK_DOUBLE  # noqa: E402
