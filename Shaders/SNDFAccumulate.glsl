@@ -15,8 +15,8 @@
 //              when its third component exceeds 1.5
 //   prDiffuse  particles: the diffuse colour (VTK's diffuseColor)
 //   prDepth    window depth
-// The S-NDFs live in the S-MIP cache (SNDFTiles.glsl): window pixel p is
-// texel prSNDFFindTexel(p) of the cache, every one mapped. Texels that hold
+// The S-NDFs live in the S-MIP cache (SNDFTiles.glsl): one tile-list dispatch
+// per part of the pool the view's tiles lie in, one invocation per texel. Texels that hold
 // prTarget samples or more take no more (a zoomed-out level averaged from a
 // finer one, tiles converged before a pan): they stay as they are.
 // Per texel (prSums, 4 vec4):
@@ -39,6 +39,7 @@
 // occupied bins, so that re-lighting visits those only.
 //=========================================================================
 layout(local_size_x = 16, local_size_y = 16) in;
+// (dispatch: (4, 4, tiles))
 
 //PR::Include SNDFBins
 //PR::Include SNDFTiles
@@ -60,13 +61,9 @@ vec4 prFinite(vec4 v)
 
 void main()
 {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (p.x >= prSize.x || p.y >= prSize.y)
-  {
-    return;
-  }
+  ivec2 p;
   uint texel;
-  if (!prSNDFFindTexel(p, texel))
+  if (!prSNDFTileInvocation(prSize, p, texel))
   {
     return;
   }

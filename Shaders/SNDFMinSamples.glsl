@@ -1,8 +1,8 @@
 #version 430
 //=========================================================================
 // SNDFMinSamples.glsl -- vtkSNDFRenderPass: the fewest samples any window
-// pixel's S-NDF holds (prSums[3].y of its S-MIP texel; 0 where a tile is not
-// mapped) into prMinimum, which the caller set to 0xFFFFFFFF. Refinement goes
+// pixel's S-NDF holds (prSums[3].y of its S-MIP texel; tile-list dispatches
+// as SNDFAccumulate.glsl) into prMinimum, which the caller set to 0xFFFFFFFF. Refinement goes
 // on until this reaches the target; it is counted after a pan or zoom has
 // brought tiles of different sample counts into the view.
 //=========================================================================
@@ -26,12 +26,11 @@ void main()
     prGroupMinimum = 0xFFFFFFFFu;
   }
   barrier();
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (p.x < prSize.x && p.y < prSize.y)
+  ivec2 p;
+  uint texel;
+  if (prSNDFTileInvocation(prSize, p, texel))
   {
-    uint texel;
-    uint n = prSNDFFindTexel(p, texel) ? uint(prSum(texel, 3u).y) : 0u;
-    atomicMin(prGroupMinimum, n);
+    atomicMin(prGroupMinimum, uint(prSum(texel, 3u).y));
   }
   barrier();
   if (gl_LocalInvocationIndex == 0u)

@@ -18,8 +18,8 @@
 // The two bin sums are linear in the samples for a fixed table and kept up
 // to date per sample (SNDFAccumulate.glsl) or summed again after a table
 // change (SNDFRebake.glsl), so the shade costs O(1) per pixel whatever the
-// bin count. The window pixel's texel comes from the S-MIP page table
-// (SNDFTiles.glsl).
+// bin count. One tile-list dispatch per part of the pool the view's tiles
+// lie in (SNDFTiles.glsl), one invocation per texel.
 //=========================================================================
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -33,28 +33,23 @@ layout(r32f, binding = 1) uniform writeonly image2D prDepthImage;
 
 void main()
 {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (p.x >= prSize.x || p.y >= prSize.y)
+  ivec2 p;
+  uint texel;
+  if (!prSNDFTileInvocation(prSize, p, texel))
   {
     return;
   }
-  uint texel;
-  vec4 colour = vec4(0.0, 0.0, 0.0, 1.0);
-  float depth = 1.0;
-  if (prSNDFFindTexel(p, texel))
+  vec4 colours = prSum(texel, 0u);
+  vec4 s1 = prSum(texel, 1u);
+  vec4 s2 = prSum(texel, 2u);
+  vec2 s3 = prSum(texel, 3u).xy;
+  vec3 particles = s1.rgb;
+  if (s2.a > 0.0)
   {
-    vec4 colours = prSum(texel, 0u);
-    vec4 s1 = prSum(texel, 1u);
-    vec4 s2 = prSum(texel, 2u);
-    vec2 s3 = prSum(texel, 3u).xy;
-    vec3 particles = s1.rgb;
-    if (s2.a > 0.0)
-    {
-      particles += prSpecularColour * (s3.x / s2.a) * s2.rgb;
-    }
-    colour = vec4(particles + colours.rgb, colours.a) / max(1.0, s3.y);
-    depth = s1.w > 0.0 ? 1.0 - s1.w : 1.0;
+    particles += prSpecularColour * (s3.x / s2.a) * s2.rgb;
   }
+  vec4 colour = vec4(particles + colours.rgb, colours.a) / max(1.0, s3.y);
+  float depth = s1.w > 0.0 ? 1.0 - s1.w : 1.0;
   if (any(isnan(colour)) || any(isinf(colour)))
   {
     colour = vec4(0.0, 0.0, 0.0, 1.0);

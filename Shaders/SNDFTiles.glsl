@@ -29,6 +29,25 @@ const uint prTileTexels = 4096u;
 uniform ivec2 prTexelOffset;
 uniform int prTilesX;
 
+// Tile-list dispatches (the per-frame shaders): (4, 4, n) groups of 16 x 16 over n tiles of
+// the page table, listed in prTileList from prTileListOffset (the view's tiles in one part of
+// the pool). This invocation's texel in the pool and the window pixel over it; false where the
+// texel lies outside the prSize window.
+layout(std430, binding = 3) readonly buffer prTileListBuffer
+{
+  int prTileList[];
+};
+uniform int prTileListOffset;
+
+bool prSNDFTileInvocation(ivec2 size, out ivec2 p, out uint texel)
+{
+  int tile = prTileList[prTileListOffset + int(gl_WorkGroupID.z)];
+  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
+  p = ivec2(tile % prTilesX, tile / prTilesX) * prTileSize + local - prTexelOffset;
+  texel = uint(max(prPageTable[tile], 0)) * prTileTexels + uint(local.y * prTileSize + local.x);
+  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, size));
+}
+
 // The pool texel of position p (p + prTexelOffset >= 0); false where its tile is not mapped.
 bool prSNDFFindTexel(ivec2 p, out uint texel)
 {

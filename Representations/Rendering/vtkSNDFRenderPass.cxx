@@ -1057,7 +1057,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Cache->BindView(resolve);
     glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    resolve->Dispatch(groupsX, groupsY);
+    for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
+    {
+      resolve->Dispatch(4, 4, internals.Cache->BindViewPart(resolve, part));
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
@@ -1180,7 +1183,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     accumulate->SetUniformi("prBins", bins);
     accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
     internals.Cache->BindView(accumulate);
-    accumulate->Dispatch(groupsX, groupsY);
+    for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
+    {
+      accumulate->Dispatch(4, 4, internals.Cache->BindViewPart(accumulate, part));
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     for (unsigned int a = 0; a < NumberOfAttachments; ++a)
     {

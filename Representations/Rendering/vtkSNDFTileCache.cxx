@@ -14,6 +14,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -29,6 +30,7 @@ const float MaxDownsampledSamples = 32768.0f;
 // bins from 4 (SNDFTiles.glsl)
 const unsigned int PageBinding = 0;
 const unsigned int MinimumBinding = 1;
+const unsigned int TileListBinding = 3;
 const unsigned int SumBinding = 2;
 const int MaximumSumBuffers = 2;
 const unsigned int BinBinding = 4;
@@ -91,9 +93,15 @@ public:
   std::map<Key, int> Table;
   long long Stamp = 0;
   int WordsPerTexel = 0;
-  // the last mapped view: its tile rectangle and the window's offset into it
+  // the last mapped view: its tile rectangle, the window's offset into it, the pool's parts
+  // (bin buffer, sum buffer) its tiles lie in
   int TilesX = 0;
   int TexelOffset[2] = { 0, 0 };
+  std::vector<std::pair<int, int>> ViewParts;
+  // per part, where its tiles start in the tile list and how many there are
+  std::vector<std::pair<int, int>> ViewPartTiles;
+  vtkSmartPointer<vtkOpenGLBufferObject> TileList = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  std::size_t TileListBytes = 0;
 
   // uploads `values` into `buffer` (grown as needed) for binding 2
   static void Upload(vtkOpenGLBufferObject* buffer, std::size_t& capacity, const std::vector<int>& values)
@@ -190,14 +198,66 @@ public:
     }
   }
 
-  // The storage declarations and accessors of SNDFTiles.glsl for BinBufferCount and
-  // SumBufferCount buffers.
-  std::string StorageCode() const
+  // The buffers of part (bin buffer, sum buffer) for a one-part shader (in use).
+  void BindPart(vtkParticleComputeProgram* program, const std::pair<int, int>& part)
+  {
+    program->SetUniformi("prWordsPerPixel", this->WordsPerTexel);
+    program->SetUniformui("prSlotsPerBinBuffer", static_cast<unsigned int>(this->SlotsPerBinBuffer));
+    program->SetUniformui("prSlotsPerSumBuffer", static_cast<unsigned int>(this->SlotsPerSumBuffer));
+    program->SetUniformui("prBinPart", static_cast<unsigned int>(part.first));
+    program->SetUniformui("prSumPart", static_cast<unsigned int>(part.second));
+    vtkParticleComputeProgram::BindStorage(BinBinding, this->BinBuffers[part.first]);
+    vtkParticleComputeProgram::BindStorage(SumBinding, this->SumBuffers[part.second]);
+  }
+
+  // the parts (bin buffer, sum buffer) that hold the given slots
+  std::vector<std::pair<int, int>> PartsOf(const std::vector<int>& slots) const
+  {
+    std::vector<std::pair<int, int>> parts;
+    for (int slot : slots)
+    {
+      if (slot >= 0)
+      {
+        parts.emplace_back(slot / this->SlotsPerBinBuffer, slot / this->SlotsPerSumBuffer);
+      }
+    }
+    std::sort(parts.begin(), parts.end());
+    parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+    return parts;
+  }
+
+  // The storage declarations and accessors of SNDFTiles.glsl. One part (the per-frame shaders):
+  // one bin buffer and one sum buffer bound, prBinPart and prSumPart say which; a dispatch per
+  // part of the view (GetNumberOfViewParts()) and prSNDFInPart() tells a texel of the part. All
+  // parts (the zoom's averaging, which reads tiles anywhere): BinBufferCount and SumBufferCount
+  // buffers bound, addressed through a switch.
+  std::string StorageCode(bool allParts) const
   {
     std::string code = "layout(std430, binding = " + std::to_string(PageBinding) +
       ") readonly buffer prPageBuffer\n{\n  int prPageTable[];\n};\n"
       "uniform int prWordsPerPixel;\nuniform uint prSlotsPerBinBuffer;\n"
       "uniform uint prSlotsPerSumBuffer;\n";
+    if (!allParts)
+    {
+      code += "uniform uint prBinPart;\nuniform uint prSumPart;\n"
+              "layout(std430, binding = " + std::to_string(SumBinding) +
+        ") buffer prSumBuffer0\n{\n  vec4 prSums0[];\n};\n"
+        "layout(std430, binding = " + std::to_string(BinBinding) +
+        ") buffer prBinBuffer0\n{\n  uint prBins0[];\n};\n"
+        "bool prSNDFInPart(uint texel)\n{\n  uint slot = texel >> 12u;\n"
+        "  return slot / prSlotsPerBinBuffer == prBinPart && slot / prSlotsPerSumBuffer == prSumPart;\n}\n"
+        "uvec2 prBinWordAddress(uint texel)\n{\n"
+        "  return uvec2(0u, (texel - prBinPart * prSlotsPerBinBuffer * 4096u) * uint(prWordsPerPixel));\n}\n"
+        "uvec2 prSumAddress(uint texel)\n{\n"
+        "  return uvec2(0u, (texel - prSumPart * prSlotsPerSumBuffer * 4096u) * 4u);\n}\n"
+        "uint prBinWordAt(uvec2 a, uint k)\n{\n  return prBins0[a.y + k];\n}\n"
+        "void prSetBinWordAt(uvec2 a, uint k, uint value)\n{\n  prBins0[a.y + k] = value;\n}\n"
+        "vec4 prSumAt(uvec2 a, uint k)\n{\n  return prSums0[a.y + k];\n}\n"
+        "void prSetSumAt(uvec2 a, uint k, vec4 value)\n{\n  prSums0[a.y + k] = value;\n}\n"
+        "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n";
+      return code;
+    }
+    code += "bool prSNDFInPart(uint texel)\n{\n  return true;\n}\n";
     auto declare = [&](const char* type, const char* name, unsigned int binding, int count) {
       for (int b = 0; b < count; ++b)
       {
@@ -361,14 +421,14 @@ double vtkSNDFTileCache::GetBlockBytes() const
 }
 
 //------------------------------------------------------------------------------
-std::string vtkSNDFTileCache::GetShaderSource(const std::string& name)
+std::string vtkSNDFTileCache::GetShaderSource(const std::string& name, bool allParts)
 {
   std::string source = vtkParticleShaders::Get(name);
   const std::string tag = "//PR::SNDFStorage";
   const std::size_t at = source.find(tag);
   if (at != std::string::npos)
   {
-    source.replace(at, tag.size(), this->Internals->StorageCode());
+    source.replace(at, tag.size(), this->Internals->StorageCode(allParts));
   }
   return source;
 }
@@ -429,7 +489,7 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   }
   if (!internals.Downsample->IsBuilt())
   {
-    internals.Downsample->SetSource(this->GetShaderSource("SNDFDownsample"));
+    internals.Downsample->SetSource(this->GetShaderSource("SNDFDownsample", true));
     internals.Rebake->SetSource(this->GetShaderSource("SNDFRebake"));
     internals.MinSamples->SetSource(this->GetShaderSource("SNDFMinSamples"));
     if (!internals.Downsample->Build(context) || !internals.Rebake->Build(context) ||
@@ -509,10 +569,23 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
     table->Activate();
     program->SetUniformi("prTable", table->GetTextureUnit());
     program->SetUniformi("prBins", this->Bins);
-    internals.BindPool(program);
-    vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, stale);
-    vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
-    program->Dispatch(TileSize / 16, TileSize / 16, static_cast<unsigned int>(stale.size()));
+    // part by part, the part's slots
+    for (const auto& part : internals.PartsOf(stale))
+    {
+      std::vector<int> slots;
+      for (int slot : stale)
+      {
+        if (slot / internals.SlotsPerBinBuffer == part.first &&
+          slot / internals.SlotsPerSumBuffer == part.second)
+        {
+          slots.push_back(slot);
+        }
+      }
+      vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, slots);
+      vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
+      internals.BindPart(program, part);
+      program->Dispatch(TileSize / 16, TileSize / 16, static_cast<unsigned int>(slots.size()));
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     table->Deactivate();
     vtkParticleComputeProgram::UseNone();
@@ -606,6 +679,24 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
   rebake();
   vtkInternals::Upload(internals.Page, internals.PageBytes, page);
   internals.TilesX = tilesX;
+  internals.ViewParts = internals.PartsOf(page);
+  // the view's tiles part by part (tile-list dispatches)
+  std::vector<int> list;
+  internals.ViewPartTiles.clear();
+  for (const auto& part : internals.ViewParts)
+  {
+    const int first = static_cast<int>(list.size());
+    for (std::size_t t = 0; t < page.size(); ++t)
+    {
+      if (page[t] / internals.SlotsPerBinBuffer == part.first &&
+        page[t] / internals.SlotsPerSumBuffer == part.second)
+      {
+        list.push_back(static_cast<int>(t));
+      }
+    }
+    internals.ViewPartTiles.emplace_back(first, static_cast<int>(list.size()) - first);
+  }
+  vtkInternals::Upload(internals.TileList, internals.TileListBytes, list);
   internals.TexelOffset[0] = static_cast<int>(view.Origin[0] - TileSize * tx0);
   internals.TexelOffset[1] = static_cast<int>(view.Origin[1] - TileSize * ty0);
   return true;
@@ -642,8 +733,24 @@ void vtkSNDFTileCache::BindView(vtkParticleComputeProgram* program)
   vtkInternals& internals = *this->Internals;
   program->SetUniform2i("prTexelOffset", internals.TexelOffset[0], internals.TexelOffset[1]);
   program->SetUniformi("prTilesX", internals.TilesX);
-  internals.BindPool(program);
   vtkParticleComputeProgram::BindStorage(PageBinding, internals.Page);
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::GetNumberOfViewParts() const
+{
+  return static_cast<int>(this->Internals->ViewParts.size());
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkSNDFTileCache::BindViewPart(vtkParticleComputeProgram* program, int part)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::size_t k = static_cast<std::size_t>(part);
+  internals.BindPart(program, internals.ViewParts[k]);
+  program->SetUniformi("prTileListOffset", internals.ViewPartTiles[k].first);
+  vtkParticleComputeProgram::BindStorage(TileListBinding, internals.TileList);
+  return static_cast<unsigned int>(internals.ViewPartTiles[k].second);
 }
 
 //------------------------------------------------------------------------------
@@ -657,8 +764,11 @@ unsigned int vtkSNDFTileCache::CountMinimumSamples(int width, int height)
   program->SetUniform2i("prSize", width, height);
   this->BindView(program);
   vtkParticleComputeProgram::BindStorage(MinimumBinding, internals.Minimum);
-  program->Dispatch(static_cast<unsigned int>((width + 15) / 16),
-    static_cast<unsigned int>((height + 15) / 16));
+  for (int part = 0; part < this->GetNumberOfViewParts(); ++part)
+  {
+    const unsigned int tiles = this->BindViewPart(program, part);
+    program->Dispatch(TileSize / 16, TileSize / 16, tiles);
+  }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   vtkParticleComputeProgram::UseNone();
   unsigned int minimum = 0;
@@ -674,7 +784,7 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   internals.Rebake->ReleaseGraphicsResources(w);
   internals.MinSamples->ReleaseGraphicsResources(w);
   const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
-  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum })
+  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum, &internals.TileList })
   {
     vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
   }
@@ -689,6 +799,7 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   internals.BinBufferCount = 0;
   internals.SumBufferCount = 0;
   internals.PageBytes = 0;
+  internals.TileListBytes = 0;
   internals.ScratchBytes = 0;
   internals.Slots.clear();
   internals.Table.clear();

@@ -87,9 +87,11 @@ public:
   /**
    * The GLSL source `name` of Shaders/ with the pool's storage declarations and accessors
    * (the //PR::SNDFStorage tag of SNDFTiles.glsl) for the context of the last
-   * GetMaximumSlots() or Allocate().
+   * GetMaximumSlots() or Allocate(). The per-frame shaders see one part of the pool per
+   * dispatch (one bin buffer and one sum buffer, no branch per access: BindViewPart());
+   * with allParts every buffer is bound and addressed through a switch.
    */
-  std::string GetShaderSource(const std::string& name);
+  std::string GetShaderSource(const std::string& name, bool allParts = false);
 
   /**
    * (Re)allocate a pool of `slots` tiles for `bins` x `bins` bins, dropping every tile. False
@@ -146,11 +148,15 @@ public:
   int CountAvailable(const Placement& view, int width, int height);
 
   /**
-   * For a dispatch over the window's pixels with `program` (in use): the page table of the last
-   * MapView() at storage binding 2, its uniforms (prTexelOffset, prTilesX), the bins at binding 0
-   * and the sums at binding 1.
+   * For dispatches over the view's texels with `program` (in use): the page table of the last
+   * MapView() and its uniforms (prTexelOffset, prTilesX). Then one tile-list dispatch per part
+   * of the pool the view's tiles lie in: BindViewPart(program, k) for k < GetNumberOfViewParts()
+   * binds the part's buffers and its list of tiles and returns the number of tiles n; dispatch
+   * (4, 4, n) groups of 16 x 16 (prSNDFTileInvocation() of SNDFTiles.glsl).
    */
   void BindView(vtkParticleComputeProgram* program);
+  int GetNumberOfViewParts() const;
+  unsigned int BindViewPart(vtkParticleComputeProgram* program, int part);
 
   /**
    * The fewest samples a pixel of the last mapped view holds (a dispatch and a read-back).
