@@ -26,6 +26,15 @@
  * A view needs at most (ceil(W / 64) + 1) (ceil(H / 64) + 1) tiles (GetTilesForView()); a pool
  * with fewer slots is refused (MapView() returns false) rather than showing a wrong tile.
  *
+ * Storage. A texel's bins and its sums live in two families of shader-storage buffers, each
+ * buffer a whole number of tiles within the context's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (128 MB
+ * on llvmpipe: 63 tiles of 8 x 8 bins, 512 tiles of sums), so that no shader addresses beyond a
+ * block. A (bin buffer, sum buffer) pair is a part of the pool; the per-frame shaders
+ * (accumulation, shade, sample count, rebake) bind one part and run one dispatch per part over
+ * the list of the view's tiles in it, one invocation per texel; only the zoom's averaging, which
+ * reads tiles anywhere, binds every buffer (up to 12 bin and 2 sum buffers) and picks one per
+ * access.
+ *
  * Levels are placed by the integer position of their grid on the virtual plane in units of 1/256
  * of a level-0 texel; the phase of a level's grid (its origin modulo its texel size) is part of a
  * tile's key, so that views reached by different pans and zooms never share a texel that covers a
