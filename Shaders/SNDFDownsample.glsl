@@ -14,12 +14,24 @@
 // the nearest of the children. A texel with a child that is not in the cache
 // or holds no sample stays empty (the pass samples it).
 //
-// The destination slot was cleared. The page table of SNDFTiles.glsl maps
-// the children's tile rectangle; child (i, j) of texel d is position
-// d * prFactor + (i, j) there. Dispatch: (4, 4) groups of 16 x 16.
+// Two phases, so that each dispatch binds one part of the pool (one bin and
+// one sum buffer, SNDFTiles.glsl): prPhase 0, once per part that holds
+// children, adds the children in that part to a per-texel record in
+// prPartial (prFirst: the first such dispatch starts the records from
+// zero); prPhase 1, with the destination's part bound, writes the texels
+// from the records. A record: [0] the children's weighted colour sums,
+// [1] (weighted D-sums, nearest 1 - depth), [2] weighted (S-sums, Nc),
+// [3] (weighted AO sum, sum N, children found, 0), then per bin (weighted
+// count, weighted count * mean colour).
+//
+// The page table of SNDFTiles.glsl maps the children's tile rectangle;
+// child (i, j) of texel d is position d * prFactor + (i, j) there. The
+// destination slot was cleared. Dispatch: (4, 4) groups of 16 x 16.
 //=========================================================================
 layout(local_size_x = 16, local_size_y = 16) in;
 
+uniform int prPhase;
+uniform int prFirst;
 uniform int prDestSlot;
 uniform int prFactor;
 uniform int prBins;
@@ -28,87 +40,106 @@ uniform float prMaxSamples;
 //PR::Include SNDFBins
 //PR::Include SNDFTiles
 
+layout(std430, binding = 1) buffer prPartialBuffer
+{
+  vec4 prPartial[];
+};
 
 void main()
 {
   ivec2 d = ivec2(gl_GlobalInvocationID.xy);
-  uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
-  uvec2 children[16];
-  uvec2 childSums[16];
-  float weight[16];
+  int binCount = prBins * prBins;
+  uint record = uint((d.y * prTileSize + d.x) * (4 + binCount));
+  uint binWords = uint(2 * binCount);
+  int maskWords = max(1, binCount / 32);
+
+  if (prPhase == 0)
+  {
+    vec4 head[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      head[k] = prFirst != 0 ? vec4(0.0) : prPartial[record + uint(k)];
+    }
+    if (prFirst != 0)
+    {
+      for (int b = 0; b < binCount; ++b)
+      {
+        prPartial[record + 4u + uint(b)] = vec4(0.0);
+      }
+    }
+    for (int c = 0; c < prFactor * prFactor; ++c)
+    {
+      uint texel;
+      if (!prSNDFFindTexel(d * prFactor + ivec2(c % prFactor, c / prFactor), texel) ||
+        !prSNDFInPart(texel))
+      {
+        continue;
+      }
+      uvec2 sums = prSumAddress(texel);
+      vec4 s3 = prSumAt(sums, 3u);
+      if (!(s3.y > 0.0))
+      {
+        continue;
+      }
+      float weight = 1.0 / s3.y;
+      head[0] += weight * prSumAt(sums, 0u);
+      vec4 s1 = prSumAt(sums, 1u);
+      head[1] = vec4(head[1].rgb + weight * s1.rgb, max(head[1].w, s1.w));
+      head[2] += weight * prSumAt(sums, 2u);
+      head[3] += vec4(weight * s3.x, s3.y, 1.0, 0.0);
+      uvec2 bins = prBinWordAddress(texel);
+      for (int m = 0; m < maskWords; ++m)
+      {
+        uint mask = prBinWordAt(bins, binWords + uint(m));
+        while (mask != 0u)
+        {
+          int bit = findLSB(mask);
+          mask &= mask - 1u;
+          uint bin = uint(32 * m + bit);
+          uint w0 = prBinWordAt(bins, 2u * bin);
+          float share = weight * float(w0 & 0xFFFFu);
+          vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, 2u * bin + 1u));
+          prPartial[record + 4u + bin] += vec4(share, share * mean);
+        }
+      }
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      prPartial[record + uint(k)] = head[k];
+    }
+    return;
+  }
+
+  // phase 1: the destination texel, when every child was found
+  vec4 h3 = prPartial[record + 3u];
   int count = prFactor * prFactor;
-  float total = 0.0;
-  for (int c = 0; c < count; ++c)
+  if (int(h3.z + 0.5) < count)
   {
-    uint texel;
-    if (!prSNDFFindTexel(d * prFactor + ivec2(c % prFactor, c / prFactor), texel))
-    {
-      return;
-    }
-    childSums[c] = prSumAddress(texel);
-    float n = prSumAt(childSums[c], 3u).y;
-    if (!(n > 0.0))
-    {
-      return;
-    }
-    children[c] = prBinWordAddress(texel);
-    weight[c] = 1.0 / n;
-    total += n;
+    return;
   }
-  float samples = min(total, prMaxSamples);
+  float samples = min(h3.y, prMaxSamples);
   float scale = samples / float(count);
-
-  vec4 colours = vec4(0.0);
-  vec4 s1 = vec4(0.0);
-  vec4 s2 = vec4(0.0);
-  float ao = 0.0;
-  for (int c = 0; c < count; ++c)
-  {
-    uvec2 t = childSums[c];
-    colours += weight[c] * prSumAt(t, 0u);
-    vec4 v1 = prSumAt(t, 1u);
-    s1.rgb += weight[c] * v1.rgb;
-    s1.w = max(s1.w, v1.w);
-    s2 += weight[c] * prSumAt(t, 2u);
-    ao += weight[c] * prSumAt(t, 3u).x;
-  }
+  uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
   uvec2 destSums = prSumAddress(dest);
-  prSetSumAt(destSums, 0u, scale * colours);
-  prSetSumAt(destSums, 1u, vec4(scale * s1.rgb, s1.w));
-  prSetSumAt(destSums, 2u, scale * s2);
-  prSetSumAt(destSums, 3u, vec4(scale * ao, samples, 0.0, 0.0));
+  vec4 h1 = prPartial[record + 1u];
+  prSetSumAt(destSums, 0u, scale * prPartial[record]);
+  prSetSumAt(destSums, 1u, vec4(scale * h1.rgb, h1.w));
+  prSetSumAt(destSums, 2u, scale * prPartial[record + 2u]);
+  prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
   uvec2 destBins = prBinWordAddress(dest);
-
-  uint binWords = uint(2 * prBins * prBins);
-  int maskWords = max(1, prBins * prBins / 32);
   for (int m = 0; m < maskWords; ++m)
   {
-    uint mask = 0u;
-    for (int c = 0; c < count; ++c)
-    {
-      mask |= prBinWordAt(children[c], binWords + uint(m));
-    }
     uint occupied = 0u;
-    while (mask != 0u)
+    for (int bit = 0; bit < 32 && 32 * m + bit < binCount; ++bit)
     {
-      int bit = findLSB(mask);
-      mask &= mask - 1u;
       uint bin = uint(32 * m + bit);
-      float share = 0.0;
-      vec3 mean = vec3(0.0);
-      for (int c = 0; c < count; ++c)
-      {
-        uint w0 = prBinWordAt(children[c], 2u * bin);
-        float k = weight[c] * float(w0 & 0xFFFFu);
-        share += k;
-        mean += k * prSNDFUnpackMean(w0, prBinWordAt(children[c], 2u * bin + 1u));
-      }
-      uint q = min(uint(scale * share + 0.5), 0xFFFFu);
-      if (q > 0u)
+      vec4 entry = prPartial[record + 4u + bin];
+      uint q = min(uint(scale * entry.x + 0.5), 0xFFFFu);
+      if (entry.x > 0.0 && q > 0u)
       {
         uint w0;
         uint w1;
-        prSNDFPackMean(q, mean / share, w0, w1);
+        prSNDFPackMean(q, entry.yzw / entry.x, w0, w1);
         prSetBinWordAt(destBins, 2u * bin, w0);
         prSetBinWordAt(destBins, 2u * bin + 1u, w1);
         occupied |= 1u << uint(bit);

@@ -32,9 +32,9 @@ const unsigned int PageBinding = 0;
 const unsigned int MinimumBinding = 1;
 const unsigned int TileListBinding = 3;
 const unsigned int SumBinding = 2;
-const int MaximumSumBuffers = 2;
+const int MaximumSumBuffers = 16;
 const unsigned int BinBinding = 4;
-const int MaximumBinBuffers = 12;
+const int MaximumBinBuffers = 64;
 
 // a tile: level, phase of the level's grid (x, y), tile position (x, y)
 using Key = std::array<long long, 5>;
@@ -102,6 +102,9 @@ public:
   std::vector<std::pair<int, int>> ViewPartTiles;
   vtkSmartPointer<vtkOpenGLBufferObject> TileList = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   std::size_t TileListBytes = 0;
+  // the zoom's per-texel records (SNDFDownsample.glsl)
+  vtkSmartPointer<vtkOpenGLBufferObject> Partial = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  std::size_t PartialBytes = 0;
 
   // uploads `values` into `buffer` (grown as needed) for binding 2
   static void Upload(vtkOpenGLBufferObject* buffer, std::size_t& capacity, const std::vector<int>& values)
@@ -179,25 +182,6 @@ public:
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
   }
 
-  // The pool's buffers and their layout uniforms for `program` (in use); unused bindings get
-  // the first buffer (never read).
-  void BindPool(vtkParticleComputeProgram* program)
-  {
-    program->SetUniformi("prWordsPerPixel", this->WordsPerTexel);
-    program->SetUniformui("prSlotsPerBinBuffer", static_cast<unsigned int>(this->SlotsPerBinBuffer));
-    program->SetUniformui("prSlotsPerSumBuffer", static_cast<unsigned int>(this->SlotsPerSumBuffer));
-    for (int b = 0; b < this->BinBufferCount; ++b)
-    {
-      vtkParticleComputeProgram::BindStorage(BinBinding + b,
-        this->BinBuffers[b < static_cast<int>(this->BinBuffers.size()) ? b : 0]);
-    }
-    for (int b = 0; b < this->SumBufferCount; ++b)
-    {
-      vtkParticleComputeProgram::BindStorage(SumBinding + b,
-        this->SumBuffers[b < static_cast<int>(this->SumBuffers.size()) ? b : 0]);
-    }
-  }
-
   // The buffers of part (bin buffer, sum buffer) for a one-part shader (in use).
   void BindPart(vtkParticleComputeProgram* program, const std::pair<int, int>& part)
   {
@@ -226,20 +210,16 @@ public:
     return parts;
   }
 
-  // The storage declarations and accessors of SNDFTiles.glsl. One part (the per-frame shaders):
-  // one bin buffer and one sum buffer bound, prBinPart and prSumPart say which; a dispatch per
-  // part of the view (GetNumberOfViewParts()) and prSNDFInPart() tells a texel of the part. All
-  // parts (the zoom's averaging, which reads tiles anywhere): BinBufferCount and SumBufferCount
-  // buffers bound, addressed through a switch.
-  std::string StorageCode(bool allParts) const
+  // The storage declarations and accessors of SNDFTiles.glsl: one part of the pool bound (one
+  // bin buffer and one sum buffer), prBinPart and prSumPart say which; prSNDFInPart() tells a
+  // texel of the part.
+  std::string StorageCode() const
   {
     std::string code = "layout(std430, binding = " + std::to_string(PageBinding) +
       ") readonly buffer prPageBuffer\n{\n  int prPageTable[];\n};\n"
       "uniform int prWordsPerPixel;\nuniform uint prSlotsPerBinBuffer;\n"
       "uniform uint prSlotsPerSumBuffer;\n";
-    if (!allParts)
-    {
-      code += "uniform uint prBinPart;\nuniform uint prSumPart;\n"
+    code += "uniform uint prBinPart;\nuniform uint prSumPart;\n"
               "layout(std430, binding = " + std::to_string(SumBinding) +
         ") buffer prSumBuffer0\n{\n  vec4 prSums0[];\n};\n"
         "layout(std430, binding = " + std::to_string(BinBinding) +
@@ -255,54 +235,6 @@ public:
         "vec4 prSumAt(uvec2 a, uint k)\n{\n  return prSums0[a.y + k];\n}\n"
         "void prSetSumAt(uvec2 a, uint k, vec4 value)\n{\n  prSums0[a.y + k] = value;\n}\n"
         "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n";
-      return code;
-    }
-    code += "bool prSNDFInPart(uint texel)\n{\n  return true;\n}\n";
-    auto declare = [&](const char* type, const char* name, unsigned int binding, int count) {
-      for (int b = 0; b < count; ++b)
-      {
-        code += "layout(std430, binding = " + std::to_string(binding + b) + ") buffer " + name +
-          "Buffer" + std::to_string(b) + "\n{\n  " + type + " " + name + std::to_string(b) +
-          "[];\n};\n";
-      }
-    };
-    declare("vec4", "prSums", SumBinding, this->SumBufferCount);
-    declare("uint", "prBins", BinBinding, this->BinBufferCount);
-    // per array family: the address of a texel (its tile's buffer, its first element there),
-    // reading and writing element k at an address, and both by texel
-    auto access = [&](const char* type, const char* family, const char* name, const char* per,
-                    const char* stride, int count) {
-      const std::string f = family;
-      code += "uvec2 pr" + f + "Address(uint texel)\n{\n  uint b = min((texel >> 12u) / " + per +
-        ", " + std::to_string(count - 1) + "u);\n  return uvec2(b, (texel - b * " + per +
-        " * 4096u) * " + stride + ");\n}\n";
-      code += std::string(type) + " pr" + f + "At(uvec2 a, uint k)\n{\n  uint i = a.y + k;\n"
-        "  switch (a.x)\n  {\n";
-      for (int b = 0; b < count; ++b)
-      {
-        code += "    " + std::string(b + 1 < count ? "case " + std::to_string(b) + "u" : "default") +
-          ": return " + name + std::to_string(b) + "[i];\n";
-      }
-      code += "  }\n}\n";
-      code += "void prSet" + f + "At(uvec2 a, uint k, " + type + " value)\n{\n  uint i = a.y + k;\n"
-        "  switch (a.x)\n  {\n";
-      for (int b = 0; b < count; ++b)
-      {
-        code += "    " + std::string(b + 1 < count ? "case " + std::to_string(b) + "u" : "default") +
-          ": " + name + std::to_string(b) + "[i] = value; break;\n";
-      }
-      code += "  }\n}\n";
-    };
-    access("vec4", "Sum", "prSums", "prSlotsPerSumBuffer", "4u", this->SumBufferCount);
-    access("uint", "BinWord", "prBins", "prSlotsPerBinBuffer", "uint(prWordsPerPixel)",
-      this->BinBufferCount);
-    code += "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n"
-            "void prSetSum(uint texel, uint k, vec4 value)\n{\n"
-            "  prSetSumAt(prSumAddress(texel), k, value);\n}\n"
-            "uint prBinWord(uint texel, uint k)\n{\n"
-            "  return prBinWordAt(prBinWordAddress(texel), k);\n}\n"
-            "void prSetBinWord(uint texel, uint k, uint value)\n{\n"
-            "  prSetBinWordAt(prBinWordAddress(texel), k, value);\n}\n";
     return code;
   }
 
@@ -391,16 +323,13 @@ void vtkSNDFTileCache::QueryLimits(vtkOpenGLRenderWindow* context)
   }
   internals.Context = context;
   GLint64 blockSize = 0;
-  GLint blocks = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockSize);
-  glGetIntegerv(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, &blocks);
-  // (at least the GL 4.3 minima: 2^27 bytes, 8 blocks; and int-addressable)
+  // (at least the GL 4.3 minimum, 2^27 bytes, and int-addressable). A dispatch binds one bin
+  // buffer and one sum buffer, 5 storage blocks in all (GL 4.3 guarantees 8).
   internals.BlockBytes = static_cast<double>(std::min<GLint64>(
     std::max<GLint64>(blockSize, GLint64(1) << 27), (GLint64(1) << 31) - 1));
-  blocks = std::max(blocks, 8);
   internals.SumBufferCount = MaximumSumBuffers;
-  internals.BinBufferCount =
-    std::min(MaximumBinBuffers, blocks - static_cast<int>(BinBinding));
+  internals.BinBufferCount = MaximumBinBuffers;
 }
 
 //------------------------------------------------------------------------------
@@ -421,14 +350,14 @@ double vtkSNDFTileCache::GetBlockBytes() const
 }
 
 //------------------------------------------------------------------------------
-std::string vtkSNDFTileCache::GetShaderSource(const std::string& name, bool allParts)
+std::string vtkSNDFTileCache::GetShaderSource(const std::string& name)
 {
   std::string source = vtkParticleShaders::Get(name);
   const std::string tag = "//PR::SNDFStorage";
   const std::size_t at = source.find(tag);
   if (at != std::string::npos)
   {
-    source.replace(at, tag.size(), this->Internals->StorageCode(allParts));
+    source.replace(at, tag.size(), this->Internals->StorageCode());
   }
   return source;
 }
@@ -489,7 +418,7 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   }
   if (!internals.Downsample->IsBuilt())
   {
-    internals.Downsample->SetSource(this->GetShaderSource("SNDFDownsample", true));
+    internals.Downsample->SetSource(this->GetShaderSource("SNDFDownsample"));
     internals.Rebake->SetSource(this->GetShaderSource("SNDFRebake"));
     internals.MinSamples->SetSource(this->GetShaderSource("SNDFMinSamples"));
     if (!internals.Downsample->Build(context) || !internals.Rebake->Build(context) ||
@@ -649,17 +578,38 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
           }
         }
         rebake();
+        // phase 0 once per part that holds children (into per-texel records), phase 1 into the
+        // destination (SNDFDownsample.glsl)
+        const std::size_t partialBytes = TileTexels * (4 + this->Bins * this->Bins) * 16;
+        if (internals.PartialBytes < partialBytes)
+        {
+          vtkParticleComputeProgram::AllocateStorage(internals.Partial, partialBytes);
+          internals.PartialBytes = partialBytes;
+        }
         vtkParticleComputeProgram* program = internals.Downsample;
         program->Use();
         program->SetUniformi("prDestSlot", slot);
         program->SetUniformi("prFactor", 1 << down);
         program->SetUniformi("prBins", this->Bins);
-        internals.BindPool(program);
         program->SetUniformf("prMaxSamples", MaxDownsampledSamples);
         program->SetUniform2i("prTexelOffset", children.TexelOffset[0], children.TexelOffset[1]);
         program->SetUniformi("prTilesX", children.TilesX);
         vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, children.Slots);
         vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
+        vtkParticleComputeProgram::BindStorage(MinimumBinding, internals.Partial);
+        program->SetUniformi("prPhase", 0);
+        int first = 1;
+        for (const auto& part : internals.PartsOf(children.Slots))
+        {
+          internals.BindPart(program, part);
+          program->SetUniformi("prFirst", first);
+          program->Dispatch(TileSize / 16, TileSize / 16);
+          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+          first = 0;
+        }
+        program->SetUniformi("prPhase", 1);
+        internals.BindPart(program,
+          std::make_pair(slot / internals.SlotsPerBinBuffer, slot / internals.SlotsPerSumBuffer));
         program->Dispatch(TileSize / 16, TileSize / 16);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         vtkParticleComputeProgram::UseNone();
@@ -784,7 +734,8 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   internals.Rebake->ReleaseGraphicsResources(w);
   internals.MinSamples->ReleaseGraphicsResources(w);
   const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
-  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum, &internals.TileList })
+  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum, &internals.TileList,
+         &internals.Partial })
   {
     vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
   }
@@ -800,6 +751,7 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   internals.SumBufferCount = 0;
   internals.PageBytes = 0;
   internals.TileListBytes = 0;
+  internals.PartialBytes = 0;
   internals.ScratchBytes = 0;
   internals.Slots.clear();
   internals.Table.clear();

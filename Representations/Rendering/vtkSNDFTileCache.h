@@ -31,9 +31,8 @@
  * on llvmpipe: 63 tiles of 8 x 8 bins, 512 tiles of sums), so that no shader addresses beyond a
  * block. A (bin buffer, sum buffer) pair is a part of the pool; the per-frame shaders
  * (accumulation, shade, sample count, rebake) bind one part and run one dispatch per part over
- * the list of the view's tiles in it, one invocation per texel; only the zoom's averaging, which
- * reads tiles anywhere, binds every buffer (up to 12 bin and 2 sum buffers) and picks one per
- * access.
+ * the list of the view's tiles in it, one invocation per texel; the zoom's averaging gathers a
+ * tile's children part by part into per-texel records, then writes the tile from them.
  *
  * Levels are placed by the integer position of their grid on the virtual plane in units of 1/256
  * of a level-0 texel; the phase of a level's grid (its origin modulo its texel size) is part of a
@@ -87,8 +86,7 @@ public:
    * The most tiles a pool can hold in the current `context` with `bins` x `bins` bins: the bins
    * and the sums are split over shader-storage buffers of whole tiles, each within the
    * context's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (GetBlockBytes(); at most 2^31 - 1 bytes), up to
-   * 12 buffers of bins (fewer where GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS is below 16) and 2 of
-   * sums. llvmpipe: 128 MB blocks, 756 tiles with 8 x 8 bins.
+   * 64 buffers of bins and 16 of sums. llvmpipe: 128 MB blocks, 4032 tiles of 8 x 8 bins.
    */
   int GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins);
   double GetBlockBytes() const;
@@ -96,11 +94,10 @@ public:
   /**
    * The GLSL source `name` of Shaders/ with the pool's storage declarations and accessors
    * (the //PR::SNDFStorage tag of SNDFTiles.glsl) for the context of the last
-   * GetMaximumSlots() or Allocate(). The per-frame shaders see one part of the pool per
-   * dispatch (one bin buffer and one sum buffer, no branch per access: BindViewPart());
-   * with allParts every buffer is bound and addressed through a switch.
+   * GetMaximumSlots() or Allocate(). The shaders see one part of the pool per dispatch (one
+   * bin buffer and one sum buffer, no branch per access: BindViewPart()).
    */
-  std::string GetShaderSource(const std::string& name, bool allParts = false);
+  std::string GetShaderSource(const std::string& name);
 
   /**
    * (Re)allocate a pool of `slots` tiles for `bins` x `bins` bins, dropping every tile. False
