@@ -481,6 +481,40 @@ check(cache.GetNumberOfTiles() > per_buffer and excess < 0.5,
       "tiles over several storage buffers: no tile further from the 4x4 core than the plain "
       "image's (by %.2f /255 at most)" % excess)
 
+# a zoom out whose finer tiles lie in two storage buffers (the averaging gathers them part by
+# part): against level 1 rendered directly
+def big_parallel(sndf, scale):
+    renderer, window, _ = scene(xyz, rgb, (BW, BH), sndf)
+    renderer.GetActiveCamera().ParallelProjectionOn()
+    renderer.GetActiveCamera().SetParallelScale(scale)
+    renderer.ResetCameraClippingRange()
+    return renderer, window
+
+
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(64)
+sndf.SetTargetSamples(64)
+renderer, window = big_parallel(sndf, 6.0)
+image(window, BW, BH)
+converge(sndf, window)
+renderer.GetActiveCamera().SetParallelScale(12.0)
+zoomed_big = image(window, BW, BH)
+direct = pr.vtkSNDFRenderPass()
+direct.SetSamplesPerFrame(64)
+direct.SetTargetSamples(64)
+_, direct_window = big_parallel(direct, 12.0)
+image(direct_window, BW, BH)
+converge(direct, direct_window)
+middle = (slice(BH // 4 + 1, 3 * BH // 4 - 1), slice(BW // 4 + 1, 3 * BW // 4 - 1))
+big_zoom = error(zoomed_big[middle], image(direct_window, BW, BH)[middle])
+cache = sndf.GetTileCache()
+print("640x480 zoom out, %d tiles in the cache (%d per buffer), %d of them averaged: mean %.2f "
+      "p99 %.1f max %.1f /255 from level 1 rendered directly (64 samples each)"
+      % ((cache.GetNumberOfTiles(), per_buffer, cache.GetNumberOfDownsampledTiles()) + big_zoom))
+check(cache.GetNumberOfTiles() - cache.GetNumberOfDownsampledTiles() > per_buffer
+      and cache.GetNumberOfDownsampledTiles() > 0 and big_zoom[0] < 1.0 and big_zoom[1] < 8.0,
+      "zoom out across storage buffers: within mean 1, p99 8 /255 of level 1 rendered directly")
+
 # --- an error target stops refinement early: the estimate against the true distance to the
 # 256-sample picture
 for target in (2.0, 0.5):
