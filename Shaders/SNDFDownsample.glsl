@@ -14,13 +14,12 @@
 // the nearest of the children. A texel with a child that is not in the cache
 // or holds no sample stays empty (the pass samples it).
 //
-// Each dispatch reads one part of the pool (one bin and one sum buffer,
-// SNDFTiles.glsl) and writes the destination through its part's
-// prSetDest*At(). prPhase 2: the children all lie in one part, one pass.
-// Otherwise two phases: prPhase 0, once per part that holds children, adds
-// the children in that part to a per-texel record in prPartial (prFirst: the
-// first such dispatch starts the records from zero); prPhase 1 writes the
-// texels from the records. A record: [0] the children's weighted colour sums,
+// Two phases, so that each dispatch binds one part of the pool (one bin and
+// one sum buffer, SNDFTiles.glsl): prPhase 0, once per part that holds
+// children, adds the children in that part to a per-texel record in
+// prPartial (prFirst: the first such dispatch starts the records from
+// zero); prPhase 1, with the destination's part bound, writes the texels
+// from the records. A record: [0] the children's weighted colour sums,
 // [1] (weighted D-sums, nearest 1 - depth), [2] weighted (S-sums, Nc),
 // [3] (weighted AO sum, sum N, children found, 0), then per bin (weighted
 // count, weighted count * mean colour).
@@ -46,91 +45,6 @@ layout(std430, binding = 1) buffer prPartialBuffer
   vec4 prPartial[];
 };
 
-// prPhase 2: every child in the part bound, the texel in registers
-void prSinglePass(ivec2 d, uint binWords, int maskWords)
-{
-  int count = prFactor * prFactor;
-  uvec2 children[16];
-  uvec2 childSums[16];
-  float weight[16];
-  float total = 0.0;
-  for (int c = 0; c < count; ++c)
-  {
-    uint texel;
-    if (!prSNDFFindTexel(d * prFactor + ivec2(c % prFactor, c / prFactor), texel))
-    {
-      return;
-    }
-    childSums[c] = prSumAddress(texel);
-    float n = prSumAt(childSums[c], 3u).y;
-    if (!(n > 0.0))
-    {
-      return;
-    }
-    children[c] = prBinWordAddress(texel);
-    weight[c] = 1.0 / n;
-    total += n;
-  }
-  float samples = min(total, prMaxSamples);
-  float scale = samples / float(count);
-  vec4 colours = vec4(0.0);
-  vec4 s1 = vec4(0.0);
-  vec4 s2 = vec4(0.0);
-  float ao = 0.0;
-  for (int c = 0; c < count; ++c)
-  {
-    uvec2 t = childSums[c];
-    colours += weight[c] * prSumAt(t, 0u);
-    vec4 v1 = prSumAt(t, 1u);
-    s1.rgb += weight[c] * v1.rgb;
-    s1.w = max(s1.w, v1.w);
-    s2 += weight[c] * prSumAt(t, 2u);
-    ao += weight[c] * prSumAt(t, 3u).x;
-  }
-  uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
-  uint destSums = prDestSumAddress(dest);
-  prSetDestSumAt(destSums, 0u, scale * colours);
-  prSetDestSumAt(destSums, 1u, vec4(scale * s1.rgb, s1.w));
-  prSetDestSumAt(destSums, 2u, scale * s2);
-  prSetDestSumAt(destSums, 3u, vec4(scale * ao, samples, 0.0, 0.0));
-  uint destBins = prDestBinWordAddress(dest);
-  for (int m = 0; m < maskWords; ++m)
-  {
-    uint mask = 0u;
-    for (int c = 0; c < count; ++c)
-    {
-      mask |= prBinWordAt(children[c], binWords + uint(m));
-    }
-    uint occupied = 0u;
-    while (mask != 0u)
-    {
-      int bit = findLSB(mask);
-      mask &= mask - 1u;
-      uint bin = uint(32 * m + bit);
-      float share = 0.0;
-      vec3 mean = vec3(0.0);
-      for (int c = 0; c < count; ++c)
-      {
-        uint w0 = prBinWordAt(children[c], 2u * bin);
-        float k = weight[c] * float(w0 & 0xFFFFu);
-        share += k;
-        mean += k * prSNDFUnpackMean(w0, prBinWordAt(children[c], 2u * bin + 1u));
-      }
-      uint q = min(uint(scale * share + 0.5), 0xFFFFu);
-      if (q > 0u)
-      {
-        uint w0;
-        uint w1;
-        prSNDFPackMean(q, mean / share, w0, w1);
-        prSetDestBinWordAt(destBins, 2u * bin, w0);
-        prSetDestBinWordAt(destBins, 2u * bin + 1u, w1);
-        occupied |= 1u << uint(bit);
-      }
-    }
-    prSetDestBinWordAt(destBins, binWords + uint(m), occupied);
-  }
-}
-
 void main()
 {
   ivec2 d = ivec2(gl_GlobalInvocationID.xy);
@@ -138,11 +52,6 @@ void main()
   uint record = uint((d.y * prTileSize + d.x) * (4 + binCount));
   uint binWords = uint(2 * binCount);
   int maskWords = max(1, binCount / 32);
-  if (prPhase == 2)
-  {
-    prSinglePass(d, binWords, maskWords);
-    return;
-  }
 
   if (prPhase == 0)
   {
@@ -211,13 +120,13 @@ void main()
   float samples = min(h3.y, prMaxSamples);
   float scale = samples / float(count);
   uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
-  uint destSums = prDestSumAddress(dest);
+  uvec2 destSums = prSumAddress(dest);
   vec4 h1 = prPartial[record + 1u];
-  prSetDestSumAt(destSums, 0u, scale * prPartial[record]);
-  prSetDestSumAt(destSums, 1u, vec4(scale * h1.rgb, h1.w));
-  prSetDestSumAt(destSums, 2u, scale * prPartial[record + 2u]);
-  prSetDestSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
-  uint destBins = prDestBinWordAddress(dest);
+  prSetSumAt(destSums, 0u, scale * prPartial[record]);
+  prSetSumAt(destSums, 1u, vec4(scale * h1.rgb, h1.w));
+  prSetSumAt(destSums, 2u, scale * prPartial[record + 2u]);
+  prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
+  uvec2 destBins = prBinWordAddress(dest);
   for (int m = 0; m < maskWords; ++m)
   {
     uint occupied = 0u;
@@ -231,11 +140,11 @@ void main()
         uint w0;
         uint w1;
         prSNDFPackMean(q, entry.yzw / entry.x, w0, w1);
-        prSetDestBinWordAt(destBins, 2u * bin, w0);
-        prSetDestBinWordAt(destBins, 2u * bin + 1u, w1);
+        prSetBinWordAt(destBins, 2u * bin, w0);
+        prSetBinWordAt(destBins, 2u * bin + 1u, w1);
         occupied |= 1u << uint(bit);
       }
     }
-    prSetDestBinWordAt(destBins, binWords + uint(m), occupied);
+    prSetBinWordAt(destBins, binWords + uint(m), occupied);
   }
 }

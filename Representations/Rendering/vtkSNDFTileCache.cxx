@@ -34,8 +34,6 @@ const unsigned int TileListBinding = 3;
 const unsigned int SumBinding = 2;
 const int MaximumSumBuffers = 16;
 const unsigned int BinBinding = 4;
-const unsigned int DestSumBinding = 5;
-const unsigned int DestBinBinding = 6;
 const int MaximumBinBuffers = 64;
 
 // a tile: level, phase of the level's grid (x, y), tile position (x, y)
@@ -236,19 +234,7 @@ public:
         "void prSetBinWordAt(uvec2 a, uint k, uint value)\n{\n  prBins0[a.y + k] = value;\n}\n"
         "vec4 prSumAt(uvec2 a, uint k)\n{\n  return prSums0[a.y + k];\n}\n"
         "void prSetSumAt(uvec2 a, uint k, vec4 value)\n{\n  prSums0[a.y + k] = value;\n}\n"
-        "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n"
-        // a second part to write to (the zoom's averaging: the destination tile's part)
-        "uniform uint prDestBinPart;\nuniform uint prDestSumPart;\n"
-        "layout(std430, binding = " + std::to_string(DestSumBinding) +
-        ") writeonly buffer prSumBuffer1\n{\n  vec4 prSums1[];\n};\n"
-        "layout(std430, binding = " + std::to_string(DestBinBinding) +
-        ") writeonly buffer prBinBuffer1\n{\n  uint prBins1[];\n};\n"
-        "uint prDestBinWordAddress(uint texel)\n{\n"
-        "  return (texel - prDestBinPart * prSlotsPerBinBuffer * 4096u) * uint(prWordsPerPixel);\n}\n"
-        "uint prDestSumAddress(uint texel)\n{\n"
-        "  return (texel - prDestSumPart * prSlotsPerSumBuffer * 4096u) * 4u;\n}\n"
-        "void prSetDestBinWordAt(uint a, uint k, uint value)\n{\n  prBins1[a + k] = value;\n}\n"
-        "void prSetDestSumAt(uint a, uint k, vec4 value)\n{\n  prSums1[a + k] = value;\n}\n";
+        "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n";
     return code;
   }
 
@@ -611,33 +597,19 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, children.Slots);
         vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
         vtkParticleComputeProgram::BindStorage(MinimumBinding, internals.Partial);
-        const int destBins = slot / internals.SlotsPerBinBuffer;
-        const int destSums = slot / internals.SlotsPerSumBuffer;
-        program->SetUniformui("prDestBinPart", static_cast<unsigned int>(destBins));
-        program->SetUniformui("prDestSumPart", static_cast<unsigned int>(destSums));
-        vtkParticleComputeProgram::BindStorage(DestBinBinding, internals.BinBuffers[destBins]);
-        vtkParticleComputeProgram::BindStorage(DestSumBinding, internals.SumBuffers[destSums]);
-        const auto parts = internals.PartsOf(children.Slots);
-        if (parts.size() == 1)
+        program->SetUniformi("prPhase", 0);
+        int first = 1;
+        for (const auto& part : internals.PartsOf(children.Slots))
         {
-          // the children in one part: one pass, in registers
-          internals.BindPart(program, parts[0]);
-          program->SetUniformi("prPhase", 2);
+          internals.BindPart(program, part);
+          program->SetUniformi("prFirst", first);
+          program->Dispatch(TileSize / 16, TileSize / 16);
+          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+          first = 0;
         }
-        else
-        {
-          program->SetUniformi("prPhase", 0);
-          int first = 1;
-          for (const auto& part : parts)
-          {
-            internals.BindPart(program, part);
-            program->SetUniformi("prFirst", first);
-            program->Dispatch(TileSize / 16, TileSize / 16);
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-            first = 0;
-          }
-          program->SetUniformi("prPhase", 1);
-        }
+        program->SetUniformi("prPhase", 1);
+        internals.BindPart(program,
+          std::make_pair(slot / internals.SlotsPerBinBuffer, slot / internals.SlotsPerSumBuffer));
         program->Dispatch(TileSize / 16, TileSize / 16);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         vtkParticleComputeProgram::UseNone();
