@@ -67,7 +67,7 @@ void main()
   {
     return;
   }
-  uvec2 sums = prSumAddress(texel);
+  uint sums = prSumAddress(texel);
   vec4 s3 = prSumAt(sums, 3u);
   if (s3.y >= prTarget)
   {
@@ -81,7 +81,7 @@ void main()
     float ao = clamp(normal.z - 2.0, 0.0, 1.0);
     vec3 diffuse = clamp(prFinite(vec4(ao * texelFetch(prDiffuse, p, 0).rgb, 0.0)).rgb, 0.0, 2.0);
     uint bin = prSNDFBin(normal.xy, prBins);
-    uvec2 bins = prBinWordAddress(texel);
+    uint bins = prBinWordAddress(texel);
     uint w0 = prBinWordAt(bins, 2u * bin);
     uint w1 = prBinWordAt(bins, 2u * bin + 1u);
     uint count = (w0 & 0xFFFFu) + 1u;

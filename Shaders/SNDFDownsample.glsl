@@ -75,7 +75,7 @@ void main()
       {
         continue;
       }
-      uvec2 sums = prSumAddress(texel);
+      uint sums = prSumAddress(texel);
       vec4 s3 = prSumAt(sums, 3u);
       if (!(s3.y > 0.0))
       {
@@ -87,7 +87,7 @@ void main()
       head[1] = vec4(head[1].rgb + weight * s1.rgb, max(head[1].w, s1.w));
       head[2] += weight * prSumAt(sums, 2u);
       head[3] += vec4(weight * s3.x, s3.y, 1.0, 0.0);
-      uvec2 bins = prBinWordAddress(texel);
+      uint bins = prBinWordAddress(texel);
       for (int m = 0; m < maskWords; ++m)
       {
         uint mask = prBinWordAt(bins, binWords + uint(m));
@@ -120,13 +120,13 @@ void main()
   float samples = min(h3.y, prMaxSamples);
   float scale = samples / float(count);
   uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
-  uvec2 destSums = prSumAddress(dest);
+  uint destSums = prSumAddress(dest);
   vec4 h1 = prPartial[record + 1u];
   prSetSumAt(destSums, 0u, scale * prPartial[record]);
   prSetSumAt(destSums, 1u, vec4(scale * h1.rgb, h1.w));
   prSetSumAt(destSums, 2u, scale * prPartial[record + 2u]);
   prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
-  uvec2 destBins = prBinWordAddress(dest);
+  uint destBins = prBinWordAddress(dest);
   for (int m = 0; m < maskWords; ++m)
   {
     uint occupied = 0u;

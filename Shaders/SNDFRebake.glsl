@@ -27,7 +27,7 @@ void main()
   {
     return; // (another part's dispatch rebakes it)
   }
-  uvec2 sums = prSumAddress(texel);
+  uint sums = prSumAddress(texel);
   vec4 s2 = prSumAt(sums, 2u);
   if (s2.a <= 0.0)
   {
@@ -35,7 +35,7 @@ void main()
   }
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
-  uvec2 words = prBinWordAddress(texel);
+  uint words = prBinWordAddress(texel);
   uint masks = uint(2 * prBins * prBins);
   int maskWords = max(1, prBins * prBins / 32);
   for (int m = 0; m < maskWords; ++m)

@@ -19,9 +19,9 @@ const uint prTileTexels = 4096u;
 // (binding 0), the bins split over PR_SNDF_BIN_BUFFERS buffers (bindings 4, 5, ...) and the
 // sums over PR_SNDF_SUM_BUFFERS (bindings 2, 3), each within GL_MAX_SHADER_STORAGE_BLOCK_SIZE,
 // a whole number of tiles per buffer; with the accessors
-//   uvec2 prBinWordAddress(uint texel), uvec2 prSumAddress(uint texel)   (once per texel)
-//   uint prBinWordAt(uvec2 address, uint word), void prSetBinWordAt(address, word, uint value)
-//   vec4 prSumAt(uvec2 address, uint k), void prSetSumAt(address, k, vec4 value)
+//   uint prBinWordAddress(uint texel), uint prSumAddress(uint texel)   (once per texel)
+//   uint prBinWordAt(uint address, uint word), void prSetBinWordAt(address, word, uint value)
+//   vec4 prSumAt(uint address, uint k), void prSetSumAt(address, k, vec4 value)
 //   prBinWord(texel, word), prSetBinWord, prSum(texel, k), prSetSum   (by texel)
 // (word < prWordsPerPixel, k < 4; see SNDFAccumulate.glsl for what they hold).
 //PR::SNDFStorage

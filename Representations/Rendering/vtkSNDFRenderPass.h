@@ -70,9 +70,9 @@
  *   (ceil(H / 64) + 1) tiles (273 at 1280 x 720: 652 MB with 8 x 8 bins). Where MaximumMemory
  *   does not hold the view's tiles the pass uses fewer bins, and renders the plain delegate when
  *   even 4 x 4 do not fit, with a warning each time ("cache too small": never a wrong tile).
- *   The cache is one shader-storage buffer for the bins and one for the sums; a driver's
- *   GL_MAX_SHADER_STORAGE_BLOCK_SIZE below their size (llvmpipe reports 128 MB and addresses the
- *   whole buffer) is not checked.
+ *   The cache is split into shader-storage buffers of whole tiles within the context's
+ *   GL_MAX_SHADER_STORAGE_BLOCK_SIZE (llvmpipe: 128 MB, 63 tiles of 8 x 8 bins per buffer; at
+ *   most 64 buffers), see vtkSNDFTileCache.
  *
  * S-MIP (paper Sec. 6, vtkSNDFTileCache). The S-NDFs are texels of a virtual image plane parallel
  * to the screen, fixed at the restart: level 0 has the restart view's pixels as texels, level L

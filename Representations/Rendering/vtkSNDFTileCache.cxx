@@ -226,14 +226,14 @@ public:
         ") buffer prBinBuffer0\n{\n  uint prBins0[];\n};\n"
         "bool prSNDFInPart(uint texel)\n{\n  uint slot = texel >> 12u;\n"
         "  return slot / prSlotsPerBinBuffer == prBinPart && slot / prSlotsPerSumBuffer == prSumPart;\n}\n"
-        "uvec2 prBinWordAddress(uint texel)\n{\n"
-        "  return uvec2(0u, (texel - prBinPart * prSlotsPerBinBuffer * 4096u) * uint(prWordsPerPixel));\n}\n"
-        "uvec2 prSumAddress(uint texel)\n{\n"
-        "  return uvec2(0u, (texel - prSumPart * prSlotsPerSumBuffer * 4096u) * 4u);\n}\n"
-        "uint prBinWordAt(uvec2 a, uint k)\n{\n  return prBins0[a.y + k];\n}\n"
-        "void prSetBinWordAt(uvec2 a, uint k, uint value)\n{\n  prBins0[a.y + k] = value;\n}\n"
-        "vec4 prSumAt(uvec2 a, uint k)\n{\n  return prSums0[a.y + k];\n}\n"
-        "void prSetSumAt(uvec2 a, uint k, vec4 value)\n{\n  prSums0[a.y + k] = value;\n}\n"
+        "uint prBinWordAddress(uint texel)\n{\n"
+        "  return (texel - prBinPart * prSlotsPerBinBuffer * 4096u) * uint(prWordsPerPixel);\n}\n"
+        "uint prSumAddress(uint texel)\n{\n"
+        "  return (texel - prSumPart * prSlotsPerSumBuffer * 4096u) * 4u;\n}\n"
+        "uint prBinWordAt(uint a, uint k)\n{\n  return prBins0[a + k];\n}\n"
+        "void prSetBinWordAt(uint a, uint k, uint value)\n{\n  prBins0[a + k] = value;\n}\n"
+        "vec4 prSumAt(uint a, uint k)\n{\n  return prSums0[a + k];\n}\n"
+        "void prSetSumAt(uint a, uint k, vec4 value)\n{\n  prSums0[a + k] = value;\n}\n"
         "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n";
     return code;
   }
