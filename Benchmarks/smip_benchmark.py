@@ -32,7 +32,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import crystal_view, fcc_crystal, window_pixels
+from prVTKTesting import crystal_view, fcc_crystal, pan_camera, window_pixels
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkLight
@@ -86,11 +86,7 @@ def make_view(scene, sndf):
 
 
 def pan(camera, right, up):
-    pixel = 2.0 * camera.GetParallelScale() / height
-    m = camera.GetViewTransformMatrix()
-    move = [pixel * (right * m.GetElement(0, a) + up * m.GetElement(1, a)) for a in range(3)]
-    camera.SetPosition(*[p + d for p, d in zip(camera.GetPosition(), move)])
-    camera.SetFocalPoint(*[f + d for f, d in zip(camera.GetFocalPoint(), move)])
+    pan_camera(camera, right, up, height)
 
 
 def converge(sndf, window):
@@ -127,7 +123,6 @@ def measure(name, scene):
     passes = sndf.GetNumberOfSamplePasses()
     zoom = timed(window)
     averaged = cache.GetNumberOfDownsampledTiles() - averaged
-    print("zoom: passes", sndf.GetNumberOfSamplePasses() - passes, "N", sndf.GetNumberOfSamples(), "averaged", averaged, "cleared", cache.GetNumberOfClearedTiles(), "tiles", cache.GetNumberOfTiles(), "slots", cache.GetNumberOfSlots(), "zooms", sndf.GetNumberOfZooms(), "restarts", sndf.GetNumberOfRestarts())
     assert sndf.GetNumberOfSamplePasses() == passes and sndf.GetConverged(), "the zoom sampled"
     zoomed = window_pixels(window, width, height)
     tiles, slots, memory = cache.GetNumberOfTiles(), cache.GetNumberOfSlots(), cache.GetBytes() / 2**20

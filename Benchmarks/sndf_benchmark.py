@@ -26,7 +26,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import crystal_view, fcc_crystal
+from prVTKTesting import crystal_view, fcc_crystal, pan_camera
 from vtkmodules.vtkRenderingCore import vtkLight
 
 cells, width, height, samples = (int(a) for a in (sys.argv[1:5] + ["40", "1280", "720", "64"][len(sys.argv[1:5]):]))
@@ -105,11 +105,7 @@ timed(window)
 while not sndf.GetConverged():
     timed(window)
 sndf.SetSamplesPerFrame(1)
-pixel = 2.0 * camera.GetParallelScale() / height
-m = camera.GetViewTransformMatrix()
-move = [10 * pixel * m.GetElement(0, a) for a in range(3)]
-camera.SetPosition(*[p + d for p, d in zip(camera.GetPosition(), move)])
-camera.SetFocalPoint(*[f + d for f, d in zip(camera.GetFocalPoint(), move)])
+pan_camera(camera, 10, 0, height)
 pan = timed(window)
 assert sndf.GetNumberOfPans() == 1
 camera.Azimuth(1)

@@ -23,10 +23,6 @@ void main()
 {
   uvec2 local = gl_GlobalInvocationID.xy;
   uint texel = uint(prPageTable[gl_WorkGroupID.z]) * prTileTexels + local.y * 64u + local.x;
-  if (!prSNDFInPart(texel))
-  {
-    return; // (another part's dispatch rebakes it)
-  }
   uint sums = prSumAddress(texel);
   vec4 s2 = prSumAt(sums, 2u);
   if (s2.a <= 0.0)

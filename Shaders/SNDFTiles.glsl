@@ -22,7 +22,8 @@ const uint prTileTexels = 4096u;
 //   uint prBinWordAddress(uint texel), uint prSumAddress(uint texel)   (once per texel)
 //   uint prBinWordAt(uint address, uint word), void prSetBinWordAt(address, word, uint value)
 //   vec4 prSumAt(uint address, uint k), void prSetSumAt(address, k, vec4 value)
-//   prBinWord(texel, word), prSetBinWord, prSum(texel, k), prSetSum   (by texel)
+//   vec4 prSum(uint texel, uint k)   (by texel)
+//   bool prSNDFInPart(uint texel)    (the texel lies in the bound part)
 // (word < prWordsPerPixel, k < 4; see SNDFAccumulate.glsl for what they hold).
 //PR::SNDFStorage
 

@@ -1088,7 +1088,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
         internals.Difference->Build(context);
       }
       std::vector<unsigned int> totals(1024, 0u);
-      vtkParticleComputeProgram::AllocateStorage(internals.Totals, totals.size() * 4);
+      if (!internals.Totals->GetHandle())
+      {
+        vtkParticleComputeProgram::AllocateStorage(internals.Totals, totals.size() * 4);
+      }
       vtkParticleComputeProgram::UploadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
       vtkParticleComputeProgram* difference = internals.Difference;
       difference->Use();

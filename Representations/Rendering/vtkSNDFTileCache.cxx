@@ -75,9 +75,7 @@ public:
   std::vector<vtkSmartPointer<vtkOpenGLBufferObject>> SumBuffers;
   int SlotsPerBinBuffer = 1;
   int SlotsPerSumBuffer = 1;
-  // the buffers the shaders declare (from the context's limits), and the block size limit
-  int BinBufferCount = 0;
-  int SumBufferCount = 0;
+  // the context's block size limit (0: not queried)
   double BlockBytes = 0.0;
   // the page table of the view (binding 2); a scratch table for downsampling and rebaking
   vtkSmartPointer<vtkOpenGLBufferObject> Page = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -93,6 +91,11 @@ public:
   std::map<Key, int> Table;
   long long Stamp = 0;
   int WordsPerTexel = 0;
+  // the last MapView() (Mapped: its page table stands)
+  bool Mapped = false;
+  vtkSNDFTileCache::Placement MappedView;
+  int MappedSize[2] = { 0, 0 };
+  long long MappedVersion = 0;
   // the last mapped view: its tile rectangle, the window's offset into it, the pool's parts
   // (bin buffer, sum buffer) its tiles lie in
   int TilesX = 0;
@@ -313,7 +316,7 @@ int vtkSNDFTileCache::GetNumberOfTiles() const
 void vtkSNDFTileCache::QueryLimits(vtkOpenGLRenderWindow* context)
 {
   vtkInternals& internals = *this->Internals;
-  if (internals.Context == context && internals.BinBufferCount > 0)
+  if (internals.Context == context && internals.BlockBytes > 0.0)
   {
     return;
   }
@@ -328,8 +331,6 @@ void vtkSNDFTileCache::QueryLimits(vtkOpenGLRenderWindow* context)
   // buffer and one sum buffer, 5 storage blocks in all (GL 4.3 guarantees 8).
   internals.BlockBytes = static_cast<double>(std::min<GLint64>(
     std::max<GLint64>(blockSize, GLint64(1) << 27), (GLint64(1) << 31) - 1));
-  internals.SumBufferCount = MaximumSumBuffers;
-  internals.BinBufferCount = MaximumBinBuffers;
 }
 
 //------------------------------------------------------------------------------
@@ -339,8 +340,8 @@ int vtkSNDFTileCache::GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins)
   const vtkInternals& internals = *this->Internals;
   const double binTile = static_cast<double>(TileTexels) * 4.0 * GetWordsPerTexel(bins);
   const double sumTile = static_cast<double>(TileTexels) * SumBytesPerTexel;
-  return static_cast<int>(std::min(internals.BinBufferCount * std::floor(internals.BlockBytes / binTile),
-    internals.SumBufferCount * std::floor(internals.BlockBytes / sumTile)));
+  return static_cast<int>(std::min(MaximumBinBuffers * std::floor(internals.BlockBytes / binTile),
+    MaximumSumBuffers * std::floor(internals.BlockBytes / sumTile)));
 }
 
 //------------------------------------------------------------------------------
@@ -375,8 +376,7 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   internals.SlotsPerSumBuffer = std::max(1, static_cast<int>(internals.BlockBytes / sumTile));
   const int binBuffers = (slots + internals.SlotsPerBinBuffer - 1) / internals.SlotsPerBinBuffer;
   const int sumBuffers = (slots + internals.SlotsPerSumBuffer - 1) / internals.SlotsPerSumBuffer;
-  bool ok = slots > 0 && binBuffers <= internals.BinBufferCount &&
-    sumBuffers <= internals.SumBufferCount &&
+  bool ok = slots > 0 && binBuffers <= MaximumBinBuffers && sumBuffers <= MaximumSumBuffers &&
     vtkParticleComputeProgram::AllocateStorage(internals.Minimum, 4);
   auto allocate = [&](std::vector<vtkSmartPointer<vtkOpenGLBufferObject>>& buffers, int count,
                     int per, std::size_t tileBytes) {
@@ -444,6 +444,7 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
 void vtkSNDFTileCache::Clear()
 {
   vtkInternals& internals = *this->Internals;
+  internals.Mapped = false;
   internals.Table.clear();
   for (Slot& slot : internals.Slots)
   {
@@ -453,16 +454,17 @@ void vtkSNDFTileCache::Clear()
 
 //------------------------------------------------------------------------------
 bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
-  vtkTextureObject* table, long long tableVersion, int* cleared)
+  vtkTextureObject* table, long long tableVersion)
 {
   vtkInternals& internals = *this->Internals;
-  if (cleared)
-  {
-    *cleared = 0;
-  }
   if (this->NumberOfSlots < 1 || width < 1 || height < 1)
   {
     return false;
+  }
+  if (internals.Mapped && internals.MappedView == view && internals.MappedSize[0] == width &&
+    internals.MappedSize[1] == height && internals.MappedVersion == tableVersion)
+  {
+    return true; // the page table, the tile lists and the tiles' shading stand
   }
   const long long tx0 = FloorDiv(view.Origin[0], TileSize);
   const long long ty0 = FloorDiv(view.Origin[1], TileSize);
@@ -619,15 +621,16 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
       if (!averaged)
       {
         ++this->NumberOfClearedTiles;
-        if (cleared)
-        {
-          ++*cleared;
-        }
       }
     }
   }
   rebake();
   vtkInternals::Upload(internals.Page, internals.PageBytes, page);
+  internals.Mapped = true;
+  internals.MappedView = view;
+  internals.MappedSize[0] = width;
+  internals.MappedSize[1] = height;
+  internals.MappedVersion = tableVersion;
   internals.TilesX = tilesX;
   internals.ViewParts = internals.PartsOf(page);
   // the view's tiles part by part (tile-list dispatches)
@@ -747,12 +750,12 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
     }
     family->clear();
   }
-  internals.BinBufferCount = 0;
-  internals.SumBufferCount = 0;
+  internals.BlockBytes = 0.0;
   internals.PageBytes = 0;
   internals.TileListBytes = 0;
   internals.PartialBytes = 0;
   internals.ScratchBytes = 0;
+  internals.Mapped = false;
   internals.Slots.clear();
   internals.Table.clear();
   this->NumberOfSlots = 0;

@@ -142,11 +142,11 @@ public:
    * Make every tile of a width x height view placed at `view` resident (see the class comment)
    * and load its page table for BindView(). `table` and `tableVersion` are the lighting table
    * and its build number (tiles shaded with another one are rebaked). False when the pool holds
-   * fewer slots than the view has tiles. *cleared counts the tiles that came empty (neither
-   * found nor averaged from a finer level).
+   * fewer slots than the view has tiles. A call for the view, size and table version of the
+   * last one does nothing (nothing but MapView() changes the tiles' residency).
    */
   bool MapView(const Placement& view, int width, int height, vtkTextureObject* table,
-    long long tableVersion, int* cleared = nullptr);
+    long long tableVersion);
 
   /**
    * How many tiles of a view the cache has, or could average from a finer level (no GPU work).

@@ -37,6 +37,7 @@ import sys
 import numpy as np
 
 import particlerendering as pr
+import prVTKTesting
 from prVTKTesting import Messages, check, crystal_view, fcc_crystal, finish, window_pixels
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkOutlineSource
@@ -274,21 +275,20 @@ def parallel_view(sndf):
 
 
 def pan_camera(camera, pixels_right, pixels_up):
-    """Move position and focal point in the view plane by whole pixels of a view H high."""
-    pixel = 2.0 * camera.GetParallelScale() / H
-    m = camera.GetViewTransformMatrix()
-    right = np.array([m.GetElement(0, a) for a in range(3)])
-    up = np.array([m.GetElement(1, a) for a in range(3)])
-    move = pixel * (pixels_right * right + pixels_up * up)
-    camera.SetPosition(*(np.array(camera.GetPosition()) + move))
-    camera.SetFocalPoint(*(np.array(camera.GetFocalPoint()) + move))
+    prVTKTesting.pan_camera(camera, pixels_right, pixels_up, H)
 
 
-sndf = pr.vtkSNDFRenderPass()
-sndf.SetSamplesPerFrame(64)
-renderer, window = parallel_view(sndf)
-image(window)
-converge(sndf, window)
+def converged_parallel_view(samples_per_frame=64):
+    """A new S-NDF pass in parallel_view(), converged; returns (sndf, renderer, window)."""
+    sndf = pr.vtkSNDFRenderPass()
+    sndf.SetSamplesPerFrame(samples_per_frame)
+    renderer, window = parallel_view(sndf)
+    image(window)
+    converge(sndf, window)
+    return sndf, renderer, window
+
+
+sndf, renderer, window = converged_parallel_view()
 before = image(window)
 restarts = sndf.GetNumberOfRestarts()
 pan_camera(renderer.GetActiveCamera(), 7, -5)
@@ -347,11 +347,7 @@ renderer.GetActiveCamera().Azimuth(-1)
 
 # zoom out by one level: the level-1 tiles are averaged from level 0 (2x2), no sample is taken
 # where level 0 was sampled; compared with rendering level 1 directly
-sndf = pr.vtkSNDFRenderPass()
-sndf.SetSamplesPerFrame(64)
-renderer, window = parallel_view(sndf)
-image(window)
-converge(sndf, window)
+sndf, renderer, window = converged_parallel_view()
 level0 = image(window)
 cache = sndf.GetTileCache()
 restarts = sndf.GetNumberOfRestarts()
@@ -385,11 +381,7 @@ check(np.array_equal(image(window), level0) and sndf.GetNumberOfSamplePasses() =
       "zoom back in: the level-0 tiles from the cache, no sample")
 
 # re-light while tiles are out of view: they are rebaked when they come back, never stale
-sndf = pr.vtkSNDFRenderPass()
-sndf.SetSamplesPerFrame(64)
-renderer, window = parallel_view(sndf)
-image(window)
-converge(sndf, window)
+sndf, renderer, window = converged_parallel_view()
 # (a pan by 150 pixels leaves the crystal out of the view: no tile of the first view is seen)
 pan_camera(renderer.GetActiveCamera(), 150, 0)
 image(window)

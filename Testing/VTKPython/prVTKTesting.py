@@ -190,3 +190,16 @@ def fcc_crystal(cells, fraction=0.3, seed=1):
     species = np.random.default_rng(seed).random(len(xyz)) < fraction
     rgb = np.where(species[:, None], [220, 60, 40], [90, 140, 230]).astype(np.uint8)
     return xyz, rgb
+
+
+def pan_camera(camera, pixels_right, pixels_up, height):
+    """Move position and focal point of a parallel-projection camera together in the view
+    plane by whole (or fractional) pixels of a view `height` pixels high."""
+    import numpy as np
+    pixel = 2.0 * camera.GetParallelScale() / height
+    m = camera.GetViewTransformMatrix()
+    right = np.array([m.GetElement(0, a) for a in range(3)])
+    up = np.array([m.GetElement(1, a) for a in range(3)])
+    move = pixel * (pixels_right * right + pixels_up * up)
+    camera.SetPosition(*(np.array(camera.GetPosition()) + move))
+    camera.SetFocalPoint(*(np.array(camera.GetFocalPoint()) + move))
