@@ -11,6 +11,7 @@
 #include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkParticlePassChain.h"
+#include "vtkPointAOPass.h"
 #include "vtkProcessModule.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -33,6 +34,7 @@ vtkParticleRenderView::vtkParticleRenderView()
   // through a stand-in algorithm registered here.
   this->SetDensityVolumeAOPass(vtkSmartPointer<vtkDensityVolumeAOPass>::New());
   this->SetVoxelConeAOPass(vtkSmartPointer<vtkVoxelConeAOPass>::New());
+  this->SetPointAOPass(vtkSmartPointer<vtkPointAOPass>::New());
   this->SetSNDFRenderPass(vtkSmartPointer<vtkSNDFRenderPass>::New());
   vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
   vtkPVSession* session =
@@ -78,6 +80,8 @@ vtkImageProcessingPass* vtkParticleRenderView::GetAmbientOcclusionPass(int metho
       return this->DensityVolumeAOPass;
     case VOXEL_CONE_TRACING:
       return this->VoxelConeAOPass;
+    case POINT_AO:
+      return this->PointAOPass;
     default:
       return nullptr;
   }
@@ -86,10 +90,10 @@ vtkImageProcessingPass* vtkParticleRenderView::GetAmbientOcclusionPass(int metho
 //------------------------------------------------------------------------------
 void vtkParticleRenderView::SetAmbientOcclusion(int method)
 {
-  if (method < NO_AMBIENT_OCCLUSION || method > VOXEL_CONE_TRACING)
+  if (method < NO_AMBIENT_OCCLUSION || method > POINT_AO)
   {
     vtkErrorMacro(<< "Unknown ambient-occlusion method " << method
-                  << " (0 none, 1 density volume, 2 voxel cone tracing).");
+                  << " (0 none, 1 density volume, 2 voxel cone tracing, 3 PointAO).");
     return;
   }
   if (method == this->AmbientOcclusion)
@@ -182,6 +186,22 @@ void vtkParticleRenderView::SetVoxelConeAOPass(vtkVoxelConeAOPass* pass)
 vtkVoxelConeAOPass* vtkParticleRenderView::GetVoxelConeAOPass()
 {
   return this->VoxelConeAOPass;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::SetPointAOPass(vtkPointAOPass* pass)
+{
+  if (!pass || pass == this->PointAOPass)
+  {
+    return;
+  }
+  this->ReplaceAmbientOcclusionPass(this->PointAOPass, pass, POINT_AO);
+}
+
+//------------------------------------------------------------------------------
+vtkPointAOPass* vtkParticleRenderView::GetPointAOPass()
+{
+  return this->PointAOPass;
 }
 
 //------------------------------------------------------------------------------

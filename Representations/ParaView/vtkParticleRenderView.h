@@ -64,6 +64,7 @@ class vtkAlgorithm;
 class vtkImageProcessingPass;
 class vtkDensityVolumeAOPass;
 class vtkParticlePassChain;
+class vtkPointAOPass;
 class vtkSNDFRenderPass;
 class vtkVoxelConeAOPass;
 
@@ -95,13 +96,14 @@ public:
   {
     NO_AMBIENT_OCCLUSION = 0,
     DENSITY_VOLUME = 1, // vtkDensityVolumeAOPass (Grottel et al. 2012)
-    VOXEL_CONE_TRACING = 2 // vtkVoxelConeAOPass (Staib et al. 2015)
+    VOXEL_CONE_TRACING = 2, // vtkVoxelConeAOPass (Staib et al. 2015)
+    POINT_AO = 3 // vtkPointAOPass (Eichelbaum et al. 2013), screen space
   };
 
   ///@{
   /**
-   * The view's one ambient-occlusion choice: NO_AMBIENT_OCCLUSION (default), DENSITY_VOLUME or
-   * VOXEL_CONE_TRACING. It puts that pass into the chain and takes the other out, so that two
+   * The view's one ambient-occlusion choice: NO_AMBIENT_OCCLUSION (default), DENSITY_VOLUME,
+   * VOXEL_CONE_TRACING or POINT_AO. It puts that pass into the chain and takes the other out, so that two
    * techniques are never on at once. The passes' own settings are not forwarded by the view: in
    * ParaView each pass is a proxy of its own (group particle_passes) whose VTK object the view
    * receives through Set...AOPass (a SubProxy command), and whose properties the view exposes --
@@ -129,6 +131,8 @@ public:
   vtkDensityVolumeAOPass* GetDensityVolumeAOPass();
   void SetVoxelConeAOPass(vtkVoxelConeAOPass* pass);
   vtkVoxelConeAOPass* GetVoxelConeAOPass();
+  void SetPointAOPass(vtkPointAOPass* pass);
+  vtkPointAOPass* GetPointAOPass();
   ///@}
 
   ///@{
@@ -189,6 +193,7 @@ protected:
   vtkNew<vtkParticlePassChain> ParticlePassChain;
   vtkSmartPointer<vtkDensityVolumeAOPass> DensityVolumeAOPass;
   vtkSmartPointer<vtkVoxelConeAOPass> VoxelConeAOPass;
+  vtkSmartPointer<vtkPointAOPass> PointAOPass;
   int AmbientOcclusion = NO_AMBIENT_OCCLUSION;
   vtkSmartPointer<vtkSNDFRenderPass> SNDFRenderPass;
   int ScaleConsistentShading = 0;

@@ -23,6 +23,8 @@
 #include "vtkPropCollection.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleShaderHooks.h"
+#include "vtkParticleStageTimer.h"
+#include "vtkPointAOPass.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkProperty.h"
@@ -158,52 +160,8 @@ public:
   std::set<std::string> Warned;
   std::string ProgressText;
 
-  // timer queries of the last Render() per stage (sample, accumulate, shade)
-  std::vector<GLuint> Queries[3];
-  double Seconds[3] = { 0.0, 0.0, 0.0 };
-  bool TimesRead = true;
-
-  void BeginStage(bool on, int stage)
-  {
-    if (on)
-    {
-      GLuint query = 0;
-      glGenQueries(1, &query);
-      glBeginQuery(GL_TIME_ELAPSED, query);
-      this->Queries[stage].push_back(query);
-    }
-  }
-  void EndStage(bool on)
-  {
-    if (on)
-    {
-      glEndQuery(GL_TIME_ELAPSED);
-    }
-  }
-  void ReadTimes()
-  {
-    if (this->TimesRead)
-    {
-      return;
-    }
-    for (int stage = 0; stage < 3; ++stage)
-    {
-      GLuint64 total = 0;
-      for (GLuint query : this->Queries[stage])
-      {
-        GLuint64 ns = 0;
-        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-        total += ns;
-      }
-      if (!this->Queries[stage].empty())
-      {
-        glDeleteQueries(static_cast<GLsizei>(this->Queries[stage].size()), this->Queries[stage].data());
-      }
-      this->Queries[stage].clear();
-      this->Seconds[stage] = 1e-9 * static_cast<double>(total);
-    }
-    this->TimesRead = true;
-  }
+  // GPU times of the last timed Render() per stage (sample, accumulate, shade)
+  vtkParticleStageTimer Timer{ 3 };
 
   // The lower-left corner of a width x height parallel view in the coordinates of the frame's
   // rotation (right, up) and the distance of its focal point along the view: VTK's orthographic
@@ -403,22 +361,19 @@ const char* vtkSNDFRenderPass::GetProgressText()
 //------------------------------------------------------------------------------
 double vtkSNDFRenderPass::GetLastSampleSeconds()
 {
-  this->Internals->ReadTimes();
-  return this->Internals->Seconds[0];
+  return this->Internals->Timer.Seconds(0);
 }
 
 //------------------------------------------------------------------------------
 double vtkSNDFRenderPass::GetLastAccumulateSeconds()
 {
-  this->Internals->ReadTimes();
-  return this->Internals->Seconds[1];
+  return this->Internals->Timer.Seconds(1);
 }
 
 //------------------------------------------------------------------------------
 double vtkSNDFRenderPass::GetLastShadeSeconds()
 {
-  this->Internals->ReadTimes();
-  return this->Internals->Seconds[2];
+  return this->Internals->Timer.Seconds(2);
 }
 
 //------------------------------------------------------------------------------
@@ -571,6 +526,18 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     renderPlain();
     return;
   }
+  // a screen-space AO pass inside: it darkens the composited pixels after the scene, where the
+  // samples cannot take it (they need the occlusion per fragment, as the object-space passes give)
+  for (vtkRenderPass* inner = this->DelegatePass; inner && unsupported.empty();)
+  {
+    if (vtkPointAOPass::SafeDownCast(inner))
+    {
+      unsupported = "vtkPointAOPass is in the pass chain (S-NDF samples take ambient occlusion "
+                    "per fragment: the density-volume or voxel-cone pass)";
+    }
+    auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
+    inner = wrapping ? wrapping->GetDelegatePass() : nullptr;
+  }
   bool drawn = false; // a particle actor in the view
   for (int i = 0; i < s->GetPropArrayCount() && !drawn; ++i)
   {
@@ -717,11 +684,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Context = context;
   }
   const bool timing = this->CollectTimings;
-  if (timing)
-  {
-    internals.ReadTimes(); // (deletes the queries of an unread frame)
-    internals.TimesRead = false;
-  }
+  internals.Timer.StartFrame(timing);
 
   // the same frame (a pan or zoom by levels of the S-MIP keeps the samples), or a restart
   vtkSNDFTileCache::Placement placement;
@@ -854,7 +817,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // the renderer's light geometry (lights that follow the camera), uniforms and complexity are
   // brought up to date by its lights pass, which
   // does not run when nothing is sampled
-  internals.BeginStage(timing, 2);
+  internals.Timer.Begin(2);
   internals.Lights->Render(s);
   std::vector<double> tableKey = { static_cast<double>(ren->GetLightingComplexity()),
     static_cast<double>(ren->GetLightingCount()), material->GetSpecularPower(),
@@ -951,7 +914,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     vtkOpenGLQuadHelper* quad = internals.TableQuad.get();
     if (!quad->Program)
     {
-      internals.EndStage(timing);
+      internals.Timer.End();
       vtkErrorMacro(<< "The S-NDF lighting table shader did not build.");
       renderPlain();
       return;
@@ -1004,7 +967,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   if (!internals.Cache->MapView(placement, width, height, internals.Table,
         static_cast<long long>(this->NumberOfTableBuilds)))
   {
-    internals.EndStage(timing);
+    internals.Timer.End();
     vtkErrorMacro(<< "The S-MIP cache does not hold the view's tiles.");
     renderPlain();
     return;
@@ -1026,7 +989,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
   internals.Placement = placement;
   internals.Placed = true;
-  internals.EndStage(timing);
+  internals.Timer.End();
 
   // the shade: each pixel from its S-NDF, when samples, table or specular colour changed
   double specular[3];
@@ -1140,7 +1103,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     JitterOffset(internals.Sequence++, offset);
     camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / width, centre[1] + 2.0 * offset[1] / height);
 
-    internals.BeginStage(timing, 0);
+    internals.Timer.Begin(0);
     ostate->PushFramebufferBindings();
     internals.Target->Bind();
     internals.Target->ActivateDrawBuffers(NumberOfAttachments);
@@ -1164,12 +1127,12 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     }
     ostate->PopFramebufferBindings();
-    internals.EndStage(timing);
+    internals.Timer.End();
     camera->SetWindowCenter(centre[0], centre[1]);
     ++this->NumberOfSamplePasses;
 
     // into the S-NDFs
-    internals.BeginStage(timing, 1);
+    internals.Timer.Begin(1);
     vtkParticleComputeProgram* accumulate = internals.Accumulate;
     accumulate->Use();
     const char* samplers[NumberOfAttachments] = { "prColour", "prNormal", "prDiffuse" };
@@ -1198,7 +1161,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Depth->Deactivate();
     internals.Table->Deactivate();
     vtkParticleComputeProgram::UseNone();
-    internals.EndStage(timing);
+    internals.Timer.End();
     ++this->NumberOfSamples;
     checkError();
     if (reporting)
@@ -1213,7 +1176,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
 
   // shade when samples, table or specular colour changed
-  internals.BeginStage(timing, 2);
+  internals.Timer.Begin(2);
   resolveNow();
 
   // the composite: colour and depth into the render state's target, over the whole viewport
@@ -1247,7 +1210,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Image->Deactivate();
     internals.ImageDepth->Deactivate();
   }
-  internals.EndStage(timing);
+  internals.Timer.End();
 }
 
 //------------------------------------------------------------------------------

@@ -118,7 +118,8 @@
  * Unsupported scenes fall back to the delegate's plain image with one warning: translucent
  * actors (particles or other geometry: what lies behind them would have to be attenuated),
  * props that are not actors (volumes, images, 2D actors), vtkMetaballMapper (it draws through
- * its own targets), contexts without OpenGL 4.3 compute shaders. vtkTransparentSphereMapper
+ * its own targets), contexts without OpenGL 4.3 compute shaders, a vtkPointAOPass inside this pass
+ * (screen-space occlusion darkens the composited image; the samples need it per fragment). vtkTransparentSphereMapper
  * (ParaView's Particles representation) is sampled while all its particles are opaque: it then
  * draws them through the core's opaque path. The background, plain or gradient, is sampled with the particles. Without particle
  * props the pass renders the delegate directly.

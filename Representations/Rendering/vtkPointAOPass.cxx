@@ -1,0 +1,541 @@
+#include "vtkPointAOPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleShaders.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkParticleStageTimer.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+vtkStandardNewMacro(vtkPointAOPass);
+
+namespace
+{
+// the tag the pass puts after VTK's lighting (PreReplaceShaderValues) and fills in
+// PostReplaceShaderValues: the G-buffer's normal
+const char* const NormalTag = "//PR::PointAO::Normal";
+
+// The mean world radius of the spheres of one particle prop: at most 65536 radii read, evenly
+// spaced (finite, positive ones), times the mapper's radius scale and the actor's scale.
+// Returns false when the prop has no usable radius.
+bool MeanRadius(vtkActor* actor, vtkParticleSphereMapper* mapper, double& mean, double& count)
+{
+  vtkPolyData* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  if (n <= 0)
+  {
+    return false;
+  }
+  double radius = mapper->GetRadius();
+  const char* name = mapper->GetRadiusArrayName();
+  vtkDataArray* radii = (name && *name) ? input->GetPointData()->GetArray(name) : nullptr;
+  if (radii && radii->GetNumberOfComponents() == 1 && radii->GetNumberOfTuples() == n)
+  {
+    const vtkIdType step = std::max<vtkIdType>(1, n / 65536);
+    double sum = 0.0;
+    vtkIdType used = 0;
+    for (vtkIdType i = 0; i < n; i += step)
+    {
+      const double r = radii->GetComponent(i, 0);
+      if (std::isfinite(r) && r > 0.0)
+      {
+        sum += r;
+        ++used;
+      }
+    }
+    if (used == 0)
+    {
+      return false;
+    }
+    radius = sum / static_cast<double>(used);
+  }
+  radius *= mapper->GetRadiusScaleVC(actor);
+  if (!(radius > 0.0) || !std::isfinite(radius))
+  {
+    return false;
+  }
+  mean = radius;
+  count = static_cast<double>(n);
+  return true;
+}
+}
+
+class vtkPointAOPass::vtkInternals
+{
+public:
+  vtkOpenGLRenderWindow* Context = nullptr;
+  int Width = 0;
+  int Height = 0;
+  vtkNew<vtkOpenGLFramebufferObject> GBuffer;
+  vtkNew<vtkTextureObject> Colour;
+  vtkNew<vtkTextureObject> Normal;
+  vtkNew<vtkTextureObject> Depth;
+  vtkNew<vtkOpenGLFramebufferObject> Work;
+  vtkNew<vtkTextureObject> Occlusion;
+  vtkNew<vtkTextureObject> Blurred;
+  std::unique_ptr<vtkOpenGLQuadHelper> OcclusionQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> BlurQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  // GPU times: G-buffer, occlusion, blur, composite
+  vtkParticleStageTimer Timer{ 4 };
+
+  void ReleaseTextures(vtkWindow* w)
+  {
+    for (vtkTextureObject* t :
+      { this->Colour.Get(), this->Normal.Get(), this->Depth.Get(), this->Occlusion.Get(),
+        this->Blurred.Get() })
+    {
+      t->ReleaseGraphicsResources(w);
+    }
+    this->GBuffer->ReleaseGraphicsResources(w);
+    this->Work->ReleaseGraphicsResources(w);
+    this->Width = 0;
+    this->Height = 0;
+  }
+
+  // the textures and framebuffers for a width x height viewport
+  void Allocate(vtkOpenGLRenderWindow* context, int width, int height)
+  {
+    if (width == this->Width && height == this->Height && this->Colour->GetHandle())
+    {
+      return;
+    }
+    this->ReleaseTextures(context);
+    auto setUp = [&](vtkTextureObject* t) {
+      t->SetContext(context);
+      t->SetMinificationFilter(vtkTextureObject::Nearest);
+      t->SetMagnificationFilter(vtkTextureObject::Nearest);
+      t->SetWrapS(vtkTextureObject::ClampToEdge);
+      t->SetWrapT(vtkTextureObject::ClampToEdge);
+    };
+    setUp(this->Colour);
+    this->Colour->SetInternalFormat(GL_RGBA8);
+    this->Colour->SetFormat(GL_RGBA);
+    this->Colour->SetDataType(GL_UNSIGNED_BYTE);
+    this->Colour->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+    setUp(this->Normal);
+    this->Normal->SetInternalFormat(GL_RGBA32F);
+    this->Normal->SetFormat(GL_RGBA);
+    this->Normal->SetDataType(GL_FLOAT);
+    this->Normal->Allocate2D(width, height, 4, VTK_FLOAT);
+    setUp(this->Depth);
+    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    for (vtkTextureObject* t : { this->Occlusion.Get(), this->Blurred.Get() })
+    {
+      setUp(t);
+      t->SetInternalFormat(GL_R16F);
+      t->SetFormat(GL_RED);
+      t->SetDataType(GL_FLOAT);
+      t->Allocate2D(width, height, 1, VTK_FLOAT);
+    }
+    this->GBuffer->SetContext(context);
+    context->GetState()->PushFramebufferBindings();
+    this->GBuffer->Bind();
+    this->GBuffer->AddColorAttachment(0, this->Colour);
+    this->GBuffer->AddColorAttachment(1, this->Normal);
+    this->GBuffer->AddDepthAttachment(this->Depth);
+    context->GetState()->PopFramebufferBindings();
+    this->Work->SetContext(context);
+    this->Width = width;
+    this->Height = height;
+  }
+
+  vtkOpenGLQuadHelper* Quad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& decl,
+    const std::string& impl)
+  {
+    if (!quad)
+    {
+      std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", decl);
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", impl);
+      quad.reset(new vtkOpenGLQuadHelper(this->Context, nullptr, fs.c_str(), nullptr));
+    }
+    else if (quad->Program)
+    {
+      this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    return (quad->Program && quad->Program->GetCompiled()) ? quad.get() : nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkPointAOPass::vtkPointAOPass()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkPointAOPass::~vtkPointAOPass()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+double vtkPointAOPass::GetStageSeconds(int stage)
+{
+  return this->Internals->Timer.Seconds(stage);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPointAOPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  // after VTK's lighting the normal (unit, facing the viewer) and the position are in scope in
+  // VTK's polygonal shaders and in the particle templates (vtkParticleShaderHooks)
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      std::string("//VTK::Light::Impl\n  ") + NormalTag + "\n", false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPointAOPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (fragmentShader.find(NormalTag) == std::string::npos)
+  {
+    return true;
+  }
+  // a normal where the shader has one, with 2 + the sphere's radius for particles (2 marks a
+  // normal: the delegate's clear leaves values in [0, 1]; the radius tells the occlusion which
+  // surface is the pixel's own sphere); geometry without normals (unlit lines and points) gets
+  // the depth buffer's
+  const bool hasNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos &&
+    fragmentShader.find("vertexVC") != std::string::npos;
+  std::string code = "gl_FragData[1] = vec4(0.0, 0.0, 0.0, 0.0);";
+  if (vtkParticleSphereMapper::SafeDownCast(mapper) && hasNormal)
+  {
+    code = "gl_FragData[1] = vec4(normalVCVSOutput, 2.0 + radiusVC);";
+  }
+  else if (hasNormal)
+  {
+    code = "gl_FragData[1] = vec4(normalVCVSOutput, 2.0);";
+  }
+  vtkShaderProgram::Substitute(fragmentShader, NormalTag, code, false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPointAOPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  vtkInternals& internals = *this->Internals;
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass: nothing is rendered.");
+    return;
+  }
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkOpenGLRenderWindow* context =
+    ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
+  int width = 0;
+  int height = 0;
+  int x0 = 0;
+  int y0 = 0;
+  if (ren)
+  {
+    ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  }
+  if (!context || width < 1 || height < 1)
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+  if (internals.Context != context)
+  {
+    if (internals.Context)
+    {
+      this->ReleaseGraphicsResources(internals.Context);
+    }
+    internals.Context = context;
+  }
+  vtkOpenGLState* ostate = context->GetState();
+  internals.Timer.StartFrame(this->CollectTimings);
+  internals.Allocate(context, width, height);
+
+  // the radius: set, or four mean particle radii, or 2 % of the visible props' diagonal
+  double radius = this->Radius;
+  if (!(radius > 0.0))
+  {
+    double sum = 0.0;
+    double count = 0.0;
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+      auto* mapper = actor ? vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+      double mean = 0.0;
+      double n = 0.0;
+      if (mapper && actor->GetVisibility() && MeanRadius(actor, mapper, mean, n))
+      {
+        sum += mean * n;
+        count += n;
+      }
+    }
+    if (count > 0.0)
+    {
+      radius = 4.0 * sum / count;
+    }
+    else
+    {
+      double bounds[6];
+      ren->ComputeVisiblePropBounds(bounds);
+      double diagonal = 0.0;
+      if (vtkMath::AreBoundsInitialized(bounds))
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          diagonal += (bounds[2 * a + 1] - bounds[2 * a]) * (bounds[2 * a + 1] - bounds[2 * a]);
+        }
+        diagonal = std::sqrt(diagonal);
+      }
+      radius = 0.02 * diagonal;
+    }
+  }
+  this->EffectiveRadius = (std::isfinite(radius) && radius > 0.0) ? radius : 0.0;
+
+  // 1. the scene into the G-buffer: colour, normal, depth
+  internals.Timer.Begin(0);
+  ostate->PushFramebufferBindings();
+  internals.GBuffer->Bind();
+  internals.GBuffer->ActivateDrawBuffers(2);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ren->Clear();
+    const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    glClearBufferfv(GL_COLOR, 1, zero);
+    vtkRenderState state(ren);
+    state.SetFrameBuffer(internals.GBuffer);
+    state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    this->PreRender(&state);
+    this->DelegatePass->Render(&state);
+    this->PostRender(&state);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  }
+  ostate->PopFramebufferBindings();
+  internals.Timer.End();
+
+  // the camera's matrices (view -> clip) in the G-buffer's aspect
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(
+    camera->GetProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0));
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(projection, inverse);
+  // GLSL matrices are column-major: upload the transposes
+  float proj[16];
+  float inv[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      proj[c * 4 + r] = static_cast<float>(projection->GetElement(r, c));
+      inv[c * 4 + r] = static_cast<float>(inverse->GetElement(r, c));
+    }
+  }
+  double range[2];
+  camera->GetClippingRange(range);
+  const bool occlude = this->EffectiveRadius > 0.0 && this->Strength > 0.0;
+
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+
+  // 2. the occlusion
+  vtkTextureObject* occlusion = internals.Occlusion;
+  if (occlude)
+  {
+    internals.Timer.Begin(1);
+    vtkOpenGLQuadHelper* quad = internals.Quad(internals.OcclusionQuad,
+      vtkParticleShaders::Get("PointAO"),
+      "gl_FragData[0] = vec4(prPointAO(ivec2(texCoord * prSize)), 0.0, 0.0, 1.0);\n");
+    if (!quad)
+    {
+      vtkErrorMacro(<< "Could not build the PointAO shader: the image is drawn without it.");
+    }
+    ostate->PushFramebufferBindings();
+    internals.Work->Bind();
+    internals.Work->AddColorAttachment(0, internals.Occlusion);
+    internals.Work->ActivateDrawBuffers(1);
+    {
+      vtkOpenGLState::ScopedglViewport viewport(ostate);
+      ostate->vtkglViewport(0, 0, width, height);
+      ostate->vtkglDisable(GL_DEPTH_TEST);
+      if (quad)
+      {
+        vtkShaderProgram* program = quad->Program;
+        internals.Depth->Activate();
+        internals.Normal->Activate();
+        program->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
+        program->SetUniformi("prNormal", internals.Normal->GetTextureUnit());
+        program->SetUniformMatrix4x4("prProjection", proj);
+        program->SetUniformMatrix4x4("prInverseProjection", inv);
+        const float size[2] = { static_cast<float>(width), static_cast<float>(height) };
+        program->SetUniform2f("prSize", size);
+        program->SetUniformi("prLevels", this->NumberOfLevels);
+        program->SetUniformi("prSamples", this->SamplesPerLevel);
+        program->SetUniformf("prRadius", static_cast<float>(this->EffectiveRadius));
+        program->SetUniformf("prBaseRadius", static_cast<float>(this->BaseRadius));
+        program->SetUniformi("prDepthScaling", this->DepthScaling ? 1 : 0);
+        program->SetUniformf(
+          "prThickness", static_cast<float>(this->Thickness * this->EffectiveRadius));
+        program->SetUniformf("prHidden", static_cast<float>(this->HiddenFraction));
+        const float clip[2] = { static_cast<float>(range[0]), static_cast<float>(range[1]) };
+        program->SetUniform2f("prClipRange", clip);
+        quad->Render();
+        internals.Depth->Deactivate();
+        internals.Normal->Deactivate();
+      }
+      else
+      {
+        const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+        glClearBufferfv(GL_COLOR, 0, zero);
+      }
+    }
+    internals.Timer.End();
+
+    // 3. the depth-aware blur, horizontal into Blurred, vertical back into Occlusion
+    vtkOpenGLQuadHelper* blurQuad = this->Blur
+      ? internals.Quad(internals.BlurQuad, vtkParticleShaders::Get("PointAOBlur"),
+          "gl_FragData[0] = vec4(prBlurOcclusion(ivec2(texCoord * vec2(textureSize(prOcclusion, 0)))), 0.0, 0.0, 1.0);\n")
+      : nullptr;
+    if (quad && blurQuad)
+    {
+      internals.Timer.Begin(2);
+      vtkOpenGLState::ScopedglViewport viewport(ostate);
+      ostate->vtkglViewport(0, 0, width, height);
+      vtkShaderProgram* program = blurQuad->Program;
+      internals.Depth->Activate();
+      program->SetUniformi("prBlurDepth", internals.Depth->GetTextureUnit());
+      program->SetUniformMatrix4x4("prBlurInverseProjection", inv);
+      // depth tolerance: half the innermost hemisphere's radius
+      const double L = this->NumberOfLevels;
+      const double r0 = this->BaseRadius;
+      program->SetUniformf("prDepthTolerance",
+        static_cast<float>(0.5 * this->EffectiveRadius * (1.0 + r0) / (L * L + L * r0)));
+      vtkTextureObject* from[2] = { internals.Occlusion, internals.Blurred };
+      vtkTextureObject* to[2] = { internals.Blurred, internals.Occlusion };
+      const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
+      for (int pass = 0; pass < 2; ++pass)
+      {
+        internals.Work->AddColorAttachment(0, to[pass]);
+        internals.Work->ActivateDrawBuffers(1);
+        from[pass]->Activate();
+        program->SetUniformi("prOcclusion", from[pass]->GetTextureUnit());
+        program->SetUniform2i("prDirection", directions[pass]);
+        blurQuad->Render();
+        from[pass]->Deactivate();
+      }
+      internals.Depth->Deactivate();
+      internals.Timer.End();
+    }
+    ostate->PopFramebufferBindings();
+  }
+
+  // 4. the composite: colour times A and depth into the render state's target
+  internals.Timer.Begin(3);
+  vtkOpenGLQuadHelper* composite = internals.Quad(internals.CompositeQuad,
+    "uniform sampler2D prColour;\nuniform sampler2D prCompositeDepth;\n"
+    "uniform sampler2D prCompositeOcclusion;\nuniform float prStrength;\n",
+    "vec4 colour = texture(prColour, texCoord);\n"
+    "  float depth = texture(prCompositeDepth, texCoord).r;\n"
+    "  float a = depth < 1.0 ?\n"
+    "    clamp(1.0 - prStrength * texture(prCompositeOcclusion, texCoord).r, 0.0, 1.0) : 1.0;\n"
+    "  gl_FragData[0] = vec4(colour.rgb * a, colour.a);\n"
+    "  gl_FragDepth = depth;\n");
+  if (composite)
+  {
+    vtkShaderProgram* program = composite->Program;
+    internals.Colour->Activate();
+    internals.Depth->Activate();
+    occlusion->Activate();
+    program->SetUniformi("prColour", internals.Colour->GetTextureUnit());
+    program->SetUniformi("prCompositeDepth", internals.Depth->GetTextureUnit());
+    program->SetUniformi("prCompositeOcclusion", occlusion->GetTextureUnit());
+    program->SetUniformf("prStrength", occlude ? static_cast<float>(this->Strength) : 0.0f);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+    composite->Render();
+    internals.Colour->Deactivate();
+    internals.Depth->Deactivate();
+    occlusion->Deactivate();
+  }
+  else
+  {
+    vtkErrorMacro(<< "Could not build the PointAO composite shader.");
+  }
+  internals.Timer.End();
+  vtkOpenGLCheckErrorMacro("failed after vtkPointAOPass::Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkPointAOPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.ReleaseTextures(w);
+  for (auto* quad : { &internals.OcclusionQuad, &internals.BlurQuad, &internals.CompositeQuad })
+  {
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(w);
+      quad->reset();
+    }
+  }
+  internals.Timer.Release(
+    vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkPointAOPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
+  os << indent << "SamplesPerLevel: " << this->SamplesPerLevel << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "EffectiveRadius: " << this->EffectiveRadius << "\n";
+  os << indent << "BaseRadius: " << this->BaseRadius << "\n";
+  os << indent << "Thickness: " << this->Thickness << "\n";
+  os << indent << "HiddenFraction: " << this->HiddenFraction << "\n";
+  os << indent << "DepthScaling: " << this->DepthScaling << "\n";
+  os << indent << "Strength: " << this->Strength << "\n";
+  os << indent << "Blur: " << this->Blur << "\n";
+  os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+}

@@ -1,0 +1,185 @@
+//=========================================================================
+// PointAO.glsl -- the occlusion of vtkPointAOPass (Eichelbaum et al. 2013,
+// PointAO, Sec. 4, after LineAO Eqs. 1, 6-7). A full-screen pass over the
+// G-buffer the delegate drew:
+//   prDepth    window depth (1: background)
+//   prNormal   (view-space normal, 2 + a) where the geometry wrote one, a the
+//              radius of a particle's sphere (0 for other geometry); anything
+//              else (the delegate's clear, geometry without normals): the
+//              normal is taken from the depth buffer
+// prPointAO(pixel) is the occlusion mean_j AO_j in [0, 1] (0: none), with
+// AO_j = sum_i (1 - V_j(w_i)) <w_i, n> / sum_i <w_i, n> over the directions
+// w_i, 1 - V_j(w) the part of the ray p + t w, t <= R_j, that is blocked (see
+// vtkPointAOPass.h for the radius rule and the occlusion test). Every
+// quantity is in view coordinates, so the result does not depend on the
+// window size or the zoom.
+//=========================================================================
+
+uniform sampler2D prDepth;
+uniform sampler2D prNormal;
+uniform mat4 prProjection;        // view -> clip
+uniform mat4 prInverseProjection; // clip -> view
+uniform vec2 prSize;              // the G-buffer's pixels
+uniform int prLevels;             // L
+uniform int prSamples;            // samples of level 1 (level j: j prSamples)
+uniform float prRadius;           // outermost radius, view units
+uniform float prBaseRadius;       // r0
+uniform int prDepthScaling;       // the paper's depth term on (1) or off (0)
+uniform vec2 prClipRange;         // near and far distance along the view axis
+uniform float prThickness;        // how deep the scene is taken to be behind o, view units
+uniform float prHidden;           // P(a point behind a visible sphere lies in a hidden one)
+
+vec3 prViewPosition(vec2 uv, float depth)
+{
+  vec4 v = prInverseProjection * vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
+  return v.xyz / v.w;
+}
+
+// a per-pixel pseudo-random value in [0, 1) (an integer hash of the pixel and a seed: no
+// pattern that could beat with a crystal lattice)
+float prPixelNoise(ivec2 pixel, uint seed)
+{
+  uint h = uint(pixel.x) * 1973u + uint(pixel.y) * 9277u + seed * 26699u;
+  h = (h ^ (h >> 16u)) * 0x7feb352du;
+  h = (h ^ (h >> 15u)) * 0x846ca68bu;
+  h = h ^ (h >> 16u);
+  return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+// The linear depth of p over the clipping range, 0 at the near plane, 1 at the far one.
+float prLinearDepth(vec3 p)
+{
+  return clamp((-p.z - prClipRange.x) / max(prClipRange.y - prClipRange.x, 1e-30), 0.0, 1.0);
+}
+
+// The radius of the shell boundary after level j (R_0 = 0), before the depth term.
+float prLevelRadius(int j)
+{
+  float L = float(prLevels);
+  float fj = float(j);
+  return prRadius * (fj * fj + fj * prBaseRadius) / (L * L + L * prBaseRadius);
+}
+
+float prPointAO(ivec2 pixel)
+{
+  float depth = texelFetch(prDepth, pixel, 0).r;
+  if (!(depth < 1.0))
+  {
+    return 0.0;
+  }
+  vec2 uv = (vec2(pixel) + 0.5) / prSize;
+  vec3 p = prViewPosition(uv, depth);
+  vec4 stored = texelFetch(prNormal, pixel, 0);
+  vec3 n = stored.xyz;
+  float own = stored.w > 1.5 ? stored.w - 2.0 : 0.0; // the pixel's sphere's radius, or 0
+  if (!(stored.w > 1.5) || !(dot(n, n) > 0.25))
+  {
+    // no normal from the geometry: the depth buffer's (neighbours on the nearer side)
+    vec2 dx = vec2(1.0 / prSize.x, 0.0);
+    vec2 dy = vec2(0.0, 1.0 / prSize.y);
+    vec3 px = prViewPosition(uv + dx, texelFetch(prDepth, pixel + ivec2(1, 0), 0).r) - p;
+    vec3 mx = p - prViewPosition(uv - dx, texelFetch(prDepth, pixel - ivec2(1, 0), 0).r);
+    vec3 py = prViewPosition(uv + dy, texelFetch(prDepth, pixel + ivec2(0, 1), 0).r) - p;
+    vec3 my = p - prViewPosition(uv - dy, texelFetch(prDepth, pixel - ivec2(0, 1), 0).r);
+    n = cross(abs(px.z) < abs(mx.z) ? px : mx, abs(py.z) < abs(my.z) ? py : my);
+  }
+  // facing the viewer (perspective: towards the eye; parallel: +z)
+  vec3 toEye = prProjection[3][3] > 0.5 ? vec3(0.0, 0.0, 1.0) : -p;
+  n = dot(n, toEye) < 0.0 ? -n : n;
+  if (!(dot(n, n) > 0.0) || any(isnan(p)) || any(isinf(p)))
+  {
+    return 0.0;
+  }
+  n = normalize(n);
+  // the centre of the pixel's own sphere: its surface is no occluder of its own points
+  vec3 centre = p - own * n;
+  // a frame around n, rotated by a per-pixel angle
+  vec3 a = abs(n.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+  vec3 t = normalize(cross(a, n));
+  vec3 b = cross(n, t);
+  float angle = 6.2831853 * prPixelNoise(pixel, 1u);
+  float shift = prPixelNoise(pixel, 2u);
+  vec3 t1 = cos(angle) * t + sin(angle) * b;
+  vec3 b1 = cross(n, t1);
+  float scale = prDepthScaling != 0 ? 1.0 / (1.0 - 0.5 * prLinearDepth(p)) : 1.0;
+
+  // per direction (stratified in cos(theta), uniform in the solid angle; golden-ratio
+  // azimuths) a ray through the levels: level j adds j points in its shell (R_{j-1}, R_j], so
+  // level j has j prSamples samples (more outwards); occluded[j] sums the blocked part of the
+  // rays up to R_j (the transmittance `open` only falls along a ray)
+  float occluded[16];
+  for (int j = 0; j < 16; ++j)
+  {
+    occluded[j] = 0.0;
+  }
+  float weights = 0.0;
+  for (int i = 0; i < prSamples; ++i)
+  {
+    float c = (float(i) + 0.5) / float(prSamples);
+    float s = sqrt(max(0.0, 1.0 - c * c));
+    float phi = 6.2831853 * fract(float(i) * 0.6180340);
+    vec3 w = s * (cos(phi) * t1 + sin(phi) * b1) + c * n;
+    float inner = 0.0;
+    // the transmittance of the ray so far, per level
+    float open = 1.0;
+    bool onScreen = true;
+    for (int j = 1; j <= prLevels; ++j)
+    {
+      float outer = scale * prLevelRadius(j);
+      for (int k = 0; k < j && open > 0.0 && onScreen; ++k)
+      {
+        float r = mix(inner, outer, (float(k) + fract(shift + float(i) * 0.7548777)) / float(j));
+        vec3 q = p + r * w;
+        vec4 clip = prProjection * vec4(q, 1.0);
+        vec2 quv = clip.xy / clip.w * 0.5 + 0.5;
+        if (!(clip.w > 0.0) || any(lessThan(quv, vec2(0.0))) ||
+          any(greaterThanEqual(quv, vec2(1.0))))
+        {
+          onScreen = false; // leaves the view: open from here on
+          break;
+        }
+        ivec2 qp = ivec2(quv * prSize);
+        float occluderDepth = texelFetch(prDepth, qp, 0).r;
+        if (!(occluderDepth < 1.0))
+        {
+          continue;
+        }
+        vec3 o = prViewPosition(quv, occluderDepth);
+        float gap = o.z - q.z;
+        if (!(gap > 0.02 * r) || length(o - centre) < 1.01 * own)
+        {
+          continue; // in front of the visible surface, or behind the pixel's own sphere
+        }
+        vec4 so = texelFetch(prNormal, qp, 0);
+        float a = so.w > 1.5 ? so.w - 2.0 : 0.0;
+        if (a > 0.0)
+        {
+          // a particle: inside its sphere blocks; behind it, a hidden sphere blocks with the
+          // probability prHidden while within the thickness
+          if (length(q - (o - a * so.xyz)) < a)
+          {
+            open = 0.0;
+          }
+          else if (gap < prThickness * scale)
+          {
+            open *= 1.0 - prHidden;
+          }
+        }
+        else if (gap < prThickness * scale)
+        {
+          open = 0.0; // other geometry: taken to be prThickness deep
+        }
+      }
+      occluded[j - 1] += c * (1.0 - open);
+      inner = outer;
+    }
+    weights += c;
+  }
+  float occlusion = 0.0;
+  for (int j = 0; j < prLevels; ++j)
+  {
+    occlusion += occluded[j];
+  }
+  float result = weights > 0.0 ? occlusion / (weights * float(prLevels)) : 0.0;
+  return (isnan(result) || isinf(result)) ? 0.0 : clamp(result, 0.0, 1.0);
+}
