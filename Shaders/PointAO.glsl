@@ -3,10 +3,10 @@
 // PointAO, Sec. 4, after LineAO Eqs. 1, 6-7). A full-screen pass over the
 // G-buffer the delegate drew:
 //   prDepth    window depth (1: background)
-//   prNormal   (view-space normal, 2 + a) where the geometry wrote one, a the
-//              radius of a particle's sphere (0 for other geometry); anything
-//              else (the delegate's clear, geometry without normals): the
-//              normal is taken from the depth buffer
+//   prNormal   the view-space normal times 3 + a where the geometry wrote one,
+//              a the radius of a particle's sphere (0 for other geometry); a
+//              shorter vector (the delegate's clear, geometry without normals):
+//              the normal is taken from the depth buffer
 // prPointAO(pixel) is the occlusion mean_j AO_j in [0, 1] (0: none), with
 // AO_j = sum_i (1 - V_j(w_i)) <w_i, n> / sum_i <w_i, n> over the directions
 // w_i, 1 - V_j(w) the part of the ray p + t w, t <= R_j, that is blocked (see
@@ -69,10 +69,11 @@ float prPointAO(ivec2 pixel)
   }
   vec2 uv = (vec2(pixel) + 0.5) / prSize;
   vec3 p = prViewPosition(uv, depth);
-  vec4 stored = texelFetch(prNormal, pixel, 0);
-  vec3 n = stored.xyz;
-  float own = stored.w > 1.5 ? stored.w - 2.0 : 0.0; // the pixel's sphere's radius, or 0
-  if (!(stored.w > 1.5) || !(dot(n, n) > 0.25))
+  vec3 stored = texelFetch(prNormal, pixel, 0).xyz;
+  float length3 = length(stored);
+  vec3 n = stored / max(length3, 1e-30);
+  float own = length3 > 2.5 ? length3 - 3.0 : 0.0; // the pixel's sphere's radius, or 0
+  if (!(length3 > 2.5))
   {
     // no normal from the geometry: the depth buffer's (neighbours on the nearer side)
     vec2 dx = vec2(1.0 / prSize.x, 0.0);
@@ -144,19 +145,21 @@ float prPointAO(ivec2 pixel)
         {
           continue;
         }
-        vec3 o = prViewPosition(quv, occluderDepth);
+        // the visible surface at that pixel's centre (where its depth and normal were taken)
+        vec3 o = prViewPosition((vec2(qp) + 0.5) / prSize, occluderDepth);
         float gap = o.z - q.z;
         if (!(gap > 0.02 * r) || length(o - centre) < 1.01 * own)
         {
           continue; // in front of the visible surface, or behind the pixel's own sphere
         }
-        vec4 so = texelFetch(prNormal, qp, 0);
-        float a = so.w > 1.5 ? so.w - 2.0 : 0.0;
+        vec3 so = texelFetch(prNormal, qp, 0).xyz;
+        float lo = length(so);
+        float a = lo > 2.5 ? lo - 3.0 : 0.0;
         if (a > 0.0)
         {
           // a particle: inside its sphere blocks; behind it, a hidden sphere blocks with the
           // probability prHidden while within the thickness
-          if (length(q - (o - a * so.xyz)) < a)
+          if (length(q - (o - a * (so / lo))) < a)
           {
             open = 0.0;
           }

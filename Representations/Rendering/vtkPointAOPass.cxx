@@ -224,20 +224,22 @@ bool vtkPointAOPass::PostReplaceShaderValues(
   {
     return true;
   }
-  // a normal where the shader has one, with 2 + the sphere's radius for particles (2 marks a
-  // normal: the delegate's clear leaves values in [0, 1]; the radius tells the occlusion which
-  // surface is the pixel's own sphere); geometry without normals (unlit lines and points) gets
-  // the depth buffer's
+  // the normal where the shader has one, scaled to length 3 + the sphere's radius for particles
+  // and 3 for other geometry: the length marks a normal (the delegate's clear leaves colours in
+  // [0, 1]^3, length <= sqrt(3)) and gives the radius, which tells the occlusion which surface
+  // is the pixel's own sphere. Alpha 1: VTK blends opaque geometry too (SRC_ALPHA,
+  // ONE_MINUS_SRC_ALPHA), which then keeps the written value. Geometry without normals (unlit
+  // lines and points) writes 0: the occlusion takes the depth buffer's normal.
   const bool hasNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos &&
     fragmentShader.find("vertexVC") != std::string::npos;
-  std::string code = "gl_FragData[1] = vec4(0.0, 0.0, 0.0, 0.0);";
+  std::string code = "gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);";
   if (vtkParticleSphereMapper::SafeDownCast(mapper) && hasNormal)
   {
-    code = "gl_FragData[1] = vec4(normalVCVSOutput, 2.0 + radiusVC);";
+    code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * (3.0 + radiusVC), 1.0);";
   }
   else if (hasNormal)
   {
-    code = "gl_FragData[1] = vec4(normalVCVSOutput, 2.0);";
+    code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * 3.0, 1.0);";
   }
   vtkShaderProgram::Substitute(fragmentShader, NormalTag, code, false);
   return true;

@@ -54,14 +54,13 @@
  *   DepthScaling off gives f = 1 (the radius of the reference's AO everywhere).
  * - Rays through the levels instead of independent points per level (LineAO's samples are
  *   points in the hemisphere): independent points measure how much of the hemisphere's volume
- *   is filled, not whether the directions are blocked, and against ray-traced occlusion
- *   within Radius they were worse on the crystal face (RMSE 0.205 against 0.158).
+ *   is filled, not whether the directions are blocked.
  * - No Gaussian pyramid: every level reads the full-resolution buffers (LineAO's
  *   implementation default too; the per-pixel rotation and the blur take the noise).
  * - Strength 1.5 by default: the mean over the levels counts an occluder at distance t once
  *   per level whose radius exceeds t, i.e. less than the ray-traced occlusion within Radius;
- *   1.5 matches it on average on a LAMMPS liquid film and an FCC crystal (bias -0.02 and
- *   +0.09, Benchmarks/results/pointao_accuracy.csv).
+ *   1.5 matches it on average on a LAMMPS liquid film and an FCC crystal (bias -0.015 and
+ *   +0.038 at 384 x 384, Benchmarks/results/pointao_accuracy.csv).
  * - Blur. A separable 9 x 9 Gaussian whose taps are weighted by their view-depth difference to
  *   the centre pixel (relative to half the innermost radius): it does not smear the occlusion
  *   across silhouettes. Off: the raw, noisy estimate.
@@ -134,7 +133,8 @@ public:
    * How deep the scene is taken to be behind the surface the depth buffer shows, as a fraction
    * of Radius (see the class comment): a sample point less than this behind the visible
    * surface at its pixel may be inside an occluder, a point farther behind passes behind it.
-   * Default 1.
+   * Default 2 (with the automatic Radius eight mean particle radii: against ray-traced
+   * occlusion 1 and 1.5 gave RMSE 0.165 and 0.141 on the LAMMPS film, 2 gave 0.136, 3 0.138).
    */
   vtkSetClampMacro(Thickness, double, 0.0, 100.0);
   vtkGetMacro(Thickness, double);
@@ -205,7 +205,7 @@ protected:
   double Radius = 0.0;
   double EffectiveRadius = 0.0;
   double BaseRadius = 1.0;
-  double Thickness = 1.0;
+  double Thickness = 2.0;
   double HiddenFraction = 0.5;
   bool DepthScaling = true;
   double Strength = 1.5;
