@@ -336,8 +336,20 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, 0, width, height);
     ren->Clear();
+    // the G-buffer's depth is this frame's whatever the renderer preserves in its own target
+    // (ParaView's renderers may keep the depth buffer: a stale depth would be taken for geometry)
+    ostate->vtkglDepthMask(GL_TRUE);
+    const GLfloat far = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &far);
     const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearBufferfv(GL_COLOR, 1, zero);
+    // the colour's alpha 0 (the background as cleared or drawn stays): blended over it, the
+    // alpha becomes the coverage of what the delegate draws, so that a pixel only partly
+    // covered (the translucent rim of an emission-absorption sphere) is darkened only as much
+    vtkOpenGLState::ScopedglColorMask colourMask(ostate);
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    glClearBufferfv(GL_COLOR, 0, zero);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     vtkRenderState state(ren);
     state.SetFrameBuffer(internals.GBuffer);
     state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
@@ -474,12 +486,16 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   internals.Timer.Begin(3);
   vtkOpenGLQuadHelper* composite = internals.Quad(internals.CompositeQuad,
     "uniform sampler2D prColour;\nuniform sampler2D prCompositeDepth;\n"
-    "uniform sampler2D prCompositeOcclusion;\nuniform float prStrength;\n",
+    "uniform sampler2D prCompositeOcclusion;\nuniform float prStrength;\n"
+    "uniform float prBackgroundAlpha;\n",
+    // colour.a is the coverage of the drawn geometry (see the G-buffer's clear)
     "vec4 colour = texture(prColour, texCoord);\n"
     "  float depth = texture(prCompositeDepth, texCoord).r;\n"
     "  float a = depth < 1.0 ?\n"
     "    clamp(1.0 - prStrength * texture(prCompositeOcclusion, texCoord).r, 0.0, 1.0) : 1.0;\n"
-    "  gl_FragData[0] = vec4(colour.rgb * a, colour.a);\n"
+    "  float coverage = clamp(colour.a, 0.0, 1.0);\n"
+    "  gl_FragData[0] = vec4(colour.rgb * (1.0 - coverage * (1.0 - a)),\n"
+    "    coverage + (1.0 - coverage) * prBackgroundAlpha);\n"
     "  gl_FragDepth = depth;\n");
   if (composite)
   {
@@ -491,6 +507,8 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     program->SetUniformi("prCompositeDepth", internals.Depth->GetTextureUnit());
     program->SetUniformi("prCompositeOcclusion", occlusion->GetTextureUnit());
     program->SetUniformf("prStrength", occlude ? static_cast<float>(this->Strength) : 0.0f);
+    program->SetUniformf("prBackgroundAlpha",
+      ren->Transparent() ? 0.0f : static_cast<float>(ren->GetBackgroundAlpha()));
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(GL_ALWAYS);
     ostate->vtkglDepthMask(GL_TRUE);
