@@ -60,8 +60,20 @@ float prLevelRadius(int j)
   return prRadius * (fj * fj + fj * prBaseRadius) / (L * L + L * prBaseRadius);
 }
 
-float prPointAO(ivec2 pixel)
+float prPointAO(ivec2 pixel, out float viewDepth);
+
+// (occlusion, view depth -z, 1) of a pixel with geometry, (0, 0, 0) of the background: what the
+// blur (PointAOBlur.glsl) reads
+vec4 prPointAOTarget(ivec2 pixel)
 {
+  float z = 0.0;
+  float occlusion = prPointAO(pixel, z);
+  return z > 0.0 ? vec4(occlusion, z, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
+}
+
+float prPointAO(ivec2 pixel, out float viewDepth)
+{
+  viewDepth = 0.0;
   float depth = texelFetch(prDepth, pixel, 0).r;
   if (!(depth < 1.0))
   {
@@ -69,6 +81,7 @@ float prPointAO(ivec2 pixel)
   }
   vec2 uv = (vec2(pixel) + 0.5) / prSize;
   vec3 p = prViewPosition(uv, depth);
+  viewDepth = (isnan(p.z) || isinf(p.z)) ? 0.0 : max(-p.z, 1e-30);
   vec3 stored = texelFetch(prNormal, pixel, 0).xyz;
   float length3 = length(stored);
   vec3 n = stored / max(length3, 1e-30);
@@ -98,8 +111,13 @@ float prPointAO(ivec2 pixel)
   vec3 a = abs(n.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
   vec3 t = normalize(cross(a, n));
   vec3 b = cross(n, t);
-  float angle = 6.2831853 * prPixelNoise(pixel, 1u);
-  float shift = prPixelNoise(pixel, 2u);
+  // interleaved over 4 x 4 pixels: 16 rotations of the direction set (a Bayer order), which
+  // the blur averages where the surface is continuous
+  const float order[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
+    9.0, 15.0, 7.0, 13.0, 5.0);
+  float cell = order[(pixel.x & 3) + 4 * (pixel.y & 3)];
+  float angle = 6.2831853 * (cell + prPixelNoise(pixel, 1u)) / 16.0;
+  float shift = fract(cell * 0.6180340 + 0.25 * prPixelNoise(pixel, 2u));
   vec3 t1 = cos(angle) * t + sin(angle) * b;
   vec3 b1 = cross(n, t1);
   float scale = prDepthScaling != 0 ? 1.0 / (1.0 - 0.5 * prLinearDepth(p)) : 1.0;
@@ -107,12 +125,9 @@ float prPointAO(ivec2 pixel)
   // per direction (stratified in cos(theta), uniform in the solid angle; golden-ratio
   // azimuths) a ray through the levels: level j adds j points in its shell (R_{j-1}, R_j], so
   // level j has j prSamples samples (more outwards); occluded[j] sums the blocked part of the
-  // rays up to R_j (the transmittance `open` only falls along a ray)
-  float occluded[16];
-  for (int j = 0; j < 16; ++j)
-  {
-    occluded[j] = 0.0;
-  }
+  // rays up to R_j, summed over j in `occlusion` (the transmittance `open` only falls along a
+  // ray)
+  float occlusion = 0.0; // sum over the levels j of the blocked part of the rays up to R_j
   float weights = 0.0;
   for (int i = 0; i < prSamples; ++i)
   {
@@ -127,9 +142,13 @@ float prPointAO(ivec2 pixel)
     for (int j = 1; j <= prLevels; ++j)
     {
       float outer = scale * prLevelRadius(j);
-      for (int k = 0; k < j && open > 0.0 && onScreen; ++k)
+      // j points, more where the shell is wider than the pixel's sphere (a ray must not step
+      // over a particle: at most one radius apart), at most 4 j
+      int steps = own > 0.0 ? clamp(int(ceil((outer - inner) / own)), j, 4 * j) : j;
+      for (int k = 0; k < steps && open > 0.0 && onScreen; ++k)
       {
-        float r = mix(inner, outer, (float(k) + fract(shift + float(i) * 0.7548777)) / float(j));
+        float r = mix(inner, outer,
+          (float(k) + fract(shift + float(i) * 0.7548777)) / float(steps));
         vec3 q = p + r * w;
         vec4 clip = prProjection * vec4(q, 1.0);
         vec2 quv = clip.xy / clip.w * 0.5 + 0.5;
@@ -173,15 +192,10 @@ float prPointAO(ivec2 pixel)
           open = 0.0; // other geometry: taken to be prThickness deep
         }
       }
-      occluded[j - 1] += c * (1.0 - open);
+      occlusion += c * (1.0 - open);
       inner = outer;
     }
     weights += c;
-  }
-  float occlusion = 0.0;
-  for (int j = 0; j < prLevels; ++j)
-  {
-    occlusion += occluded[j];
   }
   float result = weights > 0.0 ? occlusion / (weights * float(prLevels)) : 0.0;
   return (isnan(result) || isinf(result)) ? 0.0 : clamp(result, 0.0, 1.0);

@@ -149,10 +149,11 @@ public:
     for (vtkTextureObject* t : { this->Occlusion.Get(), this->Blurred.Get() })
     {
       setUp(t);
-      t->SetInternalFormat(GL_R16F);
-      t->SetFormat(GL_RED);
+      // (occlusion, view depth, geometry flag)
+      t->SetInternalFormat(GL_RGBA16F);
+      t->SetFormat(GL_RGBA);
       t->SetDataType(GL_FLOAT);
-      t->Allocate2D(width, height, 1, VTK_FLOAT);
+      t->Allocate2D(width, height, 4, VTK_FLOAT);
     }
     this->GBuffer->SetContext(context);
     context->GetState()->PushFramebufferBindings();
@@ -398,7 +399,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     internals.Timer.Begin(1);
     vtkOpenGLQuadHelper* quad = internals.Quad(internals.OcclusionQuad,
       vtkParticleShaders::Get("PointAO"),
-      "gl_FragData[0] = vec4(prPointAO(ivec2(texCoord * prSize)), 0.0, 0.0, 1.0);\n");
+      "gl_FragData[0] = prPointAOTarget(ivec2(texCoord * prSize));\n");
     if (!quad)
     {
       vtkErrorMacro(<< "Could not build the PointAO shader: the image is drawn without it.");
@@ -447,7 +448,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     // 3. the depth-aware blur, horizontal into Blurred, vertical back into Occlusion
     vtkOpenGLQuadHelper* blurQuad = this->Blur
       ? internals.Quad(internals.BlurQuad, vtkParticleShaders::Get("PointAOBlur"),
-          "gl_FragData[0] = vec4(prBlurOcclusion(ivec2(texCoord * vec2(textureSize(prOcclusion, 0)))), 0.0, 0.0, 1.0);\n")
+          "gl_FragData[0] = prBlurOcclusion(ivec2(texCoord * vec2(textureSize(prOcclusion, 0))));\n")
       : nullptr;
     if (quad && blurQuad)
     {
@@ -455,9 +456,6 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
       vtkOpenGLState::ScopedglViewport viewport(ostate);
       ostate->vtkglViewport(0, 0, width, height);
       vtkShaderProgram* program = blurQuad->Program;
-      internals.Depth->Activate();
-      program->SetUniformi("prBlurDepth", internals.Depth->GetTextureUnit());
-      program->SetUniformMatrix4x4("prBlurInverseProjection", inv);
       // depth tolerance: half the innermost hemisphere's radius
       const double L = this->NumberOfLevels;
       const double r0 = this->BaseRadius;
@@ -476,7 +474,6 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
         blurQuad->Render();
         from[pass]->Deactivate();
       }
-      internals.Depth->Deactivate();
       internals.Timer.End();
     }
     ostate->PopFramebufferBindings();

@@ -24,8 +24,10 @@
  * random rotation; the weight <w, n> is the paper's replacement of LineAO's light-based weight,
  * and dividing by its sum makes a fully occluded hemisphere 1: the cosine-weighted occlusion the
  * reference ray tracer computes. Level j samples each direction at j points spread over its
- * shell (R_{j-1}, R_j] -- j SamplesPerLevel samples, more on the outer levels as the paper asks
- * -- and 1 - V_j(w) is how much of the ray p + t w, t <= R_j, is blocked so far (once blocked
+ * shell (R_{j-1}, R_j] -- j SamplesPerLevel samples, more on the outer levels as the paper asks;
+ * more, up to 4 j, where the shell is wider than the pixel's particle radius, so that a ray
+ * does not step over a particle -- and 1 - V_j(w) is how much of the ray p + t w, t <= R_j,
+ * is blocked so far (once blocked
  * it stays blocked for the outer levels). A sample point S is tested against the depth buffer
  * at its pixel, where the surface o is seen:
  * - S in front of o, or o on the pixel's own sphere: open;
@@ -46,8 +48,8 @@
  *   independent of the zoom and of the window size by construction (the paper's z(P) is the
  *   projected size of a world unit): R_j = Radius * f(P) * (j^2 + j r0) / (L^2 + L r0), so the
  *   outermost level has radius Radius (like vtkSSAOPass's radius and the reference's AO
- *   distance) and r0 = BaseRadius shapes the spacing (r0 = 1: R_j = Radius * 2/12, 6/12, 12/12
- *   for L = 3). The paper's depth term 1 / (1 - d), d = 1 at the far plane, is unbounded and,
+ *   distance) and r0 = BaseRadius shapes the spacing (r0 = 1: R_j = Radius / 3, Radius for
+ *   L = 2; Radius * 2/12, 6/12, 12/12 for L = 3). The paper's depth term 1 / (1 - d), d = 1 at the far plane, is unbounded and,
  *   with window depth, depends on the clipping planes (a perspective scene's middle sits at
  *   d > 0.9); f(P) = 1 / (1 - d/2) with d the linear depth over the clipping range keeps its
  *   intent -- crisp local shading in front, wider shadows behind -- bounded to [1, 2].
@@ -57,10 +59,10 @@
  *   is filled, not whether the directions are blocked.
  * - No Gaussian pyramid: every level reads the full-resolution buffers (LineAO's
  *   implementation default too; the per-pixel rotation and the blur take the noise).
- * - Strength 1.5 by default: the mean over the levels counts an occluder at distance t once
+ * - Strength 1.4 by default: the mean over the levels counts an occluder at distance t once
  *   per level whose radius exceeds t, i.e. less than the ray-traced occlusion within Radius;
- *   1.5 matches it on average on a LAMMPS liquid film and an FCC crystal (bias -0.015 and
- *   +0.038 at 384 x 384, Benchmarks/results/pointao_accuracy.csv).
+ *   against that reference the best strength was 1.25 on a LAMMPS liquid film and droplets and
+ *   1.5 on an FCC crystal face (Benchmarks/results/pointao_accuracy.csv has the errors at 1.4).
  * - Blur. A separable 9 x 9 Gaussian whose taps are weighted by their view-depth difference to
  *   the centre pixel (relative to half the innermost radius): it does not smear the occlusion
  *   across silhouettes. Off: the raw, noisy estimate.
@@ -93,7 +95,7 @@ public:
 
   ///@{
   /**
-   * Number of hemispheres L (paper: "distance levels"). Default 3.
+   * Number of hemispheres L (paper: "distance levels"). Default 3 (LineAO's default).
    */
   vtkSetClampMacro(NumberOfLevels, int, 1, 16);
   vtkGetMacro(NumberOfLevels, int);
@@ -102,8 +104,8 @@ public:
   ///@{
   /**
    * Directions per pixel; level j takes j samples along each, so j SamplesPerLevel in all
-   * (more on the outer levels). Default 8 (48 samples per pixel with 3 levels; fewer where a
-   * ray is blocked early or leaves the view).
+   * (more on the outer levels). Default 4 (24 samples per pixel with 3 levels at the automatic
+   * radius; fewer where a ray is blocked early or leaves the view).
    */
   vtkSetClampMacro(SamplesPerLevel, int, 1, 256);
   vtkGetMacro(SamplesPerLevel, int);
@@ -162,7 +164,7 @@ public:
 
   ///@{
   /**
-   * A = clamp(1 - Strength * occlusion, 0, 1). Default 1.5 (see the class comment).
+   * A = clamp(1 - Strength * occlusion, 0, 1). Default 1.4 (see the class comment).
    */
   vtkSetClampMacro(Strength, double, 0.0, 100.0);
   vtkGetMacro(Strength, double);
@@ -201,14 +203,14 @@ protected:
   ~vtkPointAOPass() override;
 
   int NumberOfLevels = 3;
-  int SamplesPerLevel = 8;
+  int SamplesPerLevel = 4;
   double Radius = 0.0;
   double EffectiveRadius = 0.0;
   double BaseRadius = 1.0;
   double Thickness = 2.0;
   double HiddenFraction = 0.5;
   bool DepthScaling = true;
-  double Strength = 1.5;
+  double Strength = 1.4;
   bool Blur = true;
   bool CollectTimings = false;
 
