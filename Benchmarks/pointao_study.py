@@ -261,7 +261,7 @@ def main():
         for levels in ([3] if args.quick else [1, 2, 3, 4]):
             for directions in ([4, 8] if args.quick else [2, 4, 8, 16]):
                 configs.append(("pointao", dict(levels=levels, directions=directions),
-                                pointao(levels, directions), (levels, directions) == (3, 8)))
+                                pointao(levels, directions), (levels, directions) == (3, 4)))
         for factor in ([2.0] if args.quick else [1.0, 2.0, 4.0, 8.0]):
             for kernel in ([32] if args.quick else [8, 32, 128]):
                 configs.append(("ssao", dict(ssao_radius=factor * scene.mean_radius,

@@ -394,6 +394,11 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
 
   // 2. the occlusion
   vtkTextureObject* occlusion = internals.Occlusion;
+  bool verticalBlur = false;
+  // the blur's depth tolerance: half the innermost hemisphere's radius
+  const double L = this->NumberOfLevels;
+  const double r0 = this->BaseRadius;
+  const double tolerance = 0.5 * this->EffectiveRadius * (1.0 + r0) / (L * L + L * r0);
   if (occlude)
   {
     internals.Timer.Begin(1);
@@ -445,10 +450,11 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     }
     internals.Timer.End();
 
-    // 3. the depth-aware blur, horizontal into Blurred, vertical back into Occlusion
+    // 3. the depth-aware blur: horizontal into Blurred here, vertical in the composite
     vtkOpenGLQuadHelper* blurQuad = this->Blur
       ? internals.Quad(internals.BlurQuad, vtkParticleShaders::Get("PointAOBlur"),
-          "gl_FragData[0] = prBlurOcclusion(ivec2(texCoord * vec2(textureSize(prOcclusion, 0))));\n")
+          "gl_FragData[0] = prBlurOcclusion(ivec2(texCoord * vec2(textureSize(prOcclusion, "
+          "0))));\n")
       : nullptr;
     if (quad && blurQuad)
     {
@@ -456,25 +462,18 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
       vtkOpenGLState::ScopedglViewport viewport(ostate);
       ostate->vtkglViewport(0, 0, width, height);
       vtkShaderProgram* program = blurQuad->Program;
-      // depth tolerance: half the innermost hemisphere's radius
-      const double L = this->NumberOfLevels;
-      const double r0 = this->BaseRadius;
-      program->SetUniformf("prDepthTolerance",
-        static_cast<float>(0.5 * this->EffectiveRadius * (1.0 + r0) / (L * L + L * r0)));
-      vtkTextureObject* from[2] = { internals.Occlusion, internals.Blurred };
-      vtkTextureObject* to[2] = { internals.Blurred, internals.Occlusion };
-      const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
-      for (int pass = 0; pass < 2; ++pass)
-      {
-        internals.Work->AddColorAttachment(0, to[pass]);
-        internals.Work->ActivateDrawBuffers(1);
-        from[pass]->Activate();
-        program->SetUniformi("prOcclusion", from[pass]->GetTextureUnit());
-        program->SetUniform2i("prDirection", directions[pass]);
-        blurQuad->Render();
-        from[pass]->Deactivate();
-      }
+      program->SetUniformf("prDepthTolerance", static_cast<float>(tolerance));
+      internals.Work->AddColorAttachment(0, internals.Blurred);
+      internals.Work->ActivateDrawBuffers(1);
+      internals.Occlusion->Activate();
+      program->SetUniformi("prOcclusion", internals.Occlusion->GetTextureUnit());
+      const int horizontal[2] = { 1, 0 };
+      program->SetUniform2i("prDirection", horizontal);
+      blurQuad->Render();
+      internals.Occlusion->Deactivate();
       internals.Timer.End();
+      occlusion = internals.Blurred;
+      verticalBlur = true;
     }
     ostate->PopFramebufferBindings();
   }
@@ -482,14 +481,16 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   // 4. the composite: colour times A and depth into the render state's target
   internals.Timer.Begin(3);
   vtkOpenGLQuadHelper* composite = internals.Quad(internals.CompositeQuad,
-    "uniform sampler2D prColour;\nuniform sampler2D prCompositeDepth;\n"
-    "uniform sampler2D prCompositeOcclusion;\nuniform float prStrength;\n"
-    "uniform float prBackgroundAlpha;\n",
-    // colour.a is the coverage of the drawn geometry (see the G-buffer's clear)
+    vtkParticleShaders::Get("PointAOBlur") +
+      "uniform sampler2D prColour;\nuniform sampler2D prCompositeDepth;\n"
+      "uniform float prStrength;\nuniform float prBackgroundAlpha;\nuniform int prVerticalBlur;\n",
+    // the occlusion (blurred vertically here when the blur is on); colour.a is the coverage of
+    // the drawn geometry (see the G-buffer's clear)
     "vec4 colour = texture(prColour, texCoord);\n"
     "  float depth = texture(prCompositeDepth, texCoord).r;\n"
-    "  float a = depth < 1.0 ?\n"
-    "    clamp(1.0 - prStrength * texture(prCompositeOcclusion, texCoord).r, 0.0, 1.0) : 1.0;\n"
+    "  float occlusion = prVerticalBlur != 0 ? prBlurOcclusion(ivec2(texCoord * "
+    "vec2(textureSize(prOcclusion, 0)))).x : texture(prOcclusion, texCoord).x;\n"
+    "  float a = depth < 1.0 ? clamp(1.0 - prStrength * occlusion, 0.0, 1.0) : 1.0;\n"
     "  float coverage = clamp(colour.a, 0.0, 1.0);\n"
     "  gl_FragData[0] = vec4(colour.rgb * (1.0 - coverage * (1.0 - a)),\n"
     "    coverage + (1.0 - coverage) * prBackgroundAlpha);\n"
@@ -502,7 +503,11 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     occlusion->Activate();
     program->SetUniformi("prColour", internals.Colour->GetTextureUnit());
     program->SetUniformi("prCompositeDepth", internals.Depth->GetTextureUnit());
-    program->SetUniformi("prCompositeOcclusion", occlusion->GetTextureUnit());
+    program->SetUniformi("prOcclusion", occlusion->GetTextureUnit());
+    program->SetUniformi("prVerticalBlur", verticalBlur ? 1 : 0);
+    const int vertical[2] = { 0, 1 };
+    program->SetUniform2i("prDirection", vertical);
+    program->SetUniformf("prDepthTolerance", static_cast<float>(tolerance));
     program->SetUniformf("prStrength", occlude ? static_cast<float>(this->Strength) : 0.0f);
     program->SetUniformf("prBackgroundAlpha",
       ren->Transparent() ? 0.0f : static_cast<float>(ren->GetBackgroundAlpha()));

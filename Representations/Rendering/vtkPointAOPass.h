@@ -63,9 +63,10 @@
  *   per level whose radius exceeds t, i.e. less than the ray-traced occlusion within Radius;
  *   against that reference the best strength was 1.25 on a LAMMPS liquid film and droplets and
  *   1.5 on an FCC crystal face (Benchmarks/results/pointao_accuracy.csv has the errors at 1.4).
- * - Blur. A separable 9 x 9 Gaussian whose taps are weighted by their view-depth difference to
- *   the centre pixel (relative to half the innermost radius): it does not smear the occlusion
- *   across silhouettes. Off: the raw, noisy estimate.
+ * - Blur. A separable 9 x 9 Gaussian whose taps are weighted by 1 / (1 + (dz / t)^2), dz their
+ *   view-depth difference to the centre pixel and t half the innermost radius: it does not
+ *   smear the occlusion across silhouettes. The vertical half runs in the composite (one
+ *   full-screen pass less). Off: the raw, noisy estimate.
  * - Radius 0 (default) means automatic: four mean particle radii (over the visible
  *   vtkParticleSphereMapper props, at most 65536 radii read per prop), or 2 % of the visible
  *   props' bounding-box diagonal when there are no particles.
@@ -182,8 +183,8 @@ public:
   ///@{
   /**
    * GPU time of the last Render()'s stages (timer queries, read at the next Render() or by
-   * GetStageSeconds): 0 the scene into the G-buffer, 1 the occlusion, 2 the blur, 3 the
-   * composite. Off by default (the queries cost a little).
+   * GetStageSeconds): 0 the scene into the G-buffer, 1 the occlusion, 2 the horizontal blur,
+   * 3 the composite with the vertical blur. Off by default (the queries cost a little).
    */
   vtkSetMacro(CollectTimings, bool);
   vtkGetMacro(CollectTimings, bool);
