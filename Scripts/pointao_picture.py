@@ -89,7 +89,7 @@ def render(path, method, size):
                        centre[2] + 0.8 * (b[5] - b[4]))
     camera.SetViewUp(0, 0, 1)
     renderer.ResetCamera()
-    camera.Zoom(2.2)
+    camera.Zoom(1.4)
     window.Render()
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
