@@ -102,6 +102,7 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> OcclusionQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> BlurQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  bool WarnedTranslucent = false;
   // GPU times: G-buffer, occlusion, blur, composite
   vtkParticleStageTimer Timer{ 4 };
 
@@ -285,6 +286,24 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   vtkOpenGLState* ostate = context->GetState();
   internals.Timer.StartFrame(this->CollectTimings);
   internals.Allocate(context, width, height);
+
+  // translucent particles are drawn over the opaque scene without depth: they are neither
+  // darkened nor occluders (said once, until the scene has none again)
+  bool translucent = false;
+  for (int i = 0; i < s->GetPropArrayCount() && !translucent; ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    translucent = actor && actor->GetVisibility() &&
+      vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) &&
+      actor->HasTranslucentPolygonalGeometry();
+  }
+  if (translucent && !internals.WarnedTranslucent)
+  {
+    vtkWarningMacro(<< "PointAO darkens opaque geometry only: translucent particles are shown "
+                    << "without ambient occlusion (the density-volume and voxel-cone passes "
+                    << "occlude them).");
+  }
+  internals.WarnedTranslucent = translucent;
 
   // the radius: set, or four mean particle radii, or 2 % of the visible props' diagonal
   double radius = this->Radius;

@@ -73,7 +73,8 @@
  * - Translucent geometry (ParaView's depth peeling, vtkTransparentSphereMapper) is drawn over
  *   the opaque scene by the delegate; the occlusion of the opaque surface behind a translucent
  *   layer darkens the composited pixel (as vtkSSAOPass does). Translucent surfaces are not
- *   occluders.
+ *   occluders and are not darkened where nothing opaque lies behind them: translucent
+ *   particles get a warning (once) pointing to the object-space passes.
  *
  * The shader code does not depend on the settings (uniforms), so changing them recompiles
  * nothing. Needs OpenGL 3.2 (fragment shaders only). GetStageSeconds() gives GPU times of the

@@ -3,7 +3,8 @@
 The LAMMPS FCC block (32000 atoms, radii from 'radius', coloured by type) is compared with a
 baseline; PointAO must darken the block and brighten nothing, use four mean radii by default,
 follow its settings (strength 0 is the plain picture, a larger radius darkens more, fewer
-directions change the picture a little), leave the background alone, and give way to another
+directions change the picture a little), leave the background alone, leave translucent
+particles alone with a warning, and give way to another
 AO choice (one pass in the chain). With scale-consistent shading on, the S-NDF pass warns and
 shows PointAO's picture (S-NDF samples need per-fragment occlusion).
 
@@ -111,6 +112,22 @@ def full_test():
     if "vtkPointAOPass" not in text or pr.max_abs_difference(occluded, with_sndf) > 1:
         print("FAIL: S-NDF with PointAO should warn and show PointAO's picture; messages: %s"
               % text.strip())
+        ok = False
+
+    # translucent particles: not darkened (no depth in the G-buffer), with a warning
+    display.Opacity = 0.5
+    view.ParticleAmbientOcclusion = 'None'
+    see_through = shot("translucent_off")
+    view.ParticleAmbientOcclusion = 'PointAO'
+    with pr.captured_messages() as messages:
+        translucent = shot("translucent")
+    display.Opacity = 1.0
+    print("translucent particles: difference to no AO max %s"
+          % pr.max_abs_difference(see_through, translucent))
+    if "translucent particles" not in messages.GetOutput() or \
+            pr.max_abs_difference(see_through, translucent) > 1:
+        print("FAIL: translucent particles should be left alone with a warning; messages: %s"
+              % messages.GetOutput().strip())
         ok = False
 
     # one AO choice: the density volume replaces PointAO, and back
