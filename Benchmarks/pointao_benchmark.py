@@ -2,8 +2,8 @@
 frame time of the plain core (vtkParticleSphereMapper, no pass) in the same window, at 1e4 ...
 1e6 particles and two window sizes, with the GPU time of each stage (timer queries: the scene
 into the G-buffer, the occlusion, the blur, the composite) and, measured in the same run,
-vtkSSAOPass (radius two mean radii, 32 samples, blur) and vtkDensityVolumeAOPass (defaults,
-static scene: its volume is built once).
+vtkPointAOPass at half resolution, vtkSSAOPass (radius two mean radii, 32 samples, blur) and
+vtkDensityVolumeAOPass (defaults, static scene: its volume is built once).
 
 A screen-space pass costs per pixel: the occlusion and the blur do not depend on the particle
 count, only the G-buffer pass (the delegate's draw with a second render target) does. The
@@ -75,9 +75,13 @@ def main():
             ssao.SetKernelSize(32)
             ssao.SetBias(0.004)
             ssao.BlurOn()
+            half = pr.vtkPointAOPass()
+            half.SetDelegatePass(vtkRenderStepsPass())
+            half.SetHalfResolution(True)
             density = pr.vtkDensityVolumeAOPass()
             density.SetDelegatePass(vtkRenderStepsPass())
-            passes = {"none": None, "pointao": pointao, "ssao": ssao, "density-volume": density}
+            passes = {"none": None, "pointao": pointao, "pointao-half": half, "ssao": ssao,
+                      "density-volume": density}
 
             def frame():
                 renderer.GetActiveCamera().Azimuth(0.5)
@@ -134,17 +138,19 @@ def main():
         if new:
             writer.writeheader()
         writer.writerows(merged)
-    print("\n| window | particles | plain | PointAO | ratio | SSAO | ratio | density volume | ratio "
-          "| PointAO GPU: G-buffer / occlusion / blur / composite |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+    print("\n| window | particles | plain | PointAO | ratio | PointAO half | ratio | SSAO | ratio "
+          "| density volume | ratio | PointAO GPU: G-buffer / occlusion / blur / composite |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
     for width, height, count in sorted({(r["width"], r["height"], r["particles"]) for r in merged}):
         get = {r["method"]: r for r in merged
                if (r["width"], r["height"], r["particles"]) == (width, height, count)}
         p = get["pointao"]
         print("| %dx%d | %d | %.1f ms | %.1f ms | %.2f | %.1f ms | %.2f | %.1f ms | %.2f | "
-              "%.1f / %.1f / %.1f / %.1f ms |" % (
+              "%.1f ms | %.2f | %.1f / %.1f / %.1f / %.1f ms |" % (
                   width, height, count, 1e3 * get["none"]["median_frame_s"],
                   1e3 * p["median_frame_s"], p["ratio_vs_plain"],
+                  1e3 * get["pointao-half"]["median_frame_s"],
+                  get["pointao-half"]["ratio_vs_plain"],
                   1e3 * get["ssao"]["median_frame_s"], get["ssao"]["ratio_vs_plain"],
                   1e3 * get["density-volume"]["median_frame_s"],
                   get["density-volume"]["ratio_vs_plain"],
@@ -159,7 +165,8 @@ def plot(rows, out):
     sizes = sorted({(r["width"], r["height"]) for r in rows})
     fig, axes = plt.subplots(1, len(sizes), figsize=(6 * len(sizes), 4.5), squeeze=False)
     for ax, (width, height) in zip(axes[0], sizes):
-        for method, colour in (("pointao", "C3"), ("ssao", "C0"), ("density-volume", "C2")):
+        for method, colour in (("pointao", "C3"), ("pointao-half", "C1"), ("ssao", "C0"),
+                               ("density-volume", "C2")):
             points = sorted((r["particles"], r["ratio_vs_plain"]) for r in rows
                             if r["method"] == method and (r["width"], r["height"]) == (width, height))
             if points:

@@ -17,7 +17,8 @@ and for each method's default configuration
                  reference's own change in its row (its own ray noise included)
   resize_change  mean |A(2x window) - A| in 4 x 4 blocks of the smaller window (the reference's
                  own in its row)
-Knobs: PointAO levels (1-4) and directions (2-16) at the automatic radius (four mean radii);
+Knobs: PointAO levels (1-4) and directions (2-16) at the automatic radius (four mean radii),
+and at half resolution ("pointao-half": 3 levels with 4 and 8 directions, 4 with 8);
 vtkSSAOPass radius (1-8 mean radii) and kernel (8-128), blur on; the density volume's
 resolution (automatic, 32, 64) at strength 2; voxel cone tracing with 3 and 6 cones.
 
@@ -148,12 +149,13 @@ class StudyScene(ao_study.Scene):
         super().__init__(name, path, size, frames)
 
 
-def pointao(levels=3, directions=8):
+def pointao(levels=3, directions=8, half=False):
     def make():
         p = pr.vtkPointAOPass()
         p.SetDelegatePass(vtkRenderStepsPass())
         p.SetNumberOfLevels(levels)
         p.SetSamplesPerLevel(directions)
+        p.SetHalfResolution(half)
         return p
     return make
 
@@ -194,8 +196,8 @@ def plot(rows, out, scenes):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(2, len(scenes), figsize=(5.2 * len(scenes), 8.5), squeeze=False)
-    style = {"pointao": ("C3", "o"), "ssao": ("C0", "s"), "density-volume": ("C2", "^"),
-             "voxel-cone": ("C4", "D")}
+    style = {"pointao": ("C3", "o"), "pointao-half": ("C1", "v"), "ssao": ("C0", "s"),
+             "density-volume": ("C2", "^"), "voxel-cone": ("C4", "D")}
     for column, scene in enumerate(scenes):
         for row_index, key in enumerate(("rmse", "band_rmse")):
             ax = axes[row_index][column]
@@ -262,6 +264,9 @@ def main():
             for directions in ([4, 8] if args.quick else [2, 4, 8, 16]):
                 configs.append(("pointao", dict(levels=levels, directions=directions),
                                 pointao(levels, directions), (levels, directions) == (3, 4)))
+        for levels, directions in ([] if args.quick else [(3, 4), (3, 8), (4, 8)]):
+            configs.append(("pointao-half", dict(levels=levels, directions=directions),
+                            pointao(levels, directions, True), False))
         for factor in ([2.0] if args.quick else [1.0, 2.0, 4.0, 8.0]):
             for kernel in ([32] if args.quick else [8, 32, 128]):
                 configs.append(("ssao", dict(ssao_radius=factor * scene.mean_radius,

@@ -20,6 +20,8 @@ uniform sampler2D prNormal;
 uniform mat4 prProjection;        // view -> clip
 uniform mat4 prInverseProjection; // clip -> view
 uniform vec2 prSize;              // the G-buffer's pixels
+uniform ivec2 prTargetSize;       // the occlusion texture's texels
+uniform int prStep;               // G-buffer pixels per occlusion texel (1, or 2: half size)
 uniform int prLevels;             // L
 uniform int prSamples;            // samples of level 1 (level j: j prSamples)
 uniform float prRadius;           // outermost radius, view units
@@ -64,10 +66,10 @@ float prPointAO(ivec2 pixel, out float viewDepth);
 
 // (occlusion, view depth -z, 1) of a pixel with geometry, (0, 0, 0) of the background: what the
 // blur (PointAOBlur.glsl) reads
-vec4 prPointAOTarget(ivec2 pixel)
+vec4 prPointAOTarget(ivec2 texel)
 {
   float z = 0.0;
-  float occlusion = prPointAO(pixel, z);
+  float occlusion = prPointAO(min(texel * prStep, ivec2(prSize) - 1), z);
   return z > 0.0 ? vec4(occlusion, z, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 

@@ -92,6 +92,7 @@ public:
   vtkOpenGLRenderWindow* Context = nullptr;
   int Width = 0;
   int Height = 0;
+  int Step = 1; // G-buffer pixels per occlusion texel along each axis
   vtkNew<vtkOpenGLFramebufferObject> GBuffer;
   vtkNew<vtkTextureObject> Colour;
   vtkNew<vtkTextureObject> Normal;
@@ -121,9 +122,10 @@ public:
   }
 
   // the textures and framebuffers for a width x height viewport
-  void Allocate(vtkOpenGLRenderWindow* context, int width, int height)
+  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, int step)
   {
-    if (width == this->Width && height == this->Height && this->Colour->GetHandle())
+    if (width == this->Width && height == this->Height && step == this->Step &&
+      this->Colour->GetHandle())
     {
       return;
     }
@@ -154,7 +156,7 @@ public:
       t->SetInternalFormat(GL_RGBA16F);
       t->SetFormat(GL_RGBA);
       t->SetDataType(GL_FLOAT);
-      t->Allocate2D(width, height, 4, VTK_FLOAT);
+      t->Allocate2D((width + step - 1) / step, (height + step - 1) / step, 4, VTK_FLOAT);
     }
     this->GBuffer->SetContext(context);
     context->GetState()->PushFramebufferBindings();
@@ -166,6 +168,7 @@ public:
     this->Work->SetContext(context);
     this->Width = width;
     this->Height = height;
+    this->Step = step;
   }
 
   vtkOpenGLQuadHelper* Quad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& decl,
@@ -285,7 +288,10 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLState* ostate = context->GetState();
   internals.Timer.StartFrame(this->CollectTimings);
-  internals.Allocate(context, width, height);
+  const int step = this->HalfResolution ? 2 : 1;
+  internals.Allocate(context, width, height, step);
+  const int lowWidth = (width + step - 1) / step;
+  const int lowHeight = (height + step - 1) / step;
 
   // translucent particles are drawn over the opaque scene without depth: they are neither
   // darkened nor occluders (said once, until the scene has none again)
@@ -423,7 +429,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     internals.Timer.Begin(1);
     vtkOpenGLQuadHelper* quad = internals.Quad(internals.OcclusionQuad,
       vtkParticleShaders::Get("PointAO"),
-      "gl_FragData[0] = prPointAOTarget(ivec2(texCoord * prSize));\n");
+      "gl_FragData[0] = prPointAOTarget(ivec2(texCoord * vec2(prTargetSize)));\n");
     if (!quad)
     {
       vtkErrorMacro(<< "Could not build the PointAO shader: the image is drawn without it.");
@@ -434,7 +440,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     internals.Work->ActivateDrawBuffers(1);
     {
       vtkOpenGLState::ScopedglViewport viewport(ostate);
-      ostate->vtkglViewport(0, 0, width, height);
+      ostate->vtkglViewport(0, 0, lowWidth, lowHeight);
       ostate->vtkglDisable(GL_DEPTH_TEST);
       if (quad)
       {
@@ -447,6 +453,9 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
         program->SetUniformMatrix4x4("prInverseProjection", inv);
         const float size[2] = { static_cast<float>(width), static_cast<float>(height) };
         program->SetUniform2f("prSize", size);
+        const int target[2] = { lowWidth, lowHeight };
+        program->SetUniform2i("prTargetSize", target);
+        program->SetUniformi("prStep", step);
         program->SetUniformi("prLevels", this->NumberOfLevels);
         program->SetUniformi("prSamples", this->SamplesPerLevel);
         program->SetUniformf("prRadius", static_cast<float>(this->EffectiveRadius));
@@ -477,22 +486,29 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
       : nullptr;
     if (quad && blurQuad)
     {
+      // full resolution: horizontal here, vertical in the composite; half resolution: both
+      // here (back into Occlusion), the composite upsamples
       internals.Timer.Begin(2);
       vtkOpenGLState::ScopedglViewport viewport(ostate);
-      ostate->vtkglViewport(0, 0, width, height);
+      ostate->vtkglViewport(0, 0, lowWidth, lowHeight);
       vtkShaderProgram* program = blurQuad->Program;
       program->SetUniformf("prDepthTolerance", static_cast<float>(tolerance));
-      internals.Work->AddColorAttachment(0, internals.Blurred);
-      internals.Work->ActivateDrawBuffers(1);
-      internals.Occlusion->Activate();
-      program->SetUniformi("prOcclusion", internals.Occlusion->GetTextureUnit());
-      const int horizontal[2] = { 1, 0 };
-      program->SetUniform2i("prDirection", horizontal);
-      blurQuad->Render();
-      internals.Occlusion->Deactivate();
+      vtkTextureObject* from[2] = { internals.Occlusion, internals.Blurred };
+      vtkTextureObject* to[2] = { internals.Blurred, internals.Occlusion };
+      const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
+      for (int pass = 0; pass < (step > 1 ? 2 : 1); ++pass)
+      {
+        internals.Work->AddColorAttachment(0, to[pass]);
+        internals.Work->ActivateDrawBuffers(1);
+        from[pass]->Activate();
+        program->SetUniformi("prOcclusion", from[pass]->GetTextureUnit());
+        program->SetUniform2i("prDirection", directions[pass]);
+        blurQuad->Render();
+        from[pass]->Deactivate();
+      }
       internals.Timer.End();
-      occlusion = internals.Blurred;
-      verticalBlur = true;
+      occlusion = step > 1 ? internals.Occlusion : internals.Blurred;
+      verticalBlur = step == 1;
     }
     ostate->PopFramebufferBindings();
   }
@@ -502,13 +518,39 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   vtkOpenGLQuadHelper* composite = internals.Quad(internals.CompositeQuad,
     vtkParticleShaders::Get("PointAOBlur") +
       "uniform sampler2D prColour;\nuniform sampler2D prCompositeDepth;\n"
-      "uniform float prStrength;\nuniform float prBackgroundAlpha;\nuniform int prVerticalBlur;\n",
+      "uniform float prStrength;\nuniform float prBackgroundAlpha;\nuniform int prVerticalBlur;\n"
+      "uniform int prStep;\nuniform mat4 prCompositeInverseProjection;\n"
+      // half resolution: the 2 x 2 occlusion texels around the pixel, bilinear and weighted by
+      // their view depth's difference to the pixel's (as the blur), background texels left out
+      "float prUpsample(ivec2 pixel, float depth)\n{\n"
+      "  vec2 size = vec2(textureSize(prCompositeDepth, 0));\n"
+      "  vec4 v = prCompositeInverseProjection * vec4(vec3((vec2(pixel) + 0.5) / size, depth)"
+      " * 2.0 - 1.0, 1.0);\n"
+      "  float z = -v.z / v.w;\n"
+      "  ivec2 low = textureSize(prOcclusion, 0);\n"
+      "  vec2 f = vec2(pixel) / float(prStep);\n"
+      "  ivec2 i0 = ivec2(floor(f));\n"
+      "  vec2 t = f - vec2(i0);\n"
+      "  float sum = 0.0;\n  float weights = 0.0;\n  float nearest = 1e30;\n"
+      "  float fallback = 0.0;\n"
+      "  for (int k = 0; k < 4; ++k)\n  {\n"
+      "    ivec2 o = ivec2(k & 1, k >> 1);\n"
+      "    vec4 tap = texelFetch(prOcclusion, clamp(i0 + o, ivec2(0), low - 1), 0);\n"
+      "    float dz = (tap.y - z) / prDepthTolerance;\n"
+      "    float w = tap.z * (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y)"
+      " / (1.0 + dz * dz);\n"
+      "    sum += w * tap.x;\n    weights += w;\n"
+      "    if (tap.z > 0.5 && abs(tap.y - z) < nearest) { nearest = abs(tap.y - z); "
+      "fallback = tap.x; }\n"
+      "  }\n"
+      "  return weights > 1e-6 ? sum / weights : fallback;\n}\n",
     // the occlusion (blurred vertically here when the blur is on); colour.a is the coverage of
     // the drawn geometry (see the G-buffer's clear)
     "vec4 colour = texture(prColour, texCoord);\n"
     "  float depth = texture(prCompositeDepth, texCoord).r;\n"
-    "  float occlusion = prVerticalBlur != 0 ? prBlurOcclusion(ivec2(texCoord * "
-    "vec2(textureSize(prOcclusion, 0)))).x : texture(prOcclusion, texCoord).x;\n"
+    "  ivec2 pixel = ivec2(texCoord * vec2(textureSize(prCompositeDepth, 0)));\n"
+    "  float occlusion = prStep > 1 ? (depth < 1.0 ? prUpsample(pixel, depth) : 0.0) :\n"
+    "    (prVerticalBlur != 0 ? prBlurOcclusion(pixel).x : texelFetch(prOcclusion, pixel, 0).x);\n"
     "  float a = depth < 1.0 ? clamp(1.0 - prStrength * occlusion, 0.0, 1.0) : 1.0;\n"
     "  float coverage = clamp(colour.a, 0.0, 1.0);\n"
     "  gl_FragData[0] = vec4(colour.rgb * (1.0 - coverage * (1.0 - a)),\n"
@@ -524,6 +566,8 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     program->SetUniformi("prCompositeDepth", internals.Depth->GetTextureUnit());
     program->SetUniformi("prOcclusion", occlusion->GetTextureUnit());
     program->SetUniformi("prVerticalBlur", verticalBlur ? 1 : 0);
+    program->SetUniformi("prStep", step);
+    program->SetUniformMatrix4x4("prCompositeInverseProjection", inv);
     const int vertical[2] = { 0, 1 };
     program->SetUniform2i("prDirection", vertical);
     program->SetUniformf("prDepthTolerance", static_cast<float>(tolerance));
@@ -578,5 +622,6 @@ void vtkPointAOPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthScaling: " << this->DepthScaling << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "Blur: " << this->Blur << "\n";
+  os << indent << "HalfResolution: " << this->HalfResolution << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
 }

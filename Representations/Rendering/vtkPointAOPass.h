@@ -183,6 +183,17 @@ public:
 
   ///@{
   /**
+   * Occlusion and blur at half the window's size (every second pixel of the G-buffer), brought
+   * back to full size by a depth-aware upsampling in the composite: about a quarter of their
+   * cost. Default off.
+   */
+  vtkSetMacro(HalfResolution, bool);
+  vtkGetMacro(HalfResolution, bool);
+  vtkBooleanMacro(HalfResolution, bool);
+  ///@}
+
+  ///@{
+  /**
    * GPU time of the last Render()'s stages (timer queries, read at the next Render() or by
    * GetStageSeconds): 0 the scene into the G-buffer, 1 the occlusion, 2 the horizontal blur,
    * 3 the composite with the vertical blur. Off by default (the queries cost a little).
@@ -214,6 +225,7 @@ protected:
   bool DepthScaling = true;
   double Strength = 1.4;
   bool Blur = true;
+  bool HalfResolution = false;
   bool CollectTimings = false;
 
 private:

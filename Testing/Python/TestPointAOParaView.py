@@ -97,6 +97,13 @@ def full_test():
     if not (mean is not None and 0.05 < mean < 6.0):
         print("FAIL: the direction count does not reach the pass (or changes too much)")
         ok = False
+    view.PointAOHalfResolution = 1
+    worst, mean = pr.difference(occluded, shot("half"))
+    view.PointAOHalfResolution = 0
+    print("half resolution: max %s, mean %.2f /255" % (worst, mean))
+    if not (mean is not None and 0.05 < mean < 8.0):
+        print("FAIL: half resolution does not reach the pass (or changes too much)")
+        ok = False
     if pr.max_abs_difference(occluded, shot("again")) != 0:
         print("FAIL: back to the defaults does not give the same picture")
         ok = False

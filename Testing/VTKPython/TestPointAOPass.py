@@ -14,6 +14,7 @@ value is the ambient-occlusion factor A in [0, 1]; plain spheres give 1.
   same frame time on llvmpipe).
 - The same AO at twice the window size (in 8 x 8 blocks, as close as the reference's own two
   sizes, and no drift of the mean) and no more frame-to-frame change under a slow orbit than the reference's.
+- Half resolution: the lone sphere untouched, the film's RMSE bounded.
 - Settings reach the pass: Strength 0 is the plain image, the automatic radius is four mean
   radii, a set radius is used as it is, blur off is noisier.
 - Bad input: an empty view, a view of background only, an extreme clipping range (1e-3 ...
@@ -146,6 +147,10 @@ for parallel in (False, True):
     ao = pr.vtkPointAOPass()
     lone.pass_(ao)
     shaded = lone.image()
+    ao.SetHalfResolution(True)
+    halved = lone.image()
+    ao.SetHalfResolution(False)
+    check(int(np.abs(halved - plain).max()) <= 1, "a lone sphere is darkened at half resolution")
     covered = int((plain[:, :, 0] > 0).sum())
     worst = int(np.abs(shaded - plain).max())
     print("lone sphere (%s): %d pixels, max change %d/255, radius %.2f"
@@ -269,6 +274,17 @@ for name, view, bound, band_bound in (("lj_film.vtp", view_film, 0.17, 0.17),
               % (["%.4f" % c for c in changes], ["%.4f" % c for c in ref_changes]))
         check(max(changes) <= max(ref_changes), "orbit flicker %.4f above the reference's %.4f"
               % (max(changes), max(ref_changes)))
+
+        # half resolution: a quarter of the occlusion texels, upsampled by depth
+        half = pr.vtkPointAOPass()
+        half.SetHalfResolution(True)
+        scene.pass_(half)
+        view(scene)
+        halved = scene.ao()
+        e_half, b_half = rmse(halved, ref, mask)
+        print("half resolution: RMSE %.3f (bias %+.3f)" % (e_half, b_half))
+        check(np.isfinite(halved).all() and e_half <= 0.25 and e_half < 0.6 * e_none,
+              "half resolution: RMSE %.3f" % e_half)
 
         # the settings reach the pass
         scene.pass_(ao)
