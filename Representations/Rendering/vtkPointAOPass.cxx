@@ -104,6 +104,7 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> BlurQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   bool WarnedTranslucent = false;
+  bool WarnedViewport = false;
   // GPU times: G-buffer, occlusion, blur, composite
   vtkParticleStageTimer Timer{ 4 };
 
@@ -277,6 +278,27 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     return;
+  }
+  if (!s->GetFrameBuffer())
+  {
+    // A renderer with a viewport smaller than its window (several renderers side by side in
+    // plain VTK) gets the delegate's camera set up for the window, not for the G-buffer: drawn
+    // without AO rather than distorted.
+    const int* windowSize = context->GetSize();
+    if (x0 != 0 || y0 != 0 || width != windowSize[0] || height != windowSize[1])
+    {
+      if (!internals.WarnedViewport)
+      {
+        vtkWarningMacro(<< "PointAO needs a renderer that fills its window (this one covers "
+                        << width << " x " << height << " pixels at (" << x0 << ", " << y0
+                        << ") of " << windowSize[0] << " x " << windowSize[1]
+                        << "): it is drawn without ambient occlusion.");
+        internals.WarnedViewport = true;
+      }
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+      return;
+    }
   }
   if (internals.Context != context)
   {

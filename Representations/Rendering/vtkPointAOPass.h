@@ -76,6 +76,10 @@
  *   occluders and are not darkened where nothing opaque lies behind them: translucent
  *   particles get a warning (once) pointing to the object-space passes.
  *
+ * A renderer whose viewport does not fill its window (several renderers side by side in one
+ * plain VTK window) is drawn without ambient occlusion, with a warning: the delegate's camera
+ * pass sets up the window's viewport, not the G-buffer's. ParaView's views fill their windows.
+ *
  * The shader code does not depend on the settings (uniforms), so changing them recompiles
  * nothing. Needs OpenGL 3.2 (fragment shaders only). GetStageSeconds() gives GPU times of the
  * stages (timer queries) when CollectTimings is on.

@@ -18,7 +18,8 @@ value is the ambient-occlusion factor A in [0, 1]; plain spheres give 1.
 - Settings reach the pass: Strength 0 is the plain image, the automatic radius is four mean
   radii, a set radius is used as it is, blur off is noisier.
 - Bad input: an empty view, a view of background only, an extreme clipping range (1e-3 ...
-  1e7), a surface and unlit lines next to the particles: sane images, no error.
+  1e7), a surface and unlit lines next to the particles: sane images, no error; a renderer that
+  does not fill its window: drawn without AO (with a warning), not distorted.
 """
 import os
 import sys
@@ -356,6 +357,41 @@ print("particles on a slab with a line: %.1f %% of the lit pixels darkened"
 check((shaded <= plain + 1.0 / 255).all(), "PointAO brightens pixels")
 check((shaded < plain - 0.02).sum() > 1000, "the slab and particles are not darkened")
 check(not mixed.messages.text, "surface and lines: messages %s" % mixed.messages.text)
+
+# a renderer that does not fill its window (two side by side): drawn without AO, with a
+# warning, never distorted
+from vtkmodules.vtkRenderingCore import vtkRenderWindow  # noqa: E402
+
+
+def side_by_side(with_pass):
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(240, 120)
+    scenes = []
+    messages = None
+    for k in range(2):
+        scene = Scene(mixed.data, 120)
+        scene.renderer.SetViewport(0.5 * k, 0.0, 0.5 * (k + 1), 1.0)
+        view_film(scene)
+        if with_pass and k == 0:
+            split_pass = pr.vtkPointAOPass()
+            messages = Messages(split_pass)
+            scene.pass_(split_pass)
+        window.AddRenderer(scene.renderer)
+        scenes.append(scene)
+    window.Render()
+    return grab_image(window)[:, :3], scenes, messages
+
+
+split_plain, _, _ = side_by_side(False)
+split_ao, split_scenes, split_messages = side_by_side(True)
+print("side by side: max difference %d, warnings %s"
+      % (int(np.abs(split_ao - split_plain).max()), split_messages.warnings))
+check(int(np.abs(split_ao - split_plain).max()) <= 1,
+      "a renderer not filling its window is changed (distorted)")
+check(any("fills its window" in w for w in split_messages.warnings),
+      "no warning for a renderer not filling its window")
 
 # an extreme clipping range: no NaN, nothing brighter, the particles still drawn
 mixed.renderer.RemoveActor(cube_actor)
