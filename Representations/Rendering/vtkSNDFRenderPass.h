@@ -119,7 +119,9 @@
  * actors (particles or other geometry: what lies behind them would have to be attenuated),
  * props that are not actors (volumes, images, 2D actors), vtkMetaballMapper (it draws through
  * its own targets), contexts without OpenGL 4.3 compute shaders, a vtkPointAOPass inside this pass
- * (screen-space occlusion darkens the composited image; the samples need it per fragment). vtkTransparentSphereMapper
+ * (screen-space occlusion darkens the composited image; the samples need it per fragment).
+ * A renderer whose viewport does not fill its window (renderers side by side in plain VTK) is
+ * rendered plainly too (the delegate's camera pass sets up the window's viewport). vtkTransparentSphereMapper
  * (ParaView's Particles representation) is sampled while all its particles are opaque: it then
  * draws them through the core's opaque path. The background, plain or gradient, is sampled with the particles. Without particle
  * props the pass renders the delegate directly.

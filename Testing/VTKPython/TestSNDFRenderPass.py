@@ -633,4 +633,19 @@ plain_translucent = image(plain_translucent_window)
 check(np.array_equal(translucent, plain_translucent) and len(messages.warnings) == 1,
       "a translucent particle actor: one warning, the plain image (%s)" % messages.text)
 
+# a renderer that does not fill its window (the left half): a warning, the plain image
+sndf = pr.vtkSNDFRenderPass()
+sndf.SetSamplesPerFrame(4)
+messages = Messages(sndf)
+renderer, window, _ = scene(xyz, rgb, (2 * W, H), sndf)
+renderer.SetViewport(0.0, 0.0, 0.5, 1.0)
+half_view = image(window, 2 * W, H)
+image(window, 2 * W, H)
+plain_renderer, plain_window, _ = scene(xyz, rgb, (2 * W, H))
+plain_renderer.SetViewport(0.0, 0.0, 0.5, 1.0)
+plain_half = image(plain_window, 2 * W, H)
+check(np.array_equal(half_view, plain_half) and len(messages.warnings) == 1 and
+      sndf.GetNumberOfSamples() == 0,
+      "a renderer not filling its window: one warning, the plain image (%s)" % messages.text)
+
 sys.exit(finish())
