@@ -127,8 +127,10 @@ class Scene:
         self.reset_camera()
         return min(times)
 
-    def image(self):
-        self.reset_camera()
+    def image(self, reset=True):
+        """The first channel of the window as A in [0, 1] (reset: at the scene's camera)."""
+        if reset:
+            self.reset_camera()
         self.frame()
         grab = vtkWindowToImageFilter()
         grab.SetInput(self.window)
@@ -137,21 +139,25 @@ class Scene:
         rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
         return rgb.reshape(self.size, self.size, -1)[:, :, 0].astype(np.float64) / 255.0
 
-    def reference(self, samples, distance):
+    def reference(self, samples, distance, reset=True):
+        """(A, mask of the particle pixels, seconds) of the reference at the scene's camera
+        (reset) or the current one; the particle ids of its pixels in self.reference_ids."""
         ref = pr.vtkParticleReferenceRenderer()
         ref.SetRenderer(self.renderer)
         ref.SetActor(self.actor)
         ref.SetImageSize(self.size, self.size)
         ref.SetAmbientOcclusionSamples(samples)
         ref.SetAmbientOcclusionDistance(distance)
-        self.reset_camera()
+        if reset:
+            self.reset_camera()
         start = time.perf_counter()
         ref.Render()
         seconds = time.perf_counter() - start
         ao = vtk_to_numpy(ref.GetAmbientOcclusionImage().GetPointData().GetScalars())
         ids = vtk_to_numpy(ref.GetIdImage())
+        self.reference_ids = ids.reshape(self.size, self.size).copy()
         return (ao.reshape(self.size, self.size).astype(np.float64),
-                ids.reshape(self.size, self.size) >= 0, seconds)
+                self.reference_ids >= 0, seconds)
 
 
 def errors(ao, ref, mask):

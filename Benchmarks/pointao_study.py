@@ -76,17 +76,20 @@ def stability(scene, make_pass, ref, mask, distance, samples):
     scene.reset_camera()
     camera = scene.renderer.GetActiveCamera()
     previous = scene.image() if make_pass else ref
-    previous_ids = reference_here(scene, distance, 1)[2]
+    scene.reference(1, distance, reset=False)
+    previous_ids = scene.reference_ids
     changes = []
     for _ in range(2):
         camera.Azimuth(0.25)
         scene.renderer.ResetCameraClippingRange()
         scene.frame()
         if make_pass:
-            current = grab(scene)
-            ids = reference_here(scene, distance, 1)[2]
+            current = scene.image(reset=False)
+            scene.reference(1, distance, reset=False)
+            ids = scene.reference_ids
         else:
-            current, _, ids = reference_here(scene, distance, samples)
+            current = scene.reference(samples, distance, reset=False)[0]
+            ids = scene.reference_ids
         still = static(previous_ids, ids)
         changes.append(float(np.abs(current - previous)[still].mean()))
         previous, previous_ids = current, ids
@@ -111,33 +114,6 @@ def static(ids_a, ids_b):
     for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
         same &= np.roll(np.roll(ids_a, dy, 0), dx, 1) == ids_a
     return same
-
-
-def grab(scene):
-    """The current image without resetting the camera."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
-    grabber = vtkWindowToImageFilter()
-    grabber.SetInput(scene.window)
-    grabber.ReadFrontBufferOff()
-    grabber.Update()
-    rgb = vtk_to_numpy(grabber.GetOutput().GetPointData().GetScalars())
-    return rgb.reshape(scene.size, scene.size, -1)[:, :, 0].astype(np.float64) / 255.0
-
-
-def reference_here(scene, distance, samples=64):
-    """The reference at the current camera (not reset)."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    ref = pr.vtkParticleReferenceRenderer()
-    ref.SetRenderer(scene.renderer)
-    ref.SetActor(scene.actor)
-    ref.SetImageSize(scene.size, scene.size)
-    ref.SetAmbientOcclusionSamples(samples)
-    ref.SetAmbientOcclusionDistance(distance)
-    ref.Render()
-    ao = vtk_to_numpy(ref.GetAmbientOcclusionImage().GetPointData().GetScalars())
-    ids = vtk_to_numpy(ref.GetIdImage()).reshape(scene.size, scene.size)
-    return ao.reshape(scene.size, scene.size).astype(np.float64), ids >= 0, ids.copy()
 
 
 class StudyScene(ao_study.Scene):

@@ -2,7 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -19,8 +19,7 @@
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkParticleStageTimer.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
+#include "vtkParticleViewport.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
@@ -30,8 +29,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkPointAOPass);
 
@@ -41,41 +43,26 @@ namespace
 // PostReplaceShaderValues: the G-buffer's normal
 const char* const NormalTag = "//PR::PointAO::Normal";
 
-// The mean world radius of the spheres of one particle prop: at most 65536 radii read, evenly
-// spaced (finite, positive ones), times the mapper's radius scale and the actor's scale.
-// Returns false when the prop has no usable radius.
+// The mean world radius of the spheres of one particle prop: at most 65536 of the radii the
+// mapper draws with, evenly spaced (the positive ones), times the mapper's radius scale and the
+// actor's scale. Returns false when the prop has no particle to draw.
 bool MeanRadius(vtkActor* actor, vtkParticleSphereMapper* mapper, double& mean, double& count)
 {
-  vtkPolyData* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
-  if (n <= 0)
+  vtkFloatArray* radii = mapper->GetParticleRadii();
+  const vtkIdType n = radii ? radii->GetNumberOfTuples() : 0;
+  const vtkIdType step = std::max<vtkIdType>(1, n / 65536);
+  double sum = 0.0;
+  vtkIdType used = 0;
+  for (vtkIdType i = 0; i < n; i += step)
   {
-    return false;
-  }
-  double radius = mapper->GetRadius();
-  const char* name = mapper->GetRadiusArrayName();
-  vtkDataArray* radii = (name && *name) ? input->GetPointData()->GetArray(name) : nullptr;
-  if (radii && radii->GetNumberOfComponents() == 1 && radii->GetNumberOfTuples() == n)
-  {
-    const vtkIdType step = std::max<vtkIdType>(1, n / 65536);
-    double sum = 0.0;
-    vtkIdType used = 0;
-    for (vtkIdType i = 0; i < n; i += step)
+    const float r = radii->GetValue(i);
+    if (std::isfinite(r) && r > 0.0f)
     {
-      const double r = radii->GetComponent(i, 0);
-      if (std::isfinite(r) && r > 0.0)
-      {
-        sum += r;
-        ++used;
-      }
+      sum += r;
+      ++used;
     }
-    if (used == 0)
-    {
-      return false;
-    }
-    radius = sum / static_cast<double>(used);
   }
-  radius *= mapper->GetRadiusScaleVC(actor);
+  const double radius = used > 0 ? sum / used * mapper->GetRadiusScaleVC(actor) : 0.0;
   if (!(radius > 0.0) || !std::isfinite(radius))
   {
     return false;
@@ -104,6 +91,9 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> BlurQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   bool WarnedTranslucent = false;
+  // the mean particle radius of the automatic Radius, and what it was computed from
+  double MeanRadius = 0.0;
+  std::vector<double> RadiusKey;
   bool WarnedViewport = false;
   // GPU times: G-buffer, occlusion, blur, composite
   vtkParticleStageTimer Timer{ 4 };
@@ -279,26 +269,18 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     return;
   }
-  if (!s->GetFrameBuffer())
+  std::string part;
+  if (!vtkParticleViewport::FillsTarget(s, part))
   {
-    // A renderer with a viewport smaller than its window (several renderers side by side in
-    // plain VTK) gets the delegate's camera set up for the window, not for the G-buffer: drawn
-    // without AO rather than distorted.
-    const int* windowSize = context->GetSize();
-    if (x0 != 0 || y0 != 0 || width != windowSize[0] || height != windowSize[1])
+    if (!internals.WarnedViewport)
     {
-      if (!internals.WarnedViewport)
-      {
-        vtkWarningMacro(<< "PointAO needs a renderer that fills its window (this one covers "
-                        << width << " x " << height << " pixels at (" << x0 << ", " << y0
-                        << ") of " << windowSize[0] << " x " << windowSize[1]
-                        << "): it is drawn without ambient occlusion.");
-        internals.WarnedViewport = true;
-      }
-      this->DelegatePass->Render(s);
-      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-      return;
+      vtkWarningMacro(<< "PointAO needs a renderer that fills its window (this one covers "
+                      << part << "): it is drawn without ambient occlusion.");
+      internals.WarnedViewport = true;
     }
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
   }
   if (internals.Context != context)
   {
@@ -337,23 +319,43 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   double radius = this->Radius;
   if (!(radius > 0.0))
   {
-    double sum = 0.0;
-    double count = 0.0;
+    // the particle props and what their mean radius depends on: read again only when that
+    // changed (new particles, radii, radius scale or actor placement), not every frame
+    std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> particles;
+    std::vector<double> key;
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
       vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
       auto* mapper = actor ? vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-      double mean = 0.0;
-      double n = 0.0;
-      if (mapper && actor->GetVisibility() && MeanRadius(actor, mapper, mean, n))
+      if (mapper && actor->GetVisibility())
       {
-        sum += mean * n;
-        count += n;
+        particles.emplace_back(actor, mapper);
+        key.insert(key.end(),
+          { static_cast<double>(reinterpret_cast<std::uintptr_t>(actor)),
+            static_cast<double>(mapper->GetParticleGeometryTime()),
+            mapper->GetRadiusScaleVC(actor) });
       }
     }
-    if (count > 0.0)
+    if (key != internals.RadiusKey)
     {
-      radius = 4.0 * sum / count;
+      double sum = 0.0;
+      double count = 0.0;
+      for (const auto& particle : particles)
+      {
+        double mean = 0.0;
+        double n = 0.0;
+        if (MeanRadius(particle.first, particle.second, mean, n))
+        {
+          sum += mean * n;
+          count += n;
+        }
+      }
+      internals.MeanRadius = count > 0.0 ? sum / count : 0.0;
+      internals.RadiusKey = key;
+    }
+    if (internals.MeanRadius > 0.0)
+    {
+      radius = 4.0 * internals.MeanRadius;
     }
     else
     {

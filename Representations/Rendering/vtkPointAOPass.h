@@ -68,8 +68,9 @@
  *   smear the occlusion across silhouettes. The vertical half runs in the composite (one
  *   full-screen pass less). Off: the raw, noisy estimate.
  * - Radius 0 (default) means automatic: four mean particle radii (over the visible
- *   vtkParticleSphereMapper props, at most 65536 radii read per prop), or 2 % of the visible
- *   props' bounding-box diagonal when there are no particles.
+ *   vtkParticleSphereMapper props, at most 65536 of each mapper's drawn radii, read again only
+ *   when the particles, radii or actor placement change), or 2 % of the visible props'
+ *   bounding-box diagonal when there are no particles.
  * - Translucent geometry (ParaView's depth peeling, vtkTransparentSphereMapper) is drawn over
  *   the opaque scene by the delegate; the occlusion of the opaque surface behind a translucent
  *   layer darkens the composited pixel (as vtkSSAOPass does). Translucent surfaces are not

@@ -24,6 +24,7 @@
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleStageTimer.h"
+#include "vtkParticleViewport.h"
 #include "vtkPointAOPass.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
@@ -585,23 +586,16 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     renderPlain();
     return;
   }
-  if (!s->GetFrameBuffer())
+  std::string part;
+  if (!vtkParticleViewport::FillsTarget(s, part))
   {
-    // a renderer with a viewport smaller than its window (renderers side by side in plain
-    // VTK): the delegate's camera pass sets up the window's viewport, not the sample target's
-    const int* windowSize = context->GetSize();
-    if (x0 != 0 || y0 != 0 || width != windowSize[0] || height != windowSize[1])
+    if (internals.FirstWarning("viewport"))
     {
-      if (internals.FirstWarning("viewport"))
-      {
-        vtkWarningMacro(<< "S-NDF shading needs a renderer that fills its window (this one covers "
-                        << width << " x " << height << " pixels at (" << x0 << ", " << y0
-                        << ") of " << windowSize[0] << " x " << windowSize[1]
-                        << "): the view is rendered as without it.");
-      }
-      renderPlain();
-      return;
+      vtkWarningMacro(<< "S-NDF shading needs a renderer that fills its window (this one covers "
+                      << part << "): the view is rendered as without it.");
     }
+    renderPlain();
+    return;
   }
 
   // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up

@@ -483,20 +483,21 @@ def big_parallel(sndf, scale):
     return renderer, window
 
 
-sndf = pr.vtkSNDFRenderPass()
-sndf.SetSamplesPerFrame(64)
-sndf.SetTargetSamples(64)
-renderer, window = big_parallel(sndf, 6.0)
-image(window, BW, BH)
-converge(sndf, window)
+def converged_big_parallel(scale):
+    """A big_parallel view with a pass of 64 samples per frame, converged to 64 samples."""
+    sndf = pr.vtkSNDFRenderPass()
+    sndf.SetSamplesPerFrame(64)
+    sndf.SetTargetSamples(64)
+    renderer, window = big_parallel(sndf, scale)
+    image(window, BW, BH)
+    converge(sndf, window)
+    return sndf, renderer, window
+
+
+sndf, renderer, window = converged_big_parallel(6.0)
 renderer.GetActiveCamera().SetParallelScale(12.0)
 zoomed_big = image(window, BW, BH)
-direct = pr.vtkSNDFRenderPass()
-direct.SetSamplesPerFrame(64)
-direct.SetTargetSamples(64)
-_, direct_window = big_parallel(direct, 12.0)
-image(direct_window, BW, BH)
-converge(direct, direct_window)
+direct, _, direct_window = converged_big_parallel(12.0)
 middle = (slice(BH // 4 + 1, 3 * BH // 4 - 1), slice(BW // 4 + 1, 3 * BW // 4 - 1))
 big_zoom = error(zoomed_big[middle], image(direct_window, BW, BH)[middle])
 cache = sndf.GetTileCache()
