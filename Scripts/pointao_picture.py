@@ -9,16 +9,11 @@ usage: PYTHONPATH=build/lib/python3/dist-packages Scripts/with_xvfb.sh /usr/bin/
 """
 import argparse
 
-import numpy as np
-
 import particlerendering as pr
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from prPictures import window_rgb, write_panels
 from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
@@ -91,13 +86,7 @@ def render(path, method, size):
     renderer.ResetCamera()
     camera.Zoom(1.4)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
-    window.Finalize()
-    return rgb.reshape(size, size, 3)
+    return window_rgb(window, size)
 
 
 def main():
@@ -106,15 +95,7 @@ def main():
     parser.add_argument("--out", default="Plugin/Documentation/pointao-film.png")
     parser.add_argument("--size", type=int, default=300)
     args = parser.parse_args()
-    image = np.concatenate([render(args.data, m, args.size) for m in METHODS], axis=1)
-    out = vtkImageData()
-    out.SetDimensions(image.shape[1], image.shape[0], 1)
-    out.GetPointData().SetScalars(numpy_to_vtk(np.ascontiguousarray(image.reshape(-1, 3)),
-                                               deep=True))
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.out)
-    writer.SetInputData(out)
-    writer.Write()
+    write_panels([render(args.data, m, args.size) for m in METHODS], args.out)
     print("wrote", args.out, "(left to right: %s)" % ", ".join(METHODS))
 
 

@@ -9,15 +9,11 @@ usage: PYTHONPATH=build/lib/python3/dist-packages Scripts/with_xvfb.sh /usr/bin/
 """
 import argparse
 
-import numpy as np
-
 import particlerendering as pr
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from prPictures import window_rgb, write_panels
 from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
@@ -64,13 +60,7 @@ def render(path, mode, size):
     camera.SetViewAngle(30.0)
     renderer.ResetCameraClippingRange()
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
-    window.Finalize()
-    return rgb.reshape(size, size, 3)
+    return window_rgb(window, size)
 
 
 def main():
@@ -80,16 +70,7 @@ def main():
     parser.add_argument("--size", type=int, default=360)
     args = parser.parse_args()
     panels = [render(args.data, mode, args.size) for mode in ("none", "occlusion", "illumination")]
-    image = np.concatenate(panels, axis=1)  # rows bottom-up, as VTK's
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    out = vtkImageData()
-    out.SetDimensions(image.shape[1], image.shape[0], 1)
-    array = numpy_to_vtk(np.ascontiguousarray(image.reshape(-1, 3)), deep=True)
-    out.GetPointData().SetScalars(array)
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.out)
-    writer.SetInputData(out)
-    writer.Write()
+    write_panels(panels, args.out)
     print("wrote", args.out)
 
 
