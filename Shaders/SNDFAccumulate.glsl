@@ -25,18 +25,20 @@
 //   [2] = (sum S(bin), number of particle samples Nc)
 //   [3] = (sum AO, number of samples N, 0, 0)   (N per texel: after a pan the
 //         texels it uncovered have fewer than the others)
-// D and S are the lighting table's diffuse and specular rows (SNDFResolve.glsl).
-// Shading is linear in the samples for a fixed table, so [1].rgb and [2].rgb
-// are the shaded bin sums of SNDFResolve.glsl kept up to date sample by
-// sample: a refinement frame costs O(1) per pixel, not O(bins); only a new
+// D(bin) and S(bin) stand for a bin's shaded contribution with the lighting
+// table's slopes (prSNDFBinShade, SNDFBins.glsl). [1].rgb and [2].rgb are the
+// sums over the bins of those contributions, kept up to date sample by
+// sample (a sample changes one bin: its contribution is taken out and put
+// back in): a refinement frame costs O(1) per pixel, not O(bins); only a new
 // table (re-lighting) sums the bins again.
-// Per bin two words (prBinWord()): its sample count (low 16 bits) and the
+// Per bin three words (SNDFBins.glsl): its sample count (low 16 bits) and the
 // running mean of AO * diffuseColor of its samples, 16-bit fixed point over
-// [0, 2] per channel (R in the high half of word 0, G and B in word 1): the
-// colour is kept per bin because colour and normal are correlated where
-// about one particle covers a pixel (two species split it along their
-// silhouettes). After the bins, prBins^2 / 32 words (at least one) mark the
-// occupied bins, so that re-lighting visits those only.
+// [0, 2] per channel (R in the high half of word 0, G and B in word 1), and
+// the running mean of the samples' bin coordinates (word 2): the colour is
+// kept per bin because colour and normal are correlated where about one
+// particle covers a pixel (two species split it along their silhouettes).
+// After the bins, prBins^2 / 32 words (at least one) mark the occupied bins,
+// so that re-lighting visits those only.
 //=========================================================================
 layout(local_size_x = 16, local_size_y = 16) in;
 // (dispatch: (4, 4, tiles))
@@ -82,18 +84,32 @@ void main()
     vec3 diffuse = clamp(prFinite(vec4(ao * texelFetch(prDiffuse, p, 0).rgb, 0.0)).rgb, 0.0, 2.0);
     uint bin = prSNDFBin(normal.xy, prBins);
     uint bins = prBinWordAddress(texel);
-    uint w0 = prBinWordAt(bins, 2u * bin);
-    uint w1 = prBinWordAt(bins, 2u * bin + 1u);
+    uint base = prSNDFWordsPerBin * bin;
+    uint w0 = prBinWordAt(bins, base);
+    uint w1 = prBinWordAt(bins, base + 1u);
+    uint w2 = prBinWordAt(bins, base + 2u);
+    vec3 oldDiffuse;
+    vec3 oldSpecular;
+    prSNDFBinShadeWords(prTable, int(bin), w0, w1, w2, oldDiffuse, oldSpecular);
     uint count = (w0 & 0xFFFFu) + 1u;
     vec3 mean = prSNDFUnpackMean(w0, w1);
     mean += (diffuse - mean) / float(count);
+    vec2 u = prSNDFUnpackOffset(w2);
+    u += (prSNDFBinCoordinates(normal.xy, prBins) - u) / float(count);
     prSNDFPackMean(count, mean, w0, w1);
-    prSetBinWordAt(bins, 2u * bin, w0);
-    prSetBinWordAt(bins, 2u * bin + 1u, w1);
-    uint mask = uint(2 * prBins * prBins) + (bin >> 5u);
+    w2 = prSNDFPackOffset(u);
+    prSetBinWordAt(bins, base, w0);
+    prSetBinWordAt(bins, base + 1u, w1);
+    prSetBinWordAt(bins, base + 2u, w2);
+    uint mask = prSNDFMaskWord(prBins) + (bin >> 5u);
     prSetBinWordAt(bins, mask, prBinWordAt(bins, mask) | (1u << (bin & 31u)));
-    s1.rgb += diffuse * texelFetch(prTable, ivec2(int(bin), 0), 0).rgb;
-    prSetSumAt(sums, 2u, prSumAt(sums, 2u) + vec4(texelFetch(prTable, ivec2(int(bin), 1), 0).rgb, 1.0));
+    // the texel's shaded sums follow the bin's new contribution (SNDFBins.glsl), computed from
+    // the stored words as SNDFRebake.glsl computes it
+    vec3 newDiffuse;
+    vec3 newSpecular;
+    prSNDFBinShadeWords(prTable, int(bin), w0, w1, w2, newDiffuse, newSpecular);
+    s1.rgb += newDiffuse - oldDiffuse;
+    prSetSumAt(sums, 2u, prSumAt(sums, 2u) + vec4(newSpecular - oldSpecular, 1.0));
     s3.x += ao;
   }
   s3.y += 1.0;

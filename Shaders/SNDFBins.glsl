@@ -6,12 +6,50 @@
 // (i, j) is number j * prBins + i. The accumulation bins samples with
 // prSNDFBin; the lighting table integrates over bin ∩ disk with
 // prSNDFBinPoint (Eqs. 12-14).
+//
+// Storage of a bin (SNDFAccumulate.glsl): three words -- its sample count and
+// the running mean of its samples' AO * diffuse colour (word 0: count, R;
+// word 1: G, B), and the running mean of where in the bin its samples fell
+// (word 2: the sample's bin coordinates u in [0, 1]^2, prSNDFBinCoordinates).
+// After the bins, prSNDFMaskWord(bins) is the first of the words that mark the
+// occupied bins.
+//
+// Shading a bin (prSNDFBinShade). The lighting table (vtkSNDFRenderPass,
+// SNDFLightingTable.glsl) has seven rows per bin b:
+//   0: D(b)  mean diffuse light sum over bin ∩ disk  (Eq. 13's L~(D_i))
+//   1: S(b)  mean specular light sum
+//   2, 3: d D / d u.x, d D / d u.y   least-squares slopes over bin ∩ disk
+//   4, 5: d S / d u.x, d S / d u.y
+//   6: (u.x, u.y) of the centroid of bin ∩ disk
+// A bin with c samples, mean colour m and mean bin coordinates u adds
+//   diffuse   c m (D + dD/du . (u - centroid))
+//   specular  c (S + dS/du . (u - centroid))
+// For samples spread uniformly over the bin u is its centroid and this is the
+// paper's pre-integrated bin value; where the samples crowd into part of the
+// bin (a particle several pixels wide: each pixel sees a small patch of one
+// sphere) the slope moves the value towards the light at that patch, so the
+// shading is not quantised into facets.
 //=========================================================================
+
+const uint prSNDFWordsPerBin = 3u;
+
+uint prSNDFMaskWord(int bins)
+{
+  return prSNDFWordsPerBin * uint(bins * bins);
+}
 
 uint prSNDFBin(vec2 nxy, int bins)
 {
   ivec2 cell = clamp(ivec2(floor((nxy + 1.0) * 0.5 * float(bins))), ivec2(0), ivec2(bins - 1));
   return uint(cell.y * bins + cell.x);
+}
+
+// Where in its bin's square the projected normal lies: [0, 1]^2.
+vec2 prSNDFBinCoordinates(vec2 nxy, int bins)
+{
+  vec2 f = (nxy + 1.0) * 0.5 * float(bins);
+  vec2 cell = clamp(floor(f), vec2(0.0), vec2(float(bins - 1)));
+  return clamp(f - cell, 0.0, 1.0);
 }
 
 // The normal at the sub-sample (u, v) in [0, 1]^2 of bin `bin`; false outside the unit disk.
@@ -35,4 +73,38 @@ void prSNDFPackMean(uint count, vec3 mean, out uint w0, out uint w1)
   uvec3 q = uvec3(clamp(mean, 0.0, 2.0) * (65535.0 / 2.0) + 0.5);
   w0 = min(count, 0xFFFFu) | (q.r << 16u);
   w1 = q.g | (q.b << 16u);
+}
+
+// A bin's mean bin coordinates in one word (16-bit fixed point per axis).
+vec2 prSNDFUnpackOffset(uint w2)
+{
+  return vec2(float(w2 & 0xFFFFu), float(w2 >> 16u)) * (1.0 / 65535.0);
+}
+
+uint prSNDFPackOffset(vec2 u)
+{
+  uvec2 q = uvec2(clamp(u, 0.0, 1.0) * 65535.0 + 0.5);
+  return q.x | (q.y << 16u);
+}
+
+// The diffuse and specular sums a bin adds to its texel (see above), from the table
+// `table` (a sampler2D: GLSL 4.3 takes samplers as arguments).
+void prSNDFBinShade(sampler2D table, int bin, float count, vec3 mean, vec2 u,
+  out vec3 diffuse, out vec3 specular)
+{
+  vec2 du = u - texelFetch(table, ivec2(bin, 6), 0).xy;
+  diffuse = count * mean *
+    (texelFetch(table, ivec2(bin, 0), 0).rgb + du.x * texelFetch(table, ivec2(bin, 2), 0).rgb +
+      du.y * texelFetch(table, ivec2(bin, 3), 0).rgb);
+  specular = count *
+    (texelFetch(table, ivec2(bin, 1), 0).rgb + du.x * texelFetch(table, ivec2(bin, 4), 0).rgb +
+      du.y * texelFetch(table, ivec2(bin, 5), 0).rgb);
+}
+
+// The same from the bin's three stored words.
+void prSNDFBinShadeWords(sampler2D table, int bin, uint w0, uint w1, uint w2,
+  out vec3 diffuse, out vec3 specular)
+{
+  prSNDFBinShade(table, bin, float(w0 & 0xFFFFu), prSNDFUnpackMean(w0, w1),
+    prSNDFUnpackOffset(w2), diffuse, specular);
 }

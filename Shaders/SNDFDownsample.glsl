@@ -9,9 +9,12 @@
 // children with different sample counts N weigh the same; the texel then
 // holds N' = min(sum N, prMaxSamples) samples, its bin counts and sums are
 // N' / prFactor^2 * sum over the children of (count or sum) / N (exact
-// integers where the children hold equal counts), each bin's mean colour is
-// the children's mean weighted by their normalised counts, the nearest depth
-// the nearest of the children. A texel with a child that is not in the cache
+// integers where the children hold equal counts), each bin's mean colour and
+// mean bin coordinates are the children's means weighted by their normalised
+// counts, the nearest depth the nearest of the children; the shaded bin sums
+// ([1].rgb, [2].rgb) are summed from the averaged bins with the table prTable
+// (as SNDFRebake.glsl does, so that a later re-light changes nothing but the
+// light). A texel with a child that is not in the cache
 // or holds no sample stays empty (the pass samples it).
 //
 // Two phases, so that each dispatch binds one part of the pool (one bin and
@@ -20,9 +23,10 @@
 // prPartial (prFirst: the first such dispatch starts the records from
 // zero); prPhase 1, with the destination's part bound, writes the texels
 // from the records. A record: [0] the children's weighted colour sums,
-// [1] (weighted D-sums, nearest 1 - depth), [2] weighted (S-sums, Nc),
-// [3] (weighted AO sum, sum N, children found, 0), then per bin (weighted
-// count, weighted count * mean colour).
+// [1].w the nearest 1 - depth, [2].w the weighted Nc,
+// [3] (weighted AO sum, sum N, children found, 0), then per bin two:
+// (weighted count, weighted count * mean colour), (weighted count * mean bin
+// coordinates, 0, 0).
 //
 // The page table of SNDFTiles.glsl maps the children's tile rectangle;
 // child (i, j) of texel d is position d * prFactor + (i, j) there. The
@@ -36,6 +40,7 @@ uniform int prDestSlot;
 uniform int prFactor;
 uniform int prBins;
 uniform float prMaxSamples;
+uniform sampler2D prTable;
 
 //PR::Include SNDFBins
 //PR::Include SNDFTiles
@@ -49,8 +54,8 @@ void main()
 {
   ivec2 d = ivec2(gl_GlobalInvocationID.xy);
   int binCount = prBins * prBins;
-  uint record = uint((d.y * prTileSize + d.x) * (4 + binCount));
-  uint binWords = uint(2 * binCount);
+  uint record = uint((d.y * prTileSize + d.x) * (4 + 2 * binCount));
+  uint binWords = prSNDFMaskWord(prBins);
   int maskWords = max(1, binCount / 32);
 
   if (prPhase == 0)
@@ -62,7 +67,7 @@ void main()
     }
     if (prFirst != 0)
     {
-      for (int b = 0; b < binCount; ++b)
+      for (int b = 0; b < 2 * binCount; ++b)
       {
         prPartial[record + 4u + uint(b)] = vec4(0.0);
       }
@@ -83,9 +88,8 @@ void main()
       }
       float weight = 1.0 / s3.y;
       head[0] += weight * prSumAt(sums, 0u);
-      vec4 s1 = prSumAt(sums, 1u);
-      head[1] = vec4(head[1].rgb + weight * s1.rgb, max(head[1].w, s1.w));
-      head[2] += weight * prSumAt(sums, 2u);
+      head[1].w = max(head[1].w, prSumAt(sums, 1u).w);
+      head[2].w += weight * prSumAt(sums, 2u).w;
       head[3] += vec4(weight * s3.x, s3.y, 1.0, 0.0);
       uint bins = prBinWordAddress(texel);
       for (int m = 0; m < maskWords; ++m)
@@ -96,10 +100,13 @@ void main()
           int bit = findLSB(mask);
           mask &= mask - 1u;
           uint bin = uint(32 * m + bit);
-          uint w0 = prBinWordAt(bins, 2u * bin);
+          uint base = prSNDFWordsPerBin * bin;
+          uint w0 = prBinWordAt(bins, base);
           float share = weight * float(w0 & 0xFFFFu);
-          vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, 2u * bin + 1u));
-          prPartial[record + 4u + bin] += vec4(share, share * mean);
+          vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, base + 1u));
+          vec2 u = prSNDFUnpackOffset(prBinWordAt(bins, base + 2u));
+          prPartial[record + 4u + 2u * bin] += vec4(share, share * mean);
+          prPartial[record + 5u + 2u * bin] += vec4(share * u, 0.0, 0.0);
         }
       }
     }
@@ -123,28 +130,38 @@ void main()
   uint destSums = prSumAddress(dest);
   vec4 h1 = prPartial[record + 1u];
   prSetSumAt(destSums, 0u, scale * prPartial[record]);
-  prSetSumAt(destSums, 1u, vec4(scale * h1.rgb, h1.w));
-  prSetSumAt(destSums, 2u, scale * prPartial[record + 2u]);
-  prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
   uint destBins = prBinWordAddress(dest);
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
   for (int m = 0; m < maskWords; ++m)
   {
     uint occupied = 0u;
     for (int bit = 0; bit < 32 && 32 * m + bit < binCount; ++bit)
     {
       uint bin = uint(32 * m + bit);
-      vec4 entry = prPartial[record + 4u + bin];
+      vec4 entry = prPartial[record + 4u + 2u * bin];
       uint q = min(uint(scale * entry.x + 0.5), 0xFFFFu);
       if (entry.x > 0.0 && q > 0u)
       {
         uint w0;
         uint w1;
         prSNDFPackMean(q, entry.yzw / entry.x, w0, w1);
-        prSetBinWordAt(destBins, 2u * bin, w0);
-        prSetBinWordAt(destBins, 2u * bin + 1u, w1);
+        uint w2 = prSNDFPackOffset(prPartial[record + 5u + 2u * bin].xy / entry.x);
+        uint base = prSNDFWordsPerBin * bin;
+        prSetBinWordAt(destBins, base, w0);
+        prSetBinWordAt(destBins, base + 1u, w1);
+        prSetBinWordAt(destBins, base + 2u, w2);
         occupied |= 1u << uint(bit);
+        vec3 d;
+        vec3 s;
+        prSNDFBinShadeWords(prTable, int(bin), w0, w1, w2, d, s);
+        diffuse += d;
+        specular += s;
       }
     }
     prSetBinWordAt(destBins, binWords + uint(m), occupied);
   }
+  prSetSumAt(destSums, 1u, vec4(diffuse, h1.w));
+  prSetSumAt(destSums, 2u, vec4(specular, scale * prPartial[record + 2u].w));
+  prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
 }

@@ -12,6 +12,7 @@
 //PR::Include SNDFBins
 //PR::Include Lighting
 uniform int prBins;
+uniform int prTableRows;
 uniform int prSubsamples;
 uniform float prSpecularPower;
 uniform float prViewDistance;

@@ -6,6 +6,7 @@
 //
 //   prSums[1].rgb = sum_b c_b mean_b(AO diffuse) D(b)
 //   prSums[2].rgb = sum_b c_b S(b)
+// (D and S with the table's slopes at the bin's mean position: SNDFBins.glsl)
 //
 // (see SNDFAccumulate.glsl for the storage). No sample is taken again.
 // Dispatch: (4, 4, number of tiles) groups of 16 x 16; group z rebakes the
@@ -32,7 +33,7 @@ void main()
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
   uint words = prBinWordAddress(texel);
-  uint masks = uint(2 * prBins * prBins);
+  uint masks = prSNDFMaskWord(prBins);
   int maskWords = max(1, prBins * prBins / 32);
   for (int m = 0; m < maskWords; ++m)
   {
@@ -42,11 +43,13 @@ void main()
       int bit = findLSB(mask);
       mask &= mask - 1u;
       int bin = 32 * m + bit;
-      uint w0 = prBinWordAt(words, 2u * uint(bin));
-      float count = float(w0 & 0xFFFFu);
-      vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(words, 2u * uint(bin) + 1u));
-      diffuse += count * mean * texelFetch(prTable, ivec2(bin, 0), 0).rgb;
-      specular += count * texelFetch(prTable, ivec2(bin, 1), 0).rgb;
+      uint base = prSNDFWordsPerBin * uint(bin);
+      vec3 d;
+      vec3 s;
+      prSNDFBinShadeWords(prTable, bin, prBinWordAt(words, base), prBinWordAt(words, base + 1u),
+        prBinWordAt(words, base + 2u), d, s);
+      diffuse += d;
+      specular += s;
     }
   }
   prSetSumAt(sums, 1u, vec4(diffuse, prSumAt(sums, 1u).w));

@@ -52,6 +52,8 @@ const unsigned int NumberOfAttachments = 3;
 // sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
 // the bins per axis, at least 8)
 const int TableSubsamplesPerAxis = 512;
+// rows of the lighting table per bin (SNDFBins.glsl): D, S, their slopes in u.x and u.y, the centroid
+const int TableRows = 7;
 
 // sample passes in one Render() from which it reports progress
 const int ProgressSamples = 8;
@@ -893,33 +895,63 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
         vtkParticleShaders::Get("SNDFLightingTable") + "\n" + source);
       vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl",
-        "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), 2.0));\n"
-        "  vec3 prSum = vec3(0.0);\n"
+        "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), float(prTableRows)));\n"
+        "  int prRow = prTexel.y;\n"
+        "  int prLight = (prRow == 1 || prRow == 4 || prRow == 5) ? 1 : 0;\n"
         "  float prN = 0.0;\n"
+        "  vec2 prU = vec2(0.0);\n"
+        "  vec3 prUU = vec3(0.0);\n"
+        "  vec3 prF = vec3(0.0);\n"
+        "  vec3 prUFx = vec3(0.0);\n"
+        "  vec3 prUFy = vec3(0.0);\n"
         "  for (int i = 0; i < prSubsamples; ++i)\n"
         "  {\n"
         "    for (int j = 0; j < prSubsamples; ++j)\n"
         "    {\n"
+        "      vec2 prUV = (vec2(i, j) + 0.5) / float(prSubsamples);\n"
         "      vec3 prNormal;\n"
-        "      if (prSNDFBinPoint(prTexel.x, prBins, (vec2(i, j) + 0.5) / float(prSubsamples),"
-        " prNormal))\n"
+        "      if (prSNDFBinPoint(prTexel.x, prBins, prUV, prNormal))\n"
         "      {\n"
-        "        prSum += prLightSum(prNormal, prTexel.y);\n"
+        "        vec3 prValue = prRow == 6 ? vec3(0.0) : prLightSum(prNormal, prLight);\n"
         "        prN += 1.0;\n"
+        "        prU += prUV;\n"
+        "        prUU += vec3(prUV.x * prUV.x, prUV.x * prUV.y, prUV.y * prUV.y);\n"
+        "        prF += prValue;\n"
+        "        prUFx += prUV.x * prValue;\n"
+        "        prUFy += prUV.y * prValue;\n"
         "      }\n"
         "    }\n"
         "  }\n"
+        "  vec3 prOut = vec3(0.0);\n"
         "  if (prN == 0.0)\n"
         "  {\n"
         "    // a bin outside the disk holds no sample; give it the normal of the rim point nearest\n"
-        "    // to its centre\n"
+        "    // to its centre and no slope\n"
         "    vec3 prCentre;\n"
         "    prSNDFBinPoint(prTexel.x, prBins, vec2(0.5), prCentre);\n"
         "    vec2 prRim = normalize(prCentre.xy) * 0.9999;\n"
-        "    prSum = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), prTexel.y);\n"
-        "    prN = 1.0;\n"
+        "    vec3 prValue = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), prLight);\n"
+        "    prOut = prRow < 2 ? prValue : (prRow == 6 ? vec3(0.5, 0.5, 0.0) : vec3(0.0));\n"
         "  }\n"
-        "  gl_FragData[0] = vec4(prSum / prN, 1.0);\n");
+        "  else\n"
+        "  {\n"
+        "    // least-squares plane f = mean + slope . (u - centroid) over bin ∩ disk (the\n"
+        "    // covariance regularised by 1e-4: a sliver of a bin at the rim gets no slope across it)\n"
+        "    vec2 prMeanU = prU / prN;\n"
+        "    vec3 prMeanF = prF / prN;\n"
+        "    float prCxx = prUU.x / prN - prMeanU.x * prMeanU.x + 1.0e-4;\n"
+        "    float prCxy = prUU.y / prN - prMeanU.x * prMeanU.y;\n"
+        "    float prCyy = prUU.z / prN - prMeanU.y * prMeanU.y + 1.0e-4;\n"
+        "    vec3 prCxf = prUFx / prN - prMeanU.x * prMeanF;\n"
+        "    vec3 prCyf = prUFy / prN - prMeanU.y * prMeanF;\n"
+        "    float prDet = prCxx * prCyy - prCxy * prCxy;\n"
+        "    vec3 prSlopeX = (prCyy * prCxf - prCxy * prCyf) / prDet;\n"
+        "    vec3 prSlopeY = (prCxx * prCyf - prCxy * prCxf) / prDet;\n"
+        "    prOut = prRow < 2 ? prMeanF\n"
+        "      : (prRow == 6 ? vec3(prMeanU, 0.0)\n"
+        "      : ((prRow == 2 || prRow == 4) ? prSlopeX : prSlopeY));\n"
+        "  }\n"
+        "  gl_FragData[0] = vec4(prOut, 1.0);\n");
       internals.TableQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, fs.c_str(), nullptr));
       internals.TableQuadSource = source;
     }
@@ -937,7 +969,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       internals.Table->SetInternalFormat(GL_RGBA32F);
       internals.Table->SetFormat(GL_RGBA);
       internals.Table->SetDataType(GL_FLOAT);
-      internals.Table->Allocate2D(bins * bins, 2, 4, VTK_FLOAT);
+      internals.Table->Allocate2D(bins * bins, TableRows, 4, VTK_FLOAT);
       internals.TableTarget->SetContext(context);
       ostate->PushFramebufferBindings();
       internals.TableTarget->Bind();
@@ -949,6 +981,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     context->GetShaderCache()->ReadyShaderProgram(quad->Program);
     ren->UpdateLightingUniforms(quad->Program);
     quad->Program->SetUniformi("prBins", bins);
+    quad->Program->SetUniformi("prTableRows", TableRows);
     quad->Program->SetUniformi("prSubsamples", std::max(32, TableSubsamplesPerAxis / bins));
     quad->Program->SetUniformf("prSpecularPower", static_cast<float>(material->GetSpecularPower()));
     quad->Program->SetUniformf("prViewDistance", static_cast<float>(camera->GetDistance()));
@@ -962,8 +995,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
       ostate->vtkglDisable(GL_DEPTH_TEST);
       ostate->vtkglDisable(GL_BLEND);
-      ostate->vtkglViewport(0, 0, bins * bins, 2);
-      ostate->vtkglScissor(0, 0, bins * bins, 2);
+      ostate->vtkglViewport(0, 0, bins * bins, TableRows);
+      ostate->vtkglScissor(0, 0, bins * bins, TableRows);
       quad->Render();
     }
     ostate->PopFramebufferBindings();
@@ -1234,12 +1267,12 @@ bool vtkSNDFRenderPass::GetLightingTable(vtkFloatArray* table)
     return false;
   }
   const int n = internals.TableBins * internals.TableBins;
-  std::vector<float> texels(static_cast<std::size_t>(n) * 2 * 4);
+  std::vector<float> texels(static_cast<std::size_t>(n) * TableRows * 4);
   internals.Table->Bind();
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, texels.data());
   table->SetNumberOfComponents(3);
-  table->SetNumberOfTuples(2 * n);
-  for (int t = 0; t < 2 * n; ++t)
+  table->SetNumberOfTuples(TableRows * n);
+  for (int t = 0; t < TableRows * n; ++t)
   {
     table->SetTypedTuple(t, &texels[4 * static_cast<std::size_t>(t)]);
   }

@@ -285,7 +285,8 @@ vtkSNDFTileCache::~vtkSNDFTileCache()
 //------------------------------------------------------------------------------
 int vtkSNDFTileCache::GetWordsPerTexel(int bins)
 {
-  return 2 * bins * bins + std::max(1, bins * bins / 32);
+  // (three words per bin, SNDFBins.glsl, then the occupancy bits)
+  return 3 * bins * bins + std::max(1, bins * bins / 32);
 }
 
 //------------------------------------------------------------------------------
@@ -582,7 +583,7 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         rebake();
         // phase 0 once per part that holds children (into per-texel records), phase 1 into the
         // destination (SNDFDownsample.glsl)
-        const std::size_t partialBytes = TileTexels * (4 + this->Bins * this->Bins) * 16;
+        const std::size_t partialBytes = TileTexels * (4 + 2 * this->Bins * this->Bins) * 16;
         if (internals.PartialBytes < partialBytes)
         {
           vtkParticleComputeProgram::AllocateStorage(internals.Partial, partialBytes);
@@ -612,8 +613,11 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         program->SetUniformi("prPhase", 1);
         internals.BindPart(program,
           std::make_pair(slot / internals.SlotsPerBinBuffer, slot / internals.SlotsPerSumBuffer));
+        table->Activate(); // (the averaged bins are shaded with the current table)
+        program->SetUniformi("prTable", table->GetTextureUnit());
         program->Dispatch(TileSize / 16, TileSize / 16);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        table->Deactivate();
         vtkParticleComputeProgram::UseNone();
         ++this->NumberOfDownsampledTiles;
         averaged = true;

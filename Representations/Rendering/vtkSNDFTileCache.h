@@ -28,7 +28,7 @@
  *
  * Storage. A texel's bins and its sums live in two families of shader-storage buffers, each
  * buffer a whole number of tiles within the context's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (128 MB
- * on llvmpipe: 63 tiles of 8 x 8 bins, 512 tiles of sums), so that no shader addresses beyond a
+ * on llvmpipe: 42 tiles of 8 x 8 bins, 512 tiles of sums), so that no shader addresses beyond a
  * block. A (bin buffer, sum buffer) pair is a part of the pool; the per-frame shaders
  * (accumulation, shade, sample count, rebake) bind one part and run one dispatch per part over
  * the list of the view's tiles in it, one invocation per texel; the zoom's averaging gathers a

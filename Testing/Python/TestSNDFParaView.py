@@ -129,8 +129,8 @@ if not args.must_fail:
     print("plain vs 16x16 super-sampled: mean %.2f p99 %.1f max %.1f /255" % plain_error)
     print("S-NDF vs 16x16 super-sampled: mean %.2f p99 %.1f max %.1f /255" % sndf_error)
     check(plain_error[0] > 2.0, "the plain image aliases (mean %.2f)" % plain_error[0])
-    check(sndf_error[0] < 1.0 and sndf_error[1] < 6.0 and sndf_error[2] < 12.0,
-          "S-NDF within mean 1, p99 6, max 12 /255 of the super-sampled view")
+    check(sndf_error[0] < 0.5 and sndf_error[1] < 4.5 and sndf_error[2] < 8.0,
+          "S-NDF within mean 0.5, p99 4.5, max 8 /255 of the super-sampled view")
 
     # --- FXAA (ParaView's default in many settings) is off while S-NDF shading is on ----------
     view.UseFXAA = 1
