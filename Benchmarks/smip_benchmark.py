@@ -37,8 +37,6 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkLight
 
-args = sys.argv[1:6] + ["63", "8", "1280", "720", "64"][len(sys.argv[1:6]):]
-cells, repeat, width, height, samples = (int(a) for a in args)
 here = os.path.dirname(os.path.abspath(__file__))
 results = os.path.join(here, "results")
 
@@ -68,10 +66,13 @@ def timed(window):
     return time.perf_counter() - t
 
 
-def make_view(scene, sndf):
+def make_view(scene, sndf, size=None, zoom=1.0):
+    """The scene in a window of `size` (default width x height) with its parallel scale divided by
+    `zoom` (a window of half the size with zoom 2 shows the centre of the full view at the same
+    pixel size)."""
     xyz, rgb, radii, position, focal, scale = scene
-    renderer, window, actor = crystal_view(xyz, rgb, (width, height), sndf, position=position,
-                                           focal_point=focal)
+    renderer, window, actor = crystal_view(xyz, rgb, size or (width, height), sndf,
+                                           position=position, focal_point=focal)
     if radii is not None:
         mapper = actor.GetMapper()
         array = numpy_to_vtk(radii, deep=True)
@@ -80,13 +81,13 @@ def make_view(scene, sndf):
         mapper.SetRadiusArrayName("radius")
     camera = renderer.GetActiveCamera()
     camera.ParallelProjectionOn()
-    camera.SetParallelScale(scale)
+    camera.SetParallelScale(scale / zoom)
     renderer.ResetCameraClippingRange()
     return renderer, window
 
 
-def pan(camera, right, up):
-    pan_camera(camera, right, up, height)
+def pan(camera, right, up, view_height=None):
+    pan_camera(camera, right, up, view_height or height)
 
 
 def converge(sndf, window):
@@ -96,7 +97,7 @@ def converge(sndf, window):
     return times
 
 
-def measure(name, scene):
+def measure(name, scene, samples):
     renderer, window = make_view(scene, None)
     timed(window)
     plain = np.mean([timed(window) for _ in range(3)])
@@ -104,7 +105,7 @@ def measure(name, scene):
     sndf = pr.vtkSNDFRenderPass()
     sndf.SetSamplesPerFrame(1)
     sndf.SetTargetSamples(samples)
-    sndf.SetMaximumMemory(3000)  # level 0 over four views and level 1: five views of tiles
+    sndf.SetMaximumMemory(4000)  # level 0 over four views and level 1: five views of tiles
     renderer, window = make_view(scene, sndf)
     camera = renderer.GetActiveCamera()
     timed(window)  # the frame of the change
@@ -159,55 +160,77 @@ def measure(name, scene):
             tiles, slots, memory]
 
 
-scenes = []
-xyz, rgb = fcc_crystal(cells)
-scenes.append(("crystal", (xyz, rgb, None, (2.5 * cells, 1.9 * cells, 3.4 * cells),
-                           (cells / 2, cells / 2, cells / 2), 0.6 * cells)))
-lxyz, lrgb, lradii = liquid(repeat)
-centre = 0.5 * (lxyz.min(axis=0) + lxyz.max(axis=0))
-extent = lxyz.max(axis=0) - lxyz.min(axis=0)
-scenes.append(("liquid", (lxyz, lrgb, lradii, tuple(centre + np.array([0.3, -0.9, 1.0]) * extent[0]),
-                          tuple(centre), 0.3 * extent[0])))
+def make_scenes(cells, repeat):
+    """[(name, (xyz, rgb, radii, camera position, focal point, parallel scale))]: the crystal
+    and the liquid seen whole (the parallel scale for a view `height` pixels high)."""
+    scenes = []
+    xyz, rgb = fcc_crystal(cells)
+    scenes.append(("crystal", (xyz, rgb, None, (2.5 * cells, 1.9 * cells, 3.4 * cells),
+                               (cells / 2, cells / 2, cells / 2), 0.6 * cells)))
+    lxyz, lrgb, lradii = liquid(repeat)
+    centre = 0.5 * (lxyz.min(axis=0) + lxyz.max(axis=0))
+    extent = lxyz.max(axis=0) - lxyz.min(axis=0)
+    scenes.append(("liquid", (lxyz, lrgb, lradii,
+                              tuple(centre + np.array([0.3, -0.9, 1.0]) * extent[0]),
+                              tuple(centre), 0.3 * extent[0])))
+    return scenes
 
-header = ("scene,particles,width,height,samples,plain_s,sample_pass_s,zoom_tiles_averaged,"
-          "zoom_out_s,resample_level1_s,resample_over_zoom,zoom_mean_255,zoom_p99_255,"
-          "zoom_max_255,pan_back_s,restart_s,relight_s,cache_tiles,cache_slots,cache_MB\n")
-path = os.path.join(results, "smip_timings.csv")
-for name, scene in scenes:
-    row = measure(name, scene)
-    new = not os.path.exists(path)
-    with open(path, "a") as f:
-        if new:
-            f.write(header)
-        f.write(",".join("%.6g" % v if isinstance(v, (float, np.floating)) else str(v) for v in row) + "\n")
-    print(header.strip())
-    print(",".join(str(v) for v in row), flush=True)
 
-# the plot: per scene, the frame times of each operation (last row per scene)
-import csv  # noqa: E402
+# the view size the helpers use (set by main(); smip_quality.py sets its own)
+width, height = 1280, 720
 
-import matplotlib  # noqa: E402
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
-rows = {}
-with open(path) as f:
-    for r in csv.DictReader(f):
-        rows[r["scene"]] = r
-ops = [("plain frame", "plain_s"), ("one sample pass", "sample_pass_s"),
-       ("zoom out (averaged)", "zoom_out_s"), ("re-sample level 1", "resample_level1_s"),
-       ("pan back (cached)", "pan_back_s"), ("restart (plain)", "restart_s"),
-       ("re-light", "relight_s")]
-fig, ax = plt.subplots(figsize=(9, 4.5))
-w = 0.8 / max(1, len(rows))
-for k, (name, r) in enumerate(rows.items()):
-    ax.bar(np.arange(len(ops)) + k * w, [float(r[c]) for _, c in ops], w,
-           label="%s (%s atoms)" % (name, r["particles"]))
-ax.set_xticks(np.arange(len(ops)) + w * (len(rows) - 1) / 2)
-ax.set_xticklabels([o for o, _ in ops], rotation=20, ha="right")
-ax.set_yscale("log")
-ax.set_ylabel("seconds (llvmpipe)")
-ax.set_title("S-MIP operations at %sx%s, %s samples per pixel" % (width, height, samples))
-ax.legend()
-fig.tight_layout()
-fig.savefig(os.path.join(results, "smip_timings.png"), dpi=100)
+def main():
+    global width, height
+    args = sys.argv[1:6] + ["63", "8", "1280", "720", "64"][len(sys.argv[1:6]):]
+    cells, repeat, width, height, samples = (int(a) for a in args)
+    run(make_scenes(cells, repeat), samples)
+
+
+def run(scenes, samples):
+    header = ("scene,particles,width,height,samples,plain_s,sample_pass_s,zoom_tiles_averaged,"
+              "zoom_out_s,resample_level1_s,resample_over_zoom,zoom_mean_255,zoom_p99_255,"
+              "zoom_max_255,pan_back_s,restart_s,relight_s,cache_tiles,cache_slots,cache_MB\n")
+    path = os.path.join(results, "smip_timings.csv")
+    for name, scene in scenes:
+        row = measure(name, scene, samples)
+        new = not os.path.exists(path)
+        with open(path, "a") as f:
+            if new:
+                f.write(header)
+            f.write(",".join("%.6g" % v if isinstance(v, (float, np.floating)) else str(v) for v in row) + "\n")
+        print(header.strip())
+        print(",".join(str(v) for v in row), flush=True)
+
+    # the plot: per scene, the frame times of each operation (last row per scene)
+    import csv
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            rows[r["scene"]] = r
+    ops = [("plain frame", "plain_s"), ("one sample pass", "sample_pass_s"),
+           ("zoom out (averaged)", "zoom_out_s"), ("re-sample level 1", "resample_level1_s"),
+           ("pan back (cached)", "pan_back_s"), ("restart (plain)", "restart_s"),
+           ("re-light", "relight_s")]
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    w = 0.8 / max(1, len(rows))
+    for k, (name, r) in enumerate(rows.items()):
+        ax.bar(np.arange(len(ops)) + k * w, [float(r[c]) for _, c in ops], w,
+               label="%s (%s atoms)" % (name, r["particles"]))
+    ax.set_xticks(np.arange(len(ops)) + w * (len(rows) - 1) / 2)
+    ax.set_xticklabels([o for o, _ in ops], rotation=20, ha="right")
+    ax.set_yscale("log")
+    ax.set_ylabel("seconds (llvmpipe)")
+    ax.set_title("S-MIP operations at %sx%s, %s samples per pixel" % (width, height, samples))
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(results, "smip_timings.png"), dpi=100)
+
+
+if __name__ == "__main__":
+    main()

@@ -88,9 +88,10 @@ void main()
     uint w0 = prBinWordAt(bins, base);
     uint w1 = prBinWordAt(bins, base + 1u);
     uint w2 = prBinWordAt(bins, base + 2u);
+    prSNDFBinLight light = prSNDFTableRows(prTable, int(bin));
     vec3 oldDiffuse;
     vec3 oldSpecular;
-    prSNDFBinShadeWords(prTable, int(bin), w0, w1, w2, oldDiffuse, oldSpecular);
+    prSNDFBinShade(light, w0, w1, w2, oldDiffuse, oldSpecular);
     uint count = (w0 & 0xFFFFu) + 1u;
     vec3 mean = prSNDFUnpackMean(w0, w1);
     mean += (diffuse - mean) / float(count);
@@ -107,7 +108,7 @@ void main()
     // the stored words as SNDFRebake.glsl computes it
     vec3 newDiffuse;
     vec3 newSpecular;
-    prSNDFBinShadeWords(prTable, int(bin), w0, w1, w2, newDiffuse, newSpecular);
+    prSNDFBinShade(light, w0, w1, w2, newDiffuse, newSpecular);
     s1.rgb += newDiffuse - oldDiffuse;
     prSetSumAt(sums, 2u, prSumAt(sums, 2u) + vec4(newSpecular - oldSpecular, 1.0));
     s3.x += ao;

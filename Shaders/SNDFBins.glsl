@@ -87,24 +87,45 @@ uint prSNDFPackOffset(vec2 u)
   return q.x | (q.y << 16u);
 }
 
-// The diffuse and specular sums a bin adds to its texel (see above), from the table
-// `table` (a sampler2D: GLSL 4.3 takes samplers as arguments).
-void prSNDFBinShade(sampler2D table, int bin, float count, vec3 mean, vec2 u,
-  out vec3 diffuse, out vec3 specular)
+// A bin's seven rows of the lighting table (see above).
+struct prSNDFBinLight
 {
-  vec2 du = u - texelFetch(table, ivec2(bin, 6), 0).xy;
-  diffuse = count * mean *
-    (texelFetch(table, ivec2(bin, 0), 0).rgb + du.x * texelFetch(table, ivec2(bin, 2), 0).rgb +
-      du.y * texelFetch(table, ivec2(bin, 3), 0).rgb);
-  specular = count *
-    (texelFetch(table, ivec2(bin, 1), 0).rgb + du.x * texelFetch(table, ivec2(bin, 4), 0).rgb +
-      du.y * texelFetch(table, ivec2(bin, 5), 0).rgb);
+  vec3 D;
+  vec3 S;
+  vec3 DX;
+  vec3 DY;
+  vec3 SX;
+  vec3 SY;
+  vec2 Centroid;
+};
+
+// `table` is a sampler2D (GLSL takes samplers as arguments).
+prSNDFBinLight prSNDFTableRows(sampler2D table, int bin)
+{
+  prSNDFBinLight light;
+  light.D = texelFetch(table, ivec2(bin, 0), 0).rgb;
+  light.S = texelFetch(table, ivec2(bin, 1), 0).rgb;
+  light.DX = texelFetch(table, ivec2(bin, 2), 0).rgb;
+  light.DY = texelFetch(table, ivec2(bin, 3), 0).rgb;
+  light.SX = texelFetch(table, ivec2(bin, 4), 0).rgb;
+  light.SY = texelFetch(table, ivec2(bin, 5), 0).rgb;
+  light.Centroid = texelFetch(table, ivec2(bin, 6), 0).xy;
+  return light;
 }
 
-// The same from the bin's three stored words.
+// The diffuse and specular sums a bin with `count` samples, mean colour `mean` and mean bin
+// coordinates `u` adds to its texel (see above), from its three stored words.
+void prSNDFBinShade(prSNDFBinLight light, uint w0, uint w1, uint w2,
+  out vec3 diffuse, out vec3 specular)
+{
+  float count = float(w0 & 0xFFFFu);
+  vec2 du = prSNDFUnpackOffset(w2) - light.Centroid;
+  diffuse = count * prSNDFUnpackMean(w0, w1) * (light.D + du.x * light.DX + du.y * light.DY);
+  specular = count * (light.S + du.x * light.SX + du.y * light.SY);
+}
+
 void prSNDFBinShadeWords(sampler2D table, int bin, uint w0, uint w1, uint w2,
   out vec3 diffuse, out vec3 specular)
 {
-  prSNDFBinShade(table, bin, float(w0 & 0xFFFFu), prSNDFUnpackMean(w0, w1),
-    prSNDFUnpackOffset(w2), diffuse, specular);
+  prSNDFBinShade(prSNDFTableRows(table, bin), w0, w1, w2, diffuse, specular);
 }

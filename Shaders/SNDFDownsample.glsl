@@ -11,22 +11,28 @@
 // N' / prFactor^2 * sum over the children of (count or sum) / N (exact
 // integers where the children hold equal counts), each bin's mean colour and
 // mean bin coordinates are the children's means weighted by their normalised
-// counts, the nearest depth the nearest of the children; the shaded bin sums
-// ([1].rgb, [2].rgb) are summed from the averaged bins with the table prTable
-// (as SNDFRebake.glsl does, so that a later re-light changes nothing but the
-// light). A texel with a child that is not in the cache
+// counts, the nearest depth the nearest of the children. The shaded bin sums
+// ([1].rgb, [2].rgb) are the children's, averaged like the rest: they differ
+// from the sums a re-light forms from the averaged bins (SNDFRebake.glsl) by
+// the covariance, within a bin, of the children's mean colours and mean bin
+// positions only (shading the averaged bins here instead tripled the time of
+// a zoom on llvmpipe). A texel with a child that is not in the cache
 // or holds no sample stays empty (the pass samples it).
 //
 // Two phases, so that each dispatch binds one part of the pool (one bin and
 // one sum buffer, SNDFTiles.glsl): prPhase 0, once per part that holds
 // children, adds the children in that part to a per-texel record in
-// prPartial (prFirst: the first such dispatch starts the records from
-// zero); prPhase 1, with the destination's part bound, writes the texels
-// from the records. A record: [0] the children's weighted colour sums,
-// [1].w the nearest 1 - depth, [2].w the weighted Nc,
-// [3] (weighted AO sum, sum N, children found, 0), then per bin two:
-// (weighted count, weighted count * mean colour), (weighted count * mean bin
-// coordinates, 0, 0).
+// prPartial (prFirst: the first such dispatch starts the records); prPhase
+// 1, with the destination's part bound, writes the texels from the records.
+// A record (uvec4s): [0] the children's weighted colour sums, [1] (weighted
+// shaded diffuse sums, nearest 1 - depth), [2] weighted (shaded specular
+// sums, Nc), [3] (weighted AO sum, sum N, children found, 0) as float bits,
+// then the occupancy bits of the record's bins (prMaskVec4s uvec4s), then
+// one uvec4 per bin: its weighted count (float bits) and the running
+// weighted means of its colour (16 bits per channel over [0, 2]) and of its
+// bin coordinates (16 bits per axis). A bin's entry is written when the
+// record first meets it and only read where the occupancy bits say so: the
+// records are never cleared, and phase 1 visits the occupied bins only.
 //
 // The page table of SNDFTiles.glsl maps the children's tile rectangle;
 // child (i, j) of texel d is position d * prFactor + (i, j) there. The
@@ -40,37 +46,61 @@ uniform int prDestSlot;
 uniform int prFactor;
 uniform int prBins;
 uniform float prMaxSamples;
-uniform sampler2D prTable;
 
 //PR::Include SNDFBins
 //PR::Include SNDFTiles
 
 layout(std430, binding = 1) buffer prPartialBuffer
 {
-  vec4 prPartial[];
+  uvec4 prPartial[];
 };
+
+vec4 prLoad(uint i)
+{
+  return uintBitsToFloat(prPartial[i]);
+}
+
+void prStore(uint i, vec4 v)
+{
+  prPartial[i] = floatBitsToUint(v);
+}
+
+// a bin entry: weighted count w, mean colour c over [0, 2], mean bin coordinates u
+uvec4 prPackEntry(float w, vec3 c, vec2 u)
+{
+  uvec3 qc = uvec3(clamp(c, 0.0, 2.0) * (65535.0 / 2.0) + 0.5);
+  uvec2 qu = uvec2(clamp(u, 0.0, 1.0) * 65535.0 + 0.5);
+  return uvec4(floatBitsToUint(w), qc.r | (qc.g << 16u), qc.b | (qu.x << 16u), qu.y);
+}
+
+void prUnpackEntry(uvec4 e, out float w, out vec3 c, out vec2 u)
+{
+  w = uintBitsToFloat(e.x);
+  c = vec3(float(e.y & 0xFFFFu), float(e.y >> 16u), float(e.z & 0xFFFFu)) * (2.0 / 65535.0);
+  u = vec2(float(e.z >> 16u), float(e.w & 0xFFFFu)) * (1.0 / 65535.0);
+}
 
 void main()
 {
   ivec2 d = ivec2(gl_GlobalInvocationID.xy);
   int binCount = prBins * prBins;
-  uint record = uint((d.y * prTileSize + d.x) * (4 + 2 * binCount));
-  uint binWords = prSNDFMaskWord(prBins);
   int maskWords = max(1, binCount / 32);
+  uint maskVec4s = uint((maskWords + 3) / 4);
+  uint record = uint(d.y * prTileSize + d.x) * (4u + maskVec4s + uint(binCount));
+  uint entries = record + 4u + maskVec4s;
+  uint binWords = prSNDFMaskWord(prBins);
 
   if (prPhase == 0)
   {
     vec4 head[4];
+    uint masks[8];
     for (int k = 0; k < 4; ++k)
     {
-      head[k] = prFirst != 0 ? vec4(0.0) : prPartial[record + uint(k)];
+      head[k] = prFirst != 0 ? vec4(0.0) : prLoad(record + uint(k));
     }
-    if (prFirst != 0)
+    for (int m = 0; m < maskWords; ++m)
     {
-      for (int b = 0; b < 2 * binCount; ++b)
-      {
-        prPartial[record + 4u + uint(b)] = vec4(0.0);
-      }
+      masks[m] = prFirst != 0 ? 0u : prPartial[record + 4u + uint(m / 4)][m % 4];
     }
     for (int c = 0; c < prFactor * prFactor; ++c)
     {
@@ -88,8 +118,9 @@ void main()
       }
       float weight = 1.0 / s3.y;
       head[0] += weight * prSumAt(sums, 0u);
-      head[1].w = max(head[1].w, prSumAt(sums, 1u).w);
-      head[2].w += weight * prSumAt(sums, 2u).w;
+      vec4 s1 = prSumAt(sums, 1u);
+      head[1] = vec4(head[1].rgb + weight * s1.rgb, max(head[1].w, s1.w));
+      head[2] += weight * prSumAt(sums, 2u);
       head[3] += vec4(weight * s3.x, s3.y, 1.0, 0.0);
       uint bins = prBinWordAddress(texel);
       for (int m = 0; m < maskWords; ++m)
@@ -105,20 +136,35 @@ void main()
           float share = weight * float(w0 & 0xFFFFu);
           vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, base + 1u));
           vec2 u = prSNDFUnpackOffset(prBinWordAt(bins, base + 2u));
-          prPartial[record + 4u + 2u * bin] += vec4(share, share * mean);
-          prPartial[record + 5u + 2u * bin] += vec4(share * u, 0.0, 0.0);
+          if ((masks[m] & (1u << uint(bit))) != 0u)
+          {
+            float w;
+            vec3 c0;
+            vec2 u0;
+            prUnpackEntry(prPartial[entries + bin], w, c0, u0);
+            float t = share / max(w + share, 1.0e-30);
+            mean = mix(c0, mean, t);
+            u = mix(u0, u, t);
+            share += w;
+          }
+          masks[m] |= 1u << uint(bit);
+          prPartial[entries + bin] = prPackEntry(share, mean, u);
         }
       }
     }
     for (int k = 0; k < 4; ++k)
     {
-      prPartial[record + uint(k)] = head[k];
+      prStore(record + uint(k), head[k]);
+    }
+    for (int m = 0; m < maskWords; ++m)
+    {
+      prPartial[record + 4u + uint(m / 4)][m % 4] = masks[m];
     }
     return;
   }
 
   // phase 1: the destination texel, when every child was found
-  vec4 h3 = prPartial[record + 3u];
+  vec4 h3 = prLoad(record + 3u);
   int count = prFactor * prFactor;
   if (int(h3.z + 0.5) < count)
   {
@@ -128,40 +174,38 @@ void main()
   float scale = samples / float(count);
   uint dest = uint(prDestSlot) * prTileTexels + uint(d.y * prTileSize + d.x);
   uint destSums = prSumAddress(dest);
-  vec4 h1 = prPartial[record + 1u];
-  prSetSumAt(destSums, 0u, scale * prPartial[record]);
+  vec4 h1 = prLoad(record + 1u);
+  prSetSumAt(destSums, 0u, scale * prLoad(record));
+  prSetSumAt(destSums, 1u, vec4(scale * h1.rgb, h1.w));
+  prSetSumAt(destSums, 2u, scale * prLoad(record + 2u));
+  prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
   uint destBins = prBinWordAddress(dest);
-  vec3 diffuse = vec3(0.0);
-  vec3 specular = vec3(0.0);
   for (int m = 0; m < maskWords; ++m)
   {
+    uint mask = prPartial[record + 4u + uint(m / 4)][m % 4];
     uint occupied = 0u;
-    for (int bit = 0; bit < 32 && 32 * m + bit < binCount; ++bit)
+    while (mask != 0u)
     {
+      int bit = findLSB(mask);
+      mask &= mask - 1u;
       uint bin = uint(32 * m + bit);
-      vec4 entry = prPartial[record + 4u + 2u * bin];
-      uint q = min(uint(scale * entry.x + 0.5), 0xFFFFu);
-      if (entry.x > 0.0 && q > 0u)
+      float w;
+      vec3 mean;
+      vec2 u;
+      prUnpackEntry(prPartial[entries + bin], w, mean, u);
+      uint q = min(uint(scale * w + 0.5), 0xFFFFu);
+      if (q > 0u)
       {
         uint w0;
         uint w1;
-        prSNDFPackMean(q, entry.yzw / entry.x, w0, w1);
-        uint w2 = prSNDFPackOffset(prPartial[record + 5u + 2u * bin].xy / entry.x);
+        prSNDFPackMean(q, mean, w0, w1);
         uint base = prSNDFWordsPerBin * bin;
         prSetBinWordAt(destBins, base, w0);
         prSetBinWordAt(destBins, base + 1u, w1);
-        prSetBinWordAt(destBins, base + 2u, w2);
+        prSetBinWordAt(destBins, base + 2u, prSNDFPackOffset(u));
         occupied |= 1u << uint(bit);
-        vec3 d;
-        vec3 s;
-        prSNDFBinShadeWords(prTable, int(bin), w0, w1, w2, d, s);
-        diffuse += d;
-        specular += s;
       }
     }
     prSetBinWordAt(destBins, binWords + uint(m), occupied);
   }
-  prSetSumAt(destSums, 1u, vec4(diffuse, h1.w));
-  prSetSumAt(destSums, 2u, vec4(specular, scale * prPartial[record + 2u].w));
-  prSetSumAt(destSums, 3u, vec4(scale * h3.x, samples, 0.0, 0.0));
 }

@@ -833,9 +833,16 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // does not run when nothing is sampled
   internals.Timer.Begin(2);
   internals.Lights->Render(s);
+  // (the view distance places positional lights only (prViewDistance), and to six digits: a
+  // pan moves position and focal point together, changing the distance by rounding errors,
+  // and a new table would rebake every cached tile)
+  const double distance = camera->GetDistance();
+  const double distanceKey = ren->GetLightingComplexity() > 2 && distance > 0.0
+    ? std::round(1e6 * distance / std::pow(10.0, std::floor(std::log10(distance))))
+    : 0.0;
   std::vector<double> tableKey = { static_cast<double>(ren->GetLightingComplexity()),
     static_cast<double>(ren->GetLightingCount()), material->GetSpecularPower(),
-    static_cast<double>(bins), camera->GetDistance() };
+    static_cast<double>(bins), distanceKey };
   vtkLightCollection* lights = ren->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);

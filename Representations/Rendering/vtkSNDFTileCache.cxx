@@ -583,7 +583,9 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         rebake();
         // phase 0 once per part that holds children (into per-texel records), phase 1 into the
         // destination (SNDFDownsample.glsl)
-        const std::size_t partialBytes = TileTexels * (4 + 2 * this->Bins * this->Bins) * 16;
+        const int maskVec4s = (std::max(1, this->Bins * this->Bins / 32) + 3) / 4;
+        const std::size_t partialBytes =
+          TileTexels * (4 + maskVec4s + this->Bins * this->Bins) * 16;
         if (internals.PartialBytes < partialBytes)
         {
           vtkParticleComputeProgram::AllocateStorage(internals.Partial, partialBytes);
@@ -613,11 +615,8 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         program->SetUniformi("prPhase", 1);
         internals.BindPart(program,
           std::make_pair(slot / internals.SlotsPerBinBuffer, slot / internals.SlotsPerSumBuffer));
-        table->Activate(); // (the averaged bins are shaded with the current table)
-        program->SetUniformi("prTable", table->GetTextureUnit());
         program->Dispatch(TileSize / 16, TileSize / 16);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        table->Deactivate();
         vtkParticleComputeProgram::UseNone();
         ++this->NumberOfDownsampledTiles;
         averaged = true;

@@ -381,6 +381,22 @@ check(sndf.GetNumberOfSamples() == 64 and cache.GetNumberOfClearedTiles() > clea
 pan_camera(renderer.GetActiveCamera(), -0.3, 0)
 check(np.array_equal(image(window), before) and sndf.GetNumberOfSamplePasses() == passes + 64,
       "and back: the tiles of the first grid, converged")
+# pans neither rebuild the lighting table nor rebake a tile, although the camera distance
+# changes by rounding errors as position and focal point move together (the table once
+# depended on the exact distance, and a pan of a 10^6-atom view could rebake ~900 tiles)
+pan_sndf, pan_renderer, pan_window = converged_parallel_view()
+pan_cam = pan_renderer.GetActiveCamera()
+builds = pan_sndf.GetNumberOfTableBuilds()
+rebaked = pan_sndf.GetTileCache().GetNumberOfRebakedTiles()
+distances = set()
+for k in range(12):
+    pan_camera(pan_cam, (-1) ** k * (3 + k), 2 - k % 5)
+    distances.add(pan_cam.GetDistance())
+    image(pan_window)
+check(len(distances) > 1 and pan_sndf.GetNumberOfTableBuilds() == builds
+      and pan_sndf.GetTileCache().GetNumberOfRebakedTiles() == rebaked,
+      "12 pans (%d distinct camera distances): no table built, no tile rebaked"
+      % len(distances))
 # a rotation restarts
 renderer.GetActiveCamera().Azimuth(1)
 image(window)
