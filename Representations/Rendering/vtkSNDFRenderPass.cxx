@@ -4,10 +4,12 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
+#include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMetaballMapper.h"
@@ -40,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -99,6 +102,22 @@ void AppendMatrix(std::vector<double>& state, vtkMatrix4x4* m)
 bool IsSampledParticleMapper(vtkAbstractMapper* mapper)
 {
   return vtkParticleSphereMapper::SafeDownCast(mapper) && !vtkMetaballMapper::SafeDownCast(mapper);
+}
+
+// whether the mapper colours by scalars (VTK's vtkMapper::MapScalars decides the same way): its
+// shader's diffuse and ambient colours are then the scalars' (vtkOpenGLPolyDataMapper), not the
+// property's; an input that is not a data set counts as coloured by scalars
+bool UsesScalarColours(vtkMapper* mapper)
+{
+  if (!mapper->GetScalarVisibility())
+  {
+    return false;
+  }
+  vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  int cellFlag = 0;
+  return !input ||
+    vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+      mapper->GetArrayId(), mapper->GetArrayName(), cellFlag) != nullptr;
 }
 }
 
@@ -162,6 +181,21 @@ public:
   std::vector<double> ResolveKey;
   std::set<std::string> Warned;
   std::string ProgressText;
+  // Material re-shading (class description): with one particle actor the samples store its
+  // colours without the property's coefficients, and the shade applies them. RawMaterial is
+  // this frame's mode (SetShaderParameters): 0 the colours as drawn, 1 the diffuse colour
+  // without diffuseIntensity (colours from scalars), 2 white for the diffuse colour and the
+  // ambient term left to the shade (the property's colours). Per particle mapper, what its
+  // shader's colour code showed when it was built (PostReplaceShaderValues): whether it can
+  // write raw colours (VTK's intensities declared) and whether its colours are the
+  // property's; a mapper whose shader disagrees with the prediction samples its material.
+  struct ColourSource
+  {
+    bool Raw = false;
+    bool Solid = false;
+  };
+  std::map<vtkAbstractMapper*, ColourSource> ColourSources;
+  int RawMaterial = 0;
 
   // GPU times of the last timed Render() per stage (sample, accumulate, shade)
   vtkParticleStageTimer Timer{ 3 };
@@ -420,10 +454,46 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
   // marks a particle sample: the delegate's clear may fill the target with the background
   // colour, components in [0, 1]) and the diffuse colour; the colour target keeps the shading
   // that needs no normal (the occluded ambient colour and what the AO source adds)
+  // Where the shade applies the material (RawMaterial, SetShaderParameters) the sample keeps
+  // the diffuse colour without diffuseIntensity (1), or white and no ambient term where the
+  // colours are the property's (2). VTK's colour code (ReplaceShaderColor) computes
+  // diffuseColor = diffuseIntensity * (vertex colour, texture colour or diffuseColorUniform).
+  vtkInternals::ColourSource source;
+  const std::string& fs = fragmentShader;
+  source.Raw = fs.find("uniform float diffuseIntensity") != std::string::npos;
+  source.Solid = fs.find("diffuseIntensity * diffuseColorUniform") != std::string::npos &&
+    fs.find("diffuseIntensity * vertexColorVSOutput") == std::string::npos &&
+    fs.find("diffuseIntensity * texColor") == std::string::npos;
+  this->Internals->ColourSources[mapper] = source;
+  const std::string raw = source.Raw
+    ? "    if (prRawMaterial == 1)\n"
+      "    {\n"
+      "      prSampleDiffuse = diffuseColor / max(diffuseIntensity, 1.0e-30);\n"
+      "    }\n"
+      "    else if (prRawMaterial == 2)\n"
+      "    {\n"
+      "      prSampleDiffuse = vec3(1.0);\n"
+      "      prSampleAmbient = prAmbientLight;\n"
+      "    }\n"
+    : "";
+  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec", "uniform int prRawMaterial;");
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
-    "gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), 1.0);\n"
-    "    gl_FragData[2] = vec4(diffuseColor, 1.0);\n"
-    "    gl_FragData[0] = vec4(prAmbientOcclusion * ambientColor + prAmbientLight, 1.0);");
+    "vec3 prSampleDiffuse = diffuseColor;\n"
+    "    vec3 prSampleAmbient = prAmbientOcclusion * ambientColor + prAmbientLight;\n" + raw +
+      "    gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), 1.0);\n"
+      "    gl_FragData[2] = vec4(prSampleDiffuse, 1.0);\n"
+      "    gl_FragData[0] = vec4(prSampleAmbient, 1.0);");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (IsSampledParticleMapper(mapper) && program->IsUniformUsed("prRawMaterial"))
+  {
+    program->SetUniformi("prRawMaterial", this->Internals->RawMaterial);
+  }
   return true;
 }
 
@@ -479,13 +549,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
         unsupported = "a particle actor is translucent (S-NDFs shade opaque spheres)";
       }
       particles.push_back(actor);
-      // the actor's placement and its material but for the specular settings (they re-shade)
+      // the actor's placement and its material but for the specular settings (they re-shade);
+      // the ambient and diffuse settings are added below unless the shade applies them
       AppendMatrix(state, actor->GetMatrix());
       vtkProperty* p = actor->GetProperty();
-      state.push_back(p->GetAmbient());
-      state.push_back(p->GetDiffuse());
-      state.insert(state.end(), p->GetAmbientColor(), p->GetAmbientColor() + 3);
-      state.insert(state.end(), p->GetDiffuseColor(), p->GetDiffuseColor() + 3);
       state.push_back(p->GetOpacity());
       state.push_back(p->GetLighting());
     }
@@ -513,6 +580,54 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       state.push_back(static_cast<double>(mapper->GetMTime()));
       vtkDataObject* input = mapper->GetInputDataObject(0, 0);
       state.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
+    }
+  }
+  // The particle material (class description, "Material"): with one particle actor the shade
+  // applies the diffuse coefficient (mode 1) or the whole ambient and diffuse material where the
+  // colours are the property's (mode 2); what the samples hold restarts when it changes.
+  internals.RawMaterial = 0;
+  if (particles.size() == 1)
+  {
+    vtkMapper* mapper = particles[0]->GetMapper();
+    const auto known = internals.ColourSources.find(mapper);
+    const bool seen = known != internals.ColourSources.end();
+    if (!seen || known->second.Raw)
+    {
+      if (!UsesScalarColours(mapper) && (!seen || known->second.Solid))
+      {
+        internals.RawMaterial = 2;
+      }
+      else if (particles[0]->GetProperty()->GetDiffuse() > 0.0)
+      {
+        internals.RawMaterial = 1;
+      }
+    }
+  }
+  double diffuseScale[3] = { 1.0, 1.0, 1.0 };
+  double ambientTerm[3] = { 0.0, 0.0, 0.0 };
+  state.push_back(internals.RawMaterial);
+  for (vtkActor* actor : particles)
+  {
+    vtkProperty* p = actor->GetProperty();
+    if (internals.RawMaterial == 2)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        diffuseScale[c] = p->GetDiffuse() * p->GetDiffuseColor()[c];
+        ambientTerm[c] = p->GetAmbient() * p->GetAmbientColor()[c];
+      }
+      continue;
+    }
+    state.push_back(p->GetAmbient());
+    state.insert(state.end(), p->GetAmbientColor(), p->GetAmbientColor() + 3);
+    state.insert(state.end(), p->GetDiffuseColor(), p->GetDiffuseColor() + 3);
+    if (internals.RawMaterial == 1)
+    {
+      diffuseScale[0] = diffuseScale[1] = diffuseScale[2] = p->GetDiffuse();
+    }
+    else
+    {
+      state.push_back(p->GetDiffuse());
     }
   }
   auto renderPlain = [&]() {
@@ -1059,7 +1174,9 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       static_cast<double>(placement.Phase[1]),
       static_cast<double>(internals.Cache->GetNumberOfDownsampledTiles()),
       static_cast<double>(internals.Cache->GetNumberOfClearedTiles()),
-      static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2] };
+      static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2],
+      diffuseScale[0], diffuseScale[1], diffuseScale[2], ambientTerm[0], ambientTerm[1],
+      ambientTerm[2] };
     if (resolveKey == internals.ResolveKey)
     {
       return;
@@ -1069,6 +1186,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     resolve->SetUniform2i("prSize", width, height);
     resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
       static_cast<float>(specular[1]), static_cast<float>(specular[2]));
+    resolve->SetUniform3f("prDiffuseScale", static_cast<float>(diffuseScale[0]),
+      static_cast<float>(diffuseScale[1]), static_cast<float>(diffuseScale[2]));
+    resolve->SetUniform3f("prAmbientTerm", static_cast<float>(ambientTerm[0]),
+      static_cast<float>(ambientTerm[1]), static_cast<float>(ambientTerm[2]));
     internals.Cache->BindView(resolve);
     glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
@@ -1316,6 +1437,7 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.Placed = false;
   internals.FixedState.clear();
   internals.TableKey.clear();
+  internals.ColourSources.clear();
   internals.ResolveKey.clear();
   this->NumberOfSamples = 0;
   this->MemoryBytes = 0.0;

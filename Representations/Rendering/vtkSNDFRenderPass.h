@@ -72,9 +72,21 @@
  *   lights are evaluated at the focal distance on the view axis. Normals seen with n.z < 0 (possible
  *   off-axis in perspective) are binned by their (x, y) as if facing the viewer.
  * - Material. The specular colour and power are those of the first particle actor (a warning
- *   when the particle actors differ); a change of any particle actor's ambient or diffuse
- *   material, of its colours (colour map, scalars) or of its geometry samples again (the samples
- *   store colours, and colour mapping is not linear in the data). Changing lights re-shades only.
+ *   when the particle actors differ) and re-shade only. With one particle actor (ParaView's
+ *   Particles representation) the samples store its colours without the property's
+ *   coefficients and the shade applies them: colour by scalars -- the diffuse colour divided
+ *   by the diffuse coefficient, so a new diffuse coefficient re-shades (the ambient term,
+ *   ambient coefficient times the scalar colour, is drawn into the colour target and samples
+ *   again when it changes); a solid colour -- white for the diffuse colour and no ambient term,
+ *   so the ambient and diffuse coefficients and colours all re-shade (the ambient term is
+ *   ambient coefficient * ambient colour * the pixel's sum of AO). Which of the two comes
+ *   from VTK's colour code (vtkOpenGLPolyDataMapper::ReplaceShaderColor: diffuseColor =
+ *   diffuseIntensity * vertex, texture or property colour), checked against the mapper's
+ *   scalar settings. With more than one particle actor every ambient and diffuse change
+ *   samples again. A new colour map, new scalars or new geometry sample again: the samples
+ *   store colours, and mapping is not linear in the data, so a bin's mean colour cannot be
+ *   re-mapped (the paper's "transfer function" is a colour over the normals, which a lighting
+ *   table could carry; a colour over data values would need each bin's distribution of values).
  * - Memory. An S-NDF texel takes 12 BinsPerAxis^2 + 4 max(1, BinsPerAxis^2 / 32) + 64 bytes (a
  *   16-bit count, three 16-bit mean colour channels and two 16-bit mean bin coordinates per
  *   bin, the occupancy bits, four float sums; 8 x 8 bins: 840 bytes, 3.3 MB per 64^2 tile). The
@@ -310,6 +322,8 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
   vtkMTimeType GetShaderStageMTime() override;
 
 protected:

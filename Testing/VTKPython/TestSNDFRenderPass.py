@@ -265,6 +265,68 @@ image(window)
 check(sndf.GetNumberOfRestarts() == restarts + 1 and sndf.GetNumberOfSamples() == 0,
       "a camera move restarts (the plain image, no sample)")
 
+# --- material changes re-shade (one particle actor) ---------------------------------------------
+def converged_material(solid, ambient, diffuse, ambient_colour, diffuse_colour, second=False):
+    """A pass converged to 64 samples on the crystal coloured by its rgb scalars (or solid:
+    scalars off), the material set before the first render; second: a second particle actor."""
+    material_sndf = pr.vtkSNDFRenderPass()
+    material_sndf.SetSamplesPerFrame(64)
+    material_sndf.SetTargetSamples(64)
+    material_renderer, material_window, material_actor = scene(xyz, rgb, (W, H), material_sndf)
+    if second:
+        _, _, other = crystal_view(xyz[:4] + 40.0, rgb[:4], (8, 8))
+        material_renderer.AddActor(other)
+    material_actor.GetMapper().SetScalarVisibility(not solid)
+    set_material(material_actor, ambient, diffuse, ambient_colour, diffuse_colour)
+    image(material_window)
+    converge(material_sndf, material_window)
+    return material_sndf, material_window, material_actor
+
+
+def set_material(actor, ambient, diffuse, ambient_colour, diffuse_colour):
+    p = actor.GetProperty()
+    p.SetAmbient(ambient)
+    p.SetDiffuse(diffuse)
+    p.SetAmbientColor(*ambient_colour)
+    p.SetDiffuseColor(*diffuse_colour)
+
+
+before_material = ((0.0, 1.0, (1, 1, 1), (1, 1, 1)), (0.1, 0.8, (0.9, 0.6, 0.3), (0.9, 0.6, 0.3)))
+after_material = ((0.0, 0.6, (1, 1, 1), (1, 1, 1)), (0.3, 0.5, (0.3, 0.7, 0.9), (0.5, 0.8, 0.4)))
+for solid in (False, True):
+    what = "solid colour" if solid else "colour by scalars"
+    old, new = before_material[solid], after_material[solid]
+    msndf, mwindow, mactor = converged_material(solid, *old)
+    start = image(mwindow)
+    passes, restarts = msndf.GetNumberOfSamplePasses(), msndf.GetNumberOfRestarts()
+    set_material(mactor, *new)
+    changed = image(mwindow)
+    fresh_sndf, fresh_window, _ = converged_material(solid, *new)
+    fresh = image(fresh_window)
+    d = np.abs(changed - fresh)
+    print("%s: material changed after convergence vs converged under it: mean %.3f max %.1f "
+          "/255 (the change moved the picture by %.1f)" % (what, d.mean(), d.max(),
+                                                           np.abs(changed - start).mean()))
+    check(msndf.GetNumberOfSamplePasses() == passes and msndf.GetNumberOfRestarts() == restarts
+          and msndf.GetNumberOfSamples() == 64 and d.max() <= 1.0
+          and np.abs(changed - start).mean() > 3.0,
+          "%s: a new material re-shades without a sample pass, equal to sampling under it "
+          "(max %.1f /255)" % (what, d.max()))
+# colour by scalars: the ambient term is drawn with the scalar colours into the samples, so the
+# ambient coefficient samples again; so does any material change with two particle actors
+msndf, mwindow, mactor = converged_material(False, *before_material[0])
+restarts = msndf.GetNumberOfRestarts()
+mactor.GetProperty().SetAmbient(0.2)
+image(mwindow)
+check(msndf.GetNumberOfRestarts() == restarts + 1,
+      "colour by scalars: a new ambient coefficient samples again")
+msndf, mwindow, mactor = converged_material(True, *before_material[1], second=True)
+restarts = msndf.GetNumberOfRestarts()
+mactor.GetProperty().SetDiffuse(0.4)
+image(mwindow)
+check(msndf.GetNumberOfRestarts() == restarts + 1,
+      "two particle actors: a new diffuse coefficient samples again")
+
 # --- other geometry: an opaque box through part of the crystal and the outline (lines) -------
 ref_box = reference(xyz, rgb, box=True)
 sndf = pr.vtkSNDFRenderPass()
