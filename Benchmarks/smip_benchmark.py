@@ -32,7 +32,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import crystal_view, fcc_crystal, pan_camera, window_pixels
+from prVTKTesting import crystal_view, fcc_crystal, image_error, pan_camera, window_pixels
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkLight
@@ -153,8 +153,7 @@ def measure(name, scene, samples):
     timed(direct_window)
     resample = sum(converge(direct, direct_window))
     level1 = window_pixels(direct_window, width, height)
-    d = np.abs(zoomed - level1)
-    accuracy = (d.mean(), np.percentile(d.max(axis=-1), 99), d.max())
+    accuracy = image_error(zoomed, level1)
     return [name, len(scene[0]), width, height, samples, plain, sample, averaged, zoom, resample,
             resample / zoom, accuracy[0], accuracy[1], accuracy[2], back, restart, relight,
             tiles, slots, memory]

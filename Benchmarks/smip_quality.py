@@ -28,7 +28,7 @@ import numpy as np
 
 import particlerendering as pr
 import smip_benchmark as sb
-from prVTKTesting import window_pixels
+from prVTKTesting import image_error, window_pixels
 
 args = sys.argv[1:7] + ["63", "8", "640", "360", "64", "16"][len(sys.argv[1:7]):]
 cells, repeat, width, height, samples, super_ = (int(a) for a in args)
@@ -36,9 +36,7 @@ sb.width, sb.height = width, height
 crop = 720.0 / height  # the parallel scale is smip_benchmark's for 720 pixels
 
 
-def error(a, b):
-    d = np.abs(a - b)
-    return d.mean(), np.percentile(d.max(axis=-1), 99), d.max()
+error = image_error
 
 
 def converge_to(sndf, window, target):

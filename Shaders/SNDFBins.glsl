@@ -38,17 +38,25 @@ uint prSNDFMaskWord(int bins)
   return prSNDFWordsPerBin * uint(bins * bins);
 }
 
+// The bin square of a projected normal, in bin units: its cell and the position f of the normal.
+vec2 prSNDFCell(vec2 nxy, int bins, out vec2 f)
+{
+  f = (nxy + 1.0) * 0.5 * float(bins);
+  return clamp(floor(f), vec2(0.0), vec2(float(bins - 1)));
+}
+
 uint prSNDFBin(vec2 nxy, int bins)
 {
-  ivec2 cell = clamp(ivec2(floor((nxy + 1.0) * 0.5 * float(bins))), ivec2(0), ivec2(bins - 1));
+  vec2 f;
+  ivec2 cell = ivec2(prSNDFCell(nxy, bins, f));
   return uint(cell.y * bins + cell.x);
 }
 
 // Where in its bin's square the projected normal lies: [0, 1]^2.
 vec2 prSNDFBinCoordinates(vec2 nxy, int bins)
 {
-  vec2 f = (nxy + 1.0) * 0.5 * float(bins);
-  vec2 cell = clamp(floor(f), vec2(0.0), vec2(float(bins - 1)));
+  vec2 f;
+  vec2 cell = prSNDFCell(nxy, bins, f);
   return clamp(f - cell, 0.0, 1.0);
 }
 

@@ -29,8 +29,8 @@
 // sums, Nc), [3] (weighted AO sum, sum N, children found, 0) as float bits,
 // then the occupancy bits of the record's bins (prMaskVec4s uvec4s), then
 // one uvec4 per bin: its weighted count (float bits) and the running
-// weighted means of its colour (16 bits per channel over [0, 2]) and of its
-// bin coordinates (16 bits per axis). A bin's entry is written when the
+// weighted means of its colour and of its bin coordinates, packed as a bin's
+// words are (SNDFBins.glsl). A bin's entry is written when the
 // record first meets it and only read where the occupancy bits say so: the
 // records are never cleared, and phase 1 visits the occupied bins only.
 //
@@ -65,19 +65,21 @@ void prStore(uint i, vec4 v)
   prPartial[i] = floatBitsToUint(v);
 }
 
-// a bin entry: weighted count w, mean colour c over [0, 2], mean bin coordinates u
+// a bin entry: weighted count w (float bits), then the mean colour c and mean bin coordinates u
+// packed as a bin stores them (SNDFBins.glsl; the count field of the first word unused)
 uvec4 prPackEntry(float w, vec3 c, vec2 u)
 {
-  uvec3 qc = uvec3(clamp(c, 0.0, 2.0) * (65535.0 / 2.0) + 0.5);
-  uvec2 qu = uvec2(clamp(u, 0.0, 1.0) * 65535.0 + 0.5);
-  return uvec4(floatBitsToUint(w), qc.r | (qc.g << 16u), qc.b | (qu.x << 16u), qu.y);
+  uint w0;
+  uint w1;
+  prSNDFPackMean(0u, c, w0, w1);
+  return uvec4(floatBitsToUint(w), w0, w1, prSNDFPackOffset(u));
 }
 
 void prUnpackEntry(uvec4 e, out float w, out vec3 c, out vec2 u)
 {
   w = uintBitsToFloat(e.x);
-  c = vec3(float(e.y & 0xFFFFu), float(e.y >> 16u), float(e.z & 0xFFFFu)) * (2.0 / 65535.0);
-  u = vec2(float(e.z >> 16u), float(e.w & 0xFFFFu)) * (1.0 / 65535.0);
+  c = prSNDFUnpackMean(e.y, e.z);
+  u = prSNDFUnpackOffset(e.w);
 }
 
 void main()

@@ -38,7 +38,8 @@ import numpy as np
 
 import particlerendering as pr
 import prVTKTesting
-from prVTKTesting import Messages, check, crystal_view, fcc_crystal, finish, window_pixels
+from prVTKTesting import (Messages, check, crystal_view, fcc_crystal, finish, image_error,
+                          window_pixels)
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkOutlineSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper
@@ -101,9 +102,7 @@ def converge(sndf, window, limit=200):
     return renders
 
 
-def error(a, b):
-    d = np.abs(a - b)
-    return d.mean(), np.percentile(d.max(axis=-1), 99), d.max()
+error = image_error
 
 
 gl33 = "--gl33" in sys.argv

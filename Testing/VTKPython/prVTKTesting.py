@@ -167,6 +167,13 @@ def window_pixels(window, width, height):
     return pixels[:, :3].reshape(height, width, 3).astype(float)
 
 
+def image_error(a, b):
+    """(mean, 99th percentile of the per-pixel largest channel, max) of |a - b| in 1/255."""
+    import numpy as np
+    d = np.abs(np.asarray(a, float) - np.asarray(b, float))
+    return d.mean(), np.percentile(d.max(axis=-1), 99), d.max()
+
+
 def actor_view(mapper, size=(200, 200)):
     """An actor with `mapper` alone in a renderer of an off-screen window of `size` (no
     multisampling): returns (actor, renderer, window)."""
