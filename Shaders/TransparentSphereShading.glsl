@@ -87,6 +87,16 @@ bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffu
       seg.clipF = true;
     }
   }
+  // the radiance of a sphere entered at its surface is that of the whole sphere (Eq. 2), also
+  // where the clip box of distributed rendering (ClipBox.glsl) cuts its chord into parts that
+  // other processes draw: sum_k T_k theta_k c = theta c, so the parts composite exactly
+  bool enteredInside = seg.clipN;
+#ifdef PR_CLIP_BOX
+  if (!prClipSegmentToBox(rayS + t0 * rayD, rayS + t1 * rayD, un, uf, seg.clipN, seg.clipF))
+  {
+    return false;
+  }
+#endif
   if (!(uf > un))
   {
     return false;
@@ -100,7 +110,7 @@ bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffu
   // Eq. 2: surface reflection at the entry point mixed with the volume colour, occluded and lit
   // by the ambient terms there (Eq. 7); without an entry surface (the segment starts inside)
   // only the volume emits, and there is no front hit for the ambient terms
-  seg.radiance = seg.clipN ? diffuseColor
+  seg.radiance = enteredInside ? diffuseColor
     : ambientOcclusion * mix(litColor, diffuseColor, prVolumeMix) + ambientLight;
   return true;
 }

@@ -7,6 +7,9 @@
 #include "vtkCommunicator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -15,6 +18,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkMetaballMapper.h"
+#include "vtkParticlePartition.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkTransparentSphereMapper.h"
 #include "vtkPointData.h"
@@ -26,11 +30,13 @@
 #include "vtkScalarsToColors.h"
 #include "vtkTransform.h"
 #include "vtkTypeInt32Array.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkTypeInt64Array.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleRepresentation);
@@ -123,6 +129,8 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     transparent->SetFragmentListMemory(this->FragmentListMemory);
     transparent->SetOverlapTolerance(this->OverlapTolerance);
     transparent->SetOpacityReference(this->OpacityReference);
+    // 0: the mapper estimates from its own particles (one process)
+    transparent->SetColumnLayers(this->GlobalColumnLayers);
   }
   if (auto* metaballs = vtkMetaballMapper::SafeDownCast(this->Mapper))
   {
@@ -334,13 +342,16 @@ vtkSmartPointer<vtkPolyData> vtkParticleRepresentation::MakeParticles(
 int vtkParticleRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // Vertex cells only matter for ParaView's redistribution of data among processes (ordered
-  // compositing moves cells, so points without cells would be lost); the mapper ignores cells.
-  auto controller = vtkMultiProcessController::GetGlobalController();
-  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
-
+  // No vertex cells: ParaView never redistributes these particles (the representation
+  // partitions them itself, see PartitionParticles), and the mapper ignores cells.
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-  this->ProcessedData = MakeParticles(input, parallel);
+  this->ProcessedData = MakeParticles(input, false);
+  // Distributed rendering: translucent spheres are partitioned here, in the pipeline, which
+  // runs on every process together (a render pass may not: IceT runs it zero or more times)
+  double bounds[6];
+  this->ComputeSphereBounds(this->ProcessedData, bounds);
+  this->Partitioned = this->PartitionParticles(this->IsTranslucent(), bounds, input);
+  this->UpdateGlobalColumnLayers(bounds);
   this->UpdateOpacityArrayDataRange();
   this->UpdateMapperOpacityArray();
   return this->Superclass::RequestData(request, inputVector, outputVector);
@@ -400,18 +411,28 @@ int vtkParticleRepresentation::ProcessViewRequest(
 
   if (request_type == vtkPVView::REQUEST_UPDATE())
   {
-    vtkPVView::SetPiece(inInfo, this, this->ProcessedData);
-
+    const bool translucent = this->IsTranslucent();
     double bounds[6];
     this->ComputeSphereBounds(this->ProcessedData, bounds);
+    if (this->Partitioned)
+    {
+      // this process's box: IceT orders the processes' images by these boxes
+      vtkPVView::SetPiece(inInfo, this, this->Partition->GetOutput());
+      this->Partition->GetBox(bounds);
+    }
+    else
+    {
+      vtkPVView::SetPiece(inInfo, this, this->ProcessedData);
+    }
     vtkNew<vtkMatrix4x4> matrix;
     this->Actor->GetMatrix(matrix);
     vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds, matrix);
 
-    vtkPVRenderView::SetOrderedCompositingConfiguration(inInfo, this,
-      vtkPVRenderView::DATA_IS_REDISTRIBUTABLE | vtkPVRenderView::USE_DATA_FOR_LOAD_BALANCING);
-    outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(),
-      (this->Actor->GetProperty()->GetOpacity() < 1.0 || this->UseOpacityArray) ? 1 : 0);
+    // Never DATA_IS_REDISTRIBUTABLE: ParaView 5.11 would move the data through appended XML,
+    // which Debian's expat security updates break. The ranks' boxes come from the bounds.
+    vtkPVRenderView::SetOrderedCompositingConfiguration(
+      inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION);
+    outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(), translucent ? 1 : 0);
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
@@ -429,6 +450,21 @@ int vtkParticleRepresentation::ProcessViewRequest(
       }
       particles = this->RenderedData;
     }
+    double clipBox[6];
+    vtkMath::UninitializeBounds(clipBox);
+    if (this->Partitioned)
+    {
+      // each process draws its box; the ghost copies draw the parts of the spheres in it
+      this->Partition->GetBox(clipBox);
+    }
+    else if (auto ghosts = vtkUnsignedCharArray::SafeDownCast(
+               particles->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName())))
+    {
+      // partitioned particles gathered elsewhere (a client rendering locally): without the
+      // boxes the ghost copies would draw their spheres twice
+      particles = this->WithoutGhosts(particles, ghosts);
+    }
+    this->Mapper->SetClipBox(clipBox);
     this->Mapper->SetInputDataObject(particles);
     this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
@@ -438,6 +474,156 @@ int vtkParticleRepresentation::ProcessViewRequest(
     this->UpdateColoringParameters();
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleRepresentation::PartitionParticles(
+  bool translucent, const double sphereBounds[6], vtkDataObject* input)
+{
+  auto controller = vtkMultiProcessController::GetGlobalController();
+  const int size = controller ? controller->GetNumberOfProcesses() : 1;
+  const vtkIdType localCount = this->ProcessedData ? this->ProcessedData->GetNumberOfPoints() : 0;
+  if (size <= 1)
+  {
+    this->Distribution->SetNumberOfValues(4);
+    const double values[4] = { double(localCount), double(localCount), 0.0, 0.0 };
+    std::copy(values, values + 4, this->Distribution->GetPointer(0));
+    return false;
+  }
+  // Only translucent spheres need the partition: opaque ones composite by depth wherever they
+  // are. (Metaballs would need ghosts within the influence radius and a clipped surface.)
+  const bool needed = translucent && this->Technique == SPHERES;
+  const std::string radiusArray = this->EffectiveRadiusArray(this->ProcessedData);
+  std::ostringstream key;
+  key.precision(17);
+  key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
+      << ";"
+      << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor();
+  int stale = key.str() != this->PartitionKey ? 1 : 0;
+  int anyStale = stale;
+  controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
+  if (!anyStale)
+  {
+    return needed && this->Partitioned;
+  }
+  this->PartitionKey = key.str();
+  if (!needed)
+  {
+    // the data stays where it is
+    double local[4] = { double(localCount), double(localCount), 0.0, 0.0 };
+    this->Distribution->SetNumberOfValues(4 * size);
+    controller->AllGather(local, this->Distribution->GetPointer(0), 4);
+    return false;
+  }
+  const bool partitioned = this->Partition->Partition(this->ProcessedData,
+    radiusArray.empty() ? nullptr : radiusArray.c_str(), this->Mapper->GetRadius(),
+    this->Mapper->GetRadiusScaleFactor(), 1.0, sphereBounds);
+  const std::vector<double>& distribution = this->Partition->GetDistribution();
+  this->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
+  std::copy(distribution.begin(), distribution.end(), this->Distribution->GetPointer(0));
+  return partitioned;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBounds[6])
+{
+  auto controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() <= 1)
+  {
+    this->GlobalColumnLayers = 0.0;
+    this->ApplyMapperSettings();
+    return;
+  }
+  // what vtkTransparentSphereMapper::GetEffectiveColumnLayers counts, over all processes: drawn
+  // particles (finite centre, radius > 0 before the scale factor) and the union of the sphere
+  // bounds
+  double local[2] = { 0.0, 0.0 }; // count, sum of radii
+  vtkPolyData* particles = this->ProcessedData;
+  const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
+  const std::string radiusArray = this->EffectiveRadiusArray(particles);
+  vtkDataArray* radii = (n > 0 && !radiusArray.empty())
+    ? particles->GetPointData()->GetArray(radiusArray.c_str())
+    : nullptr;
+  if (radii && radii->GetNumberOfComponents() != 1)
+  {
+    radii = nullptr;
+  }
+  const double constant = this->Mapper->GetRadius();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    particles->GetPoint(i, x);
+    const double r = radii ? radii->GetComponent(i, 0) : constant;
+    if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(r) &&
+      r > 0.0)
+    {
+      local[0] += 1.0;
+      local[1] += r;
+    }
+  }
+  double global[2];
+  controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
+  double mins[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double maxs[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  if (vtkMath::AreBoundsInitialized(sphereBounds))
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      mins[k] = sphereBounds[2 * k];
+      maxs[k] = sphereBounds[2 * k + 1];
+    }
+  }
+  double globalMins[3];
+  double globalMaxs[3];
+  controller->AllReduce(mins, globalMins, 3, vtkCommunicator::MIN_OP);
+  controller->AllReduce(maxs, globalMaxs, 3, vtkCommunicator::MAX_OP);
+  const double bounds[6] = { globalMins[0], globalMaxs[0], globalMins[1], globalMaxs[1],
+    globalMins[2], globalMaxs[2] };
+  this->GlobalColumnLayers =
+    vtkTransparentSphereMapper::EstimateColumnLayers(global[0], global[1], bounds);
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkParticleRepresentation::WithoutGhosts(
+  vtkPolyData* particles, vtkUnsignedCharArray* ghosts)
+{
+  if (this->OwnedData && this->OwnedDataSource == particles &&
+    this->OwnedDataTime == particles->GetMTime())
+  {
+    return this->OwnedData;
+  }
+  vtkNew<vtkIdList> owned;
+  for (vtkIdType i = 0; i < ghosts->GetNumberOfTuples(); ++i)
+  {
+    if (!(ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT))
+    {
+      owned->InsertNextId(i);
+    }
+  }
+  this->OwnedData = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(particles->GetPoints() ? particles->GetPoints()->GetDataType() : VTK_FLOAT);
+  if (particles->GetPoints())
+  {
+    particles->GetPoints()->GetPoints(owned, points);
+  }
+  this->OwnedData->SetPoints(points);
+  vtkNew<vtkIdList> destination;
+  destination->SetNumberOfIds(owned->GetNumberOfIds());
+  std::iota(destination->GetPointer(0), destination->GetPointer(0) + owned->GetNumberOfIds(), 0);
+  this->OwnedData->GetPointData()->CopyAllocate(particles->GetPointData(), owned->GetNumberOfIds());
+  this->OwnedData->GetPointData()->CopyData(particles->GetPointData(), owned, destination);
+  this->OwnedData->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  this->OwnedDataSource = particles;
+  this->OwnedDataTime = particles->GetMTime();
+  return this->OwnedData;
+}
+
+//------------------------------------------------------------------------------
+vtkDoubleArray* vtkParticleRepresentation::GetParticleDistribution()
+{
+  return this->Distribution;
 }
 
 //------------------------------------------------------------------------------
@@ -592,7 +778,7 @@ void vtkParticleRepresentation::SetUseOpacityArray(bool use)
   {
     this->UseOpacityArray = use;
     this->UpdateMapperOpacityArray();
-    this->Modified();
+    this->MarkModified(); // translucent or not: partitioned or not (RequestData)
   }
 }
 
@@ -680,6 +866,23 @@ void vtkParticleRepresentation::SetOpacityReference(int reference)
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleRepresentation::IsTranslucent()
+{
+  return this->Actor->GetProperty()->GetOpacity() < 1.0 || this->UseOpacityArray;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOpacity(double val)
+{
+  const bool wasTranslucent = this->IsTranslucent();
+  this->Actor->GetProperty()->SetOpacity(val);
+  if (this->IsTranslucent() != wasTranslucent)
+  {
+    this->MarkModified(); // partitioned for translucency or not (RequestData)
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetUseRadiusArray(int mode)
 {
   mode = std::min(std::max(mode, static_cast<int>(RADIUS_ARRAY_OFF)),
@@ -688,7 +891,7 @@ void vtkParticleRepresentation::SetUseRadiusArray(int mode)
   {
     this->UseRadiusArray = mode;
     this->UpdateMapperRadiusArray();
-    this->Modified();
+    this->MarkModified();
   }
 }
 
@@ -700,7 +903,7 @@ void vtkParticleRepresentation::SetRadiusArray(const char* name)
   {
     this->RadiusArray = value;
     this->UpdateMapperRadiusArray();
-    this->Modified();
+    this->MarkModified();
   }
 }
 
@@ -713,7 +916,11 @@ void vtkParticleRepresentation::SelectRadiusArray(int, int, int, int, const char
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetRadius(double radius)
 {
-  this->Mapper->SetRadius(radius);
+  if (radius != this->Mapper->GetRadius())
+  {
+    this->Mapper->SetRadius(radius);
+    this->MarkModified(); // the ghost copies of a partition reach one radius
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -725,7 +932,11 @@ double vtkParticleRepresentation::GetRadius()
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetRadiusScaleFactor(double factor)
 {
-  this->Mapper->SetRadiusScaleFactor(factor);
+  if (factor != this->Mapper->GetRadiusScaleFactor())
+  {
+    this->Mapper->SetRadiusScaleFactor(factor);
+    this->MarkModified(); // the ghost copies of a partition reach one radius
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -794,7 +1005,6 @@ prForwardProperty1(SetAmbient);
 prForwardProperty1(SetDiffuse);
 prForwardProperty1(SetSpecular);
 prForwardProperty1(SetSpecularPower);
-prForwardProperty1(SetOpacity);
 prForwardProperty3(SetAmbientColor);
 prForwardProperty3(SetDiffuseColor);
 prForwardProperty3(SetSpecularColor);

@@ -48,6 +48,9 @@
 
 class vtkActor;
 class vtkDataObject;
+class vtkDoubleArray;
+class vtkParticlePartition;
+class vtkUnsignedCharArray;
 class vtkParticleSphereMapper;
 class vtkTransparentSphereMapper;
 class vtkPolyData;
@@ -215,6 +218,14 @@ public:
   vtkIdType GetNumberOfParticles();
 
   /**
+   * How the particles are spread over the processes, 4 values per process: particles of the
+   * process's piece, particles it owns and ghost copies it draws after the partition, bytes it
+   * sent (see vtkParticlePartition). Translucent spheres are partitioned when there is more than
+   * one process; otherwise every process owns its piece. For an information property.
+   */
+  vtkDoubleArray* GetParticleDistribution();
+
+  /**
    * The mapper's warning about the local input ("" when it is fine), for an information
    * property: lets scripts and tests see which representation warned about what.
    */
@@ -241,6 +252,32 @@ protected:
   void ComputeSphereBounds(vtkPolyData* particles, double bounds[6]);
 
   void UpdateColoringParameters();
+
+  /**
+   * Distributed rendering: partition the particles over the processes (vtkParticlePartition)
+   * when the scene needs it (translucent spheres, more than one process), again only when the
+   * data or the radii changed. Collective (RequestData). True when the partition's output
+   * and box are in use.
+   */
+  bool PartitionParticles(bool translucent, const double sphereBounds[6], vtkDataObject* input);
+  // the actor's opacity is below 1 or an opacity array is in use
+  bool IsTranslucent();
+  /**
+   * With more than one process: the column-opacity layer estimate of all particles (each
+   * process would otherwise estimate from its piece and give its particles another opacity),
+   * set as the mapper's ColumnLayers. Collective (RequestData).
+   */
+  void UpdateGlobalColumnLayers(const double sphereBounds[6]);
+  double GlobalColumnLayers = 0.0;
+  // `particles` without its ghost copies (cached)
+  vtkPolyData* WithoutGhosts(vtkPolyData* particles, vtkUnsignedCharArray* ghosts);
+  vtkNew<vtkParticlePartition> Partition;
+  vtkNew<vtkDoubleArray> Distribution;
+  std::string PartitionKey;
+  bool Partitioned = false;
+  vtkSmartPointer<vtkPolyData> OwnedData;
+  vtkPolyData* OwnedDataSource = nullptr;
+  vtkMTimeType OwnedDataTime = 0;
   void UpdateMapperRadiusArray();
   // The radius array the mode selects for these particles ("" = the constant radius).
   std::string EffectiveRadiusArray(vtkPolyData* particles) const;

@@ -22,6 +22,7 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -560,6 +561,36 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
       gs, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_OCCLUSION_CULLING\n", false);
   }
   shaders[vtkShader::Geometry]->SetSource(gs);
+  if (this->UseClipBox)
+  {
+    // the clip box (SetClipBox): the box relative to each centre, in buffer coordinates
+    std::string vsBox = shaders[vtkShader::Vertex]->GetSource();
+    std::string gsBox = shaders[vtkShader::Geometry]->GetSource();
+    std::string fsBox = shaders[vtkShader::Fragment]->GetSource();
+    vtkParticleShaderHooks hooks(this);
+    hooks.Begin(vsBox, gsBox, fsBox);
+    hooks.Insert(vtkParticleShaderHooks::Vertex, "//PR::Sphere::Dec",
+      "uniform vec3 prClipBoxLo;\nuniform vec3 prClipBoxHi;");
+    hooks.AddSphereVarying("vec3", "prBoxLo");
+    hooks.AddSphereVarying("vec3", "prBoxHi");
+    hooks.Insert(vtkParticleShaderHooks::Vertex, "//PR::Sphere::Impl",
+      "prBoxLoVSOutput = prClipBoxLo - vertexMC.xyz;\n"
+      "  prBoxHiVSOutput = prClipBoxHi - vertexMC.xyz;");
+    hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec",
+      "#define PR_CLIP_BOX\nuniform mat3 prClipBoxAxes;\n//PR::Include ClipBox");
+    if (!this->GetClipBoxBySegment())
+    {
+      // opaque: the visible point decides
+      hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Surface::Normal",
+        "if (!prInsideClipBox(vertexVC.xyz - centerVC))\n"
+        "  {\n"
+        "    discard;\n"
+        "  }");
+    }
+    shaders[vtkShader::Vertex]->SetSource(vsBox);
+    shaders[vtkShader::Geometry]->SetSource(gsBox);
+    shaders[vtkShader::Fragment]->SetSource(fsBox);
+  }
   // Includes added by the replacements and render passes.
   for (auto type : { vtkShader::Vertex, vtkShader::Geometry, vtkShader::Fragment })
   {
@@ -740,6 +771,72 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
     const float clipZW[2] = { static_cast<float>(zw[0]), static_cast<float>(zw[1]) };
     program->SetUniform2f("clipZWOfTranslation", clipZW);
   }
+
+  if (this->UseClipBox && program->IsUniformUsed("prClipBoxAxes"))
+  {
+    // the box in buffer coordinates (the VBO shift/scale is a translation and an axis scale),
+    // and view offsets -> buffer offsets: the inverse of the buffer -> view rotation/scale
+    vtkNew<vtkMatrix4x4> bufferToModel;
+    vtkMatrix4x4::Transpose(this->VBOShiftScale, bufferToModel);
+    vtkNew<vtkMatrix4x4> modelToBuffer;
+    vtkMatrix4x4::Invert(bufferToModel, modelToBuffer);
+    float lo[3];
+    float hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const double a = modelToBuffer->GetElement(k, k) * this->ClipBox[2 * k] +
+        modelToBuffer->GetElement(k, 3);
+      const double b = modelToBuffer->GetElement(k, k) * this->ClipBox[2 * k + 1] +
+        modelToBuffer->GetElement(k, 3);
+      lo[k] = static_cast<float>(std::min(a, b));
+      hi[k] = static_cast<float>(std::max(a, b));
+    }
+    program->SetUniform3f("prClipBoxLo", lo);
+    program->SetUniform3f("prClipBoxHi", hi);
+    vtkNew<vtkMatrix4x4> bufferToView;
+    this->GetBufferToViewMatrix(ren, actor, bufferToView);
+    vtkNew<vtkMatrix3x3> linear;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        linear->SetElement(i, j, bufferToView->GetElement(i, j));
+      }
+    }
+    linear->Invert();
+    // SetUniformMatrix uploads the elements in storage order, which GLSL reads column-major:
+    // upload the transpose for prClipBoxAxes * v to be linear * v
+    linear->Transpose();
+    program->SetUniformMatrix("prClipBoxAxes", linear);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetClipBox(const double box[6])
+{
+  const bool use = box && vtkMath::AreBoundsInitialized(box) && box[0] <= box[1] &&
+    box[2] <= box[3] && box[4] <= box[5];
+  if (use != this->UseClipBox)
+  {
+    this->UseClipBox = use;
+    this->Modified(); // another shader variant
+  }
+  if (use)
+  {
+    std::copy(box, box + 6, this->ClipBox); // a uniform: no new shader
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::GetClipBox(double box[6]) const
+{
+  if (!this->UseClipBox)
+  {
+    vtkMath::UninitializeBounds(box);
+    return false;
+  }
+  std::copy(this->ClipBox, this->ClipBox + 6, box);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -250,6 +250,22 @@ public:
    */
   static std::string GetLightSumCode(int complexity, int count);
 
+  ///@{
+  /**
+   * Draw only what lies inside an axis-aligned box of the input's coordinates (distributed
+   * rendering: each process draws its box of a k-d partition, with ghost copies of the spheres
+   * that reach into it, and IceT composites the boxes in visibility order without depth, see
+   * vtkParticlePartition). Opaque spheres keep a fragment when its visible point is inside the
+   * box; translucent spheres (vtkTransparentSphereMapper) integrate the part of the chord
+   * inside the box, with the colour of the whole sphere, so the boxes' images composite to the
+   * single-process picture. Uninitialised bounds (vtkMath::UninitializeBounds, the default)
+   * switch it off. The shader variant with the test is compiled only while a box is set
+   * (Shaders/ClipBox.glsl).
+   */
+  void SetClipBox(const double box[6]);
+  bool GetClipBox(double box[6]) const;
+  ///@}
+
 protected:
   vtkParticleSphereMapper();
   ~vtkParticleSphereMapper() override;
@@ -319,6 +335,13 @@ protected:
   virtual bool GetOcclusionCullingCompiled(vtkRenderer* ren);
 
   /**
+   * Whether the variant being built clips the segments of the spheres' chords to the clip box
+   * itself (a translucent variant, see TransparentSphereShading.glsl) instead of testing the
+   * visible point (the default, false).
+   */
+  virtual bool GetClipBoxBySegment() { return false; }
+
+  /**
    * Switch the default shift/scale method (AUTO_SHIFT_SCALE) to VTK's FOCAL_POINT_SHIFT_SCALE
    * while the data's extent puts the float spacing of one origin above a thousandth of the
    * smallest radius (a lost atom far from the rest), with a warning; back when the data no
@@ -372,6 +395,9 @@ protected:
   char* RadiusArrayName = nullptr;
   double Radius = 0.5;
   double RadiusScaleFactor = 1.0;
+  // the clip box (SetClipBox) and whether it is set
+  double ClipBox[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  bool UseClipBox = false;
   vtkMTimeType ScaleOnlyMTime = 0;
   vtkMTimeType DataMTimeBeforeScale = 0;
   vtkIdType NumberOfSkippedParticles = 0;

@@ -411,6 +411,12 @@ bool vtkTransparentSphereMapper::GetOcclusionCullingCompiled(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransparentSphereMapper::GetClipBoxBySegment()
+{
+  return this->Internals->Building != Variant::Opaque;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransparentSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildBufferObjects(ren, act);
@@ -554,17 +560,28 @@ double vtkTransparentSphereMapper::GetEffectiveColumnLayers()
       ++count;
     }
   }
-  double sides[3] = { b[1] - b[0], b[3] - b[2], b[5] - b[4] };
+  this->EstimatedColumnLayers = EstimateColumnLayers(static_cast<double>(count), sum, b);
+  return this->EstimatedColumnLayers;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::EstimateColumnLayers(
+  double count, double radiusSum, const double bounds[6])
+{
+  if (!bounds || !(bounds[0] <= bounds[1]) || !(count > 0.0))
+  {
+    return 1.0;
+  }
+  double sides[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
   std::sort(sides, sides + 3);
   const double face = sides[0] * sides[1];
-  if (count == 0 || !(face > 0.0))
+  if (!(face > 0.0))
   {
-    return this->EstimatedColumnLayers;
+    return 1.0;
   }
-  const double r = sum / count;
+  const double r = radiusSum / count;
   const double layers = count / face * vtkMath::Pi() * r * r * (2.0 / 3.0);
-  this->EstimatedColumnLayers = std::isfinite(layers) ? std::max(1.0, layers) : 1.0;
-  return this->EstimatedColumnLayers;
+  return std::isfinite(layers) ? std::max(1.0, layers) : 1.0;
 }
 
 //------------------------------------------------------------------------------

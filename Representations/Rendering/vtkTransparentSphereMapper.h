@@ -180,6 +180,15 @@ public:
    * The L in use: 1 for PARTICLE_OPACITY, else ColumnLayers or its estimate (see above).
    */
   double GetEffectiveColumnLayers();
+
+  /**
+   * The layer estimate of COLUMN_OPACITY for `count` drawn particles whose radii (before the
+   * scale factor) sum to `radiusSum`, in the sphere bounds `bounds` (radii included): the
+   * expected number of full chords along the longest side, (N / A) pi r^2 (2/3), at least 1.
+   * Public so that distributed rendering (vtkParticleRepresentation) can give every process
+   * the estimate of all particles (SetColumnLayers).
+   */
+  static double EstimateColumnLayers(double count, double radiusSum, const double bounds[6]);
   ///@}
 
   ///@{
@@ -340,6 +349,8 @@ protected:
   void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
   void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
   // the translucent variant writes no depth: no occlusion test there
+  // translucent variants clip the chords' segments to the clip box themselves
+  bool GetClipBoxBySegment() override;
   bool GetOcclusionCullingCompiled(vtkRenderer* ren) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 

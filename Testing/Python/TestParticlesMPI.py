@@ -1,0 +1,188 @@
+"""Distributed rendering: every case gives the single-process picture under MPI.
+
+Runs as `mpiexec -np N pvbatch TestParticlesMPI.py ...` for N = 1, 2, 3 (CTest). The LAMMPS film
+(Testing/Data/lj_film.vtp, 19360 atoms) is really split: a programmable source reads the file
+on every rank and keeps particle i on rank i mod N (interleaved pieces: every rank's particles
+spread over the whole film, the hardest case for compositing), or with --empty-rank the
+particles of the last rank go to rank 0 (that rank holds none). The test checks the number of
+particles per rank before the Particles representation partitions them, and after it (the
+representation's ParticleDistribution information: owned, ghost and received particles and
+bytes sent per rank).
+
+Cases (Particle Render View, 400x300, coloured by type, radii from 'radius'):
+  opaque              opacity 1, no AO (z-buffer compositing, the data stays where it is)
+  translucent         opacity 0.7, Constant density model (ordered compositing)
+  translucent-squared opacity 0.7, Squared Distance density model
+  ao                  opacity 1, Density Volume AO
+  ao-translucent      opacity 0.7, Density Volume AO
+With N = 1 each image is compared with its baseline (Testing/Data/Baseline/TestParticlesMPI_*,
+the GPU's own picture on this platform) and written to <temp-dir>/TestParticlesMPI_<case>_np1.png;
+with N > 1 each image must equal that single-process image within --tolerance per pixel (8-bit
+steps, default 2/255). The measured maximum is printed per case.
+
+usage: mpiexec -np N pvbatch TestParticlesMPI.py --plugin ParticleRendering.so --data DIR
+           --baseline-dir DIR --temp-dir DIR [--empty-rank] [--tolerance T] [--cases a,b]
+"""
+import argparse
+import builtins
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import prParaViewTesting as pr  # noqa: E402
+from paraview import servermanager, simple  # noqa: E402
+
+CASES = {
+    # name: (opacity, density model, ambient occlusion)
+    "opaque": (1.0, 0, "None"),
+    "translucent": (0.7, 0, "None"),
+    "translucent-squared": (0.7, 1, "None"),
+    "ao": (1.0, 0, "Density Volume"),
+    "ao-translucent": (0.7, 0, "Density Volume"),
+}
+
+SPLIT_SCRIPT = """
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+import numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
+info = self.GetOutputInformation(0)
+piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
+pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
+reader = vtkXMLPolyDataReader()
+reader.SetFileName(%(path)r)
+reader.Update()
+full = reader.GetOutput()
+n = full.GetNumberOfPoints()
+owner = numpy.arange(n) %% pieces
+if %(empty_rank)r and pieces > 1:
+    owner[owner == pieces - 1] = 0
+keep = numpy.nonzero(owner == piece)[0]
+from vtkmodules.vtkCommonCore import vtkIdList
+ids = vtkIdList()
+ids.SetNumberOfIds(len(keep))
+for k, i in enumerate(keep):
+    ids.SetId(k, int(i))
+from vtkmodules.vtkCommonCore import vtkPoints
+out = self.GetPolyDataOutput()
+points = vtkPoints()
+points.SetDataType(full.GetPoints().GetDataType())
+full.GetPoints().GetPoints(ids, points)
+out.SetPoints(points)
+for a in range(full.GetPointData().GetNumberOfArrays()):
+    src = full.GetPointData().GetArray(a)
+    dst = src.NewInstance()
+    dst.SetName(src.GetName())
+    dst.SetNumberOfComponents(src.GetNumberOfComponents())
+    dst.SetNumberOfTuples(len(keep))
+    src.GetTuples(ids, dst)
+    out.GetPointData().AddArray(dst)
+"""
+
+SPLIT_INFORMATION_SCRIPT = """
+from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
+self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
+"""
+
+
+def parse_extra():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--empty-rank", action="store_true")
+    parser.add_argument("--tolerance", type=float, default=2.0)
+    parser.add_argument("--cases", default=",".join(CASES))
+    extra, _ = parser.parse_known_args()
+    return extra
+
+
+def main():
+    """The whole test in one function: a ProgrammableSource's script runs in this interpreter's
+    __main__ namespace (pvbatch's builtin session) and replaces globals such as `split` and even `max` (numpy_interface.algorithms)."""
+    args = pr.parse_arguments()
+    extra = parse_extra()
+    pr.load_plugin(args)
+    ok = True
+
+    ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+    path = os.path.join(args.data, "lj_film.vtp")
+    pieces_source = simple.ProgrammableSource()
+    pieces_source.OutputDataSetType = "vtkPolyData"
+    pieces_source.Script = SPLIT_SCRIPT % {"path": path, "empty_rank": extra.empty_rank}
+    pieces_source.ScriptRequestInformation = SPLIT_INFORMATION_SCRIPT
+    pieces_source.UpdatePipeline()
+    total = pieces_source.GetDataInformation().GetNumberOfPoints()
+    print("ranks %d, particles %d" % (ranks, total))
+    if total != 19360:
+        print("FAIL: the split source has %d particles, not 19360" % total)
+        ok = False
+
+    view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=(400, 300))
+    display = pr.show_particles(pieces_source, view)
+    pr.set_camera(view, position=(95.0, -60.0, 70.0), focal_point=(19.7, 19.7, 9.0))
+
+
+    def distribution():
+        """Per rank: particles of the input piece, owned and ghost particles drawn, bytes sent."""
+        display.SMProxy.UpdatePropertyInformation()
+        prop = display.GetProperty("ParticleDistribution")
+        values = list(prop) if prop is not None else []
+        return [values[4 * r:4 * r + 4] for r in range(len(values) // 4)]
+
+
+    def expected_input_counts():
+        counts = [len(range(r, 19360, ranks)) for r in range(ranks)]
+        if extra.empty_rank and ranks > 1:
+            counts[0] += counts[-1]
+            counts[-1] = 0
+        return counts
+
+
+    worst_overall = 0
+    for case in extra.cases.split(","):
+        opacity, model, ao = CASES[case]
+        display.Opacity = opacity
+        display.DensityModel = model
+        view.ParticleAmbientOcclusion = ao
+        name = "TestParticlesMPI_%s" % case
+        image = pr.capture(view, os.path.join(args.temp_dir, "%s_np%d.png" % (name, ranks)))
+        per_rank = distribution()
+        print("%s: per rank [input, owned, ghost, bytes sent] %s" % (case, per_rank))
+        if len(per_rank) != ranks:
+            print("FAIL: %s: distribution of %d ranks, not %d" % (case, len(per_rank), ranks))
+            ok = False
+        else:
+            inputs = [int(r[0]) for r in per_rank]
+            if inputs != expected_input_counts():
+                print("FAIL: %s: input particles per rank %s, expected %s"
+                      % (case, inputs, expected_input_counts()))
+                ok = False
+            owned = builtins.sum(int(r[1]) for r in per_rank)
+            if owned != 19360:
+                print("FAIL: %s: %d particles owned over all ranks, not 19360" % (case, owned))
+                ok = False
+        if ranks == 1:
+            ok = pr.capture_and_compare(view, name, args, pr.SAME_PLATFORM)[0] and ok
+            continue
+        reference_path = os.path.join(args.temp_dir, "%s_np1.png" % name)
+        if not os.path.exists(reference_path):
+            print("FAIL: %s: no single-process image %s (run with -np 1 first)" % (case, reference_path))
+            ok = False
+            continue
+        worst, mean = pr.difference(image, pr.read_png(reference_path))
+        if worst is None:
+            print("FAIL: %s: the image cannot be compared with the single-process one" % case)
+            ok = False
+            continue
+        print("%s: np %d against np 1: max %.0f/255, mean %.3f/255" % (case, ranks, worst, mean))
+        worst_overall = builtins.max(worst_overall, worst)
+        if worst > extra.tolerance:
+            print("FAIL: %s: differs from the single-process image by %.0f/255 > %.0f/255"
+                  % (case, worst, extra.tolerance))
+            ok = False
+
+    if ranks > 1:
+        print("largest difference from the single-process images: %.0f/255" % worst_overall)
+    return ok
+
+
+pr.finish(main())
