@@ -9,6 +9,7 @@
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -18,7 +19,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkMetaballMapper.h"
+#include "vtkDensityVolumeAOPass.h"
+#include "vtkParticleDensityVolume.h"
 #include "vtkParticlePartition.h"
+#include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkTransparentSphereMapper.h"
 #include "vtkPointData.h"
@@ -466,6 +470,7 @@ int vtkParticleRepresentation::ProcessViewRequest(
     }
     this->Mapper->SetClipBox(clipBox);
     this->Mapper->SetInputDataObject(particles);
+    this->UpdateDistributedDensityVolume(inInfo);
     this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
     // an empty filter output): draw nothing, without the mapper's "no points" warning.
@@ -582,6 +587,137 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
   this->GlobalColumnLayers =
     vtkTransparentSphereMapper::EstimateColumnLayers(global[0], global[1], bounds);
   this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateDistributedDensityVolume(vtkInformation* inInfo)
+{
+  auto controller = vtkMultiProcessController::GetGlobalController();
+  auto view = vtkParticleRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+  const bool lod = inInfo->Has(vtkPVRenderView::USE_LOD()) && inInfo->Get(vtkPVRenderView::USE_LOD());
+  // Only when every process renders (distributed rendering: all of them are here together, so
+  // the sum over processes is safe) and the view's ambient occlusion is the density volume. A
+  // client rendering gathered data alone voxelises it all in the pass.
+  const bool distributed = controller && controller->GetNumberOfProcesses() > 1 && view &&
+    (lod ? view->GetUseDistributedRenderingForLODRender()
+         : view->GetUseDistributedRenderingForRender());
+  vtkDensityVolumeAOPass* pass = view ? view->GetDensityVolumeAOPass() : nullptr;
+  const bool needed = distributed && pass &&
+    view->GetAmbientOcclusion() == vtkParticleRenderView::DENSITY_VOLUME &&
+    this->Technique == SPHERES;
+  if (!distributed)
+  {
+    this->Mapper->SetDistributedDensityVolume(nullptr);
+    return;
+  }
+  vtkParticleDensityVolume* settings = needed ? pass->GetDensityVolume() : nullptr;
+  std::ostringstream key;
+  key.precision(17);
+  const std::string radiusArray = this->EffectiveRadiusArray(this->ProcessedData);
+  key << needed << ";" << this->ProcessedData.GetPointer() << ";"
+      << (this->ProcessedData ? this->ProcessedData->GetMTime() : 0) << ";" << radiusArray << ";"
+      << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleVC(this->Actor) << ";"
+      << (settings ? settings->GetMTime() : 0);
+  vtkMatrix4x4* matrix = this->Actor->GetMatrix();
+  for (int i = 0; i < 16; ++i)
+  {
+    key << ";" << matrix->GetData()[i];
+  }
+  int stale = key.str() != this->DensityVolumeKey ? 1 : 0;
+  int anyStale = stale;
+  controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
+  if (!anyStale)
+  {
+    this->Mapper->SetDistributedDensityVolume(needed ? this->DensityVolume.Get() : nullptr);
+    return;
+  }
+  this->DensityVolumeKey = key.str();
+  if (!needed)
+  {
+    this->Mapper->SetDistributedDensityVolume(nullptr);
+    return;
+  }
+
+  // this process's particles (each is in exactly one process's piece) in world coordinates,
+  // radii as drawn; what vtkParticleDensityVolume::EndParticles gathers on one process
+  vtkPolyData* particles = this->ProcessedData;
+  const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
+  vtkDataArray* radiusValues = (n > 0 && !radiusArray.empty())
+    ? particles->GetPointData()->GetArray(radiusArray.c_str())
+    : nullptr;
+  if (radiusValues && radiusValues->GetNumberOfComponents() != 1)
+  {
+    radiusValues = nullptr;
+  }
+  const double scale = this->Mapper->GetRadiusScaleVC(this->Actor);
+  const double constant = this->Mapper->GetRadius();
+  vtkNew<vtkDoubleArray> positions;
+  positions->SetNumberOfComponents(3);
+  positions->Allocate(3 * n);
+  vtkNew<vtkFloatArray> radii;
+  radii->Allocate(n);
+  double mins[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double maxs[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double local[2] = { 0.0, 0.0 }; // count, sum of radii
+  const double* m = matrix->GetData();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double q[3];
+    particles->GetPoint(i, q);
+    const double r = (radiusValues ? radiusValues->GetComponent(i, 0) : constant) * scale;
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
+    }
+    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(p[0] + p[1] + p[2]))
+    {
+      continue;
+    }
+    positions->InsertNextTuple(p);
+    radii->InsertNextValue(static_cast<float>(r));
+    for (int k = 0; k < 3; ++k)
+    {
+      mins[k] = std::min(mins[k], p[k]);
+      maxs[k] = std::max(maxs[k], p[k]);
+    }
+    local[0] += 1.0;
+    local[1] += r;
+  }
+  double global[2];
+  double globalMins[3];
+  double globalMaxs[3];
+  controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
+  controller->AllReduce(mins, globalMins, 3, vtkCommunicator::MIN_OP);
+  controller->AllReduce(maxs, globalMaxs, 3, vtkCommunicator::MAX_OP);
+  vtkParticleDensityVolume* volume = this->DensityVolume;
+  volume->SetResolution(settings->GetResolution());
+  volume->SetMaximumResolution(settings->GetMaximumResolution());
+  volume->SetMaximumVoxelCount(settings->GetMaximumVoxelCount());
+  volume->SetSplatMode(settings->GetSplatMode());
+  volume->SetDensityFactor(settings->GetDensityFactor());
+  const double bounds[6] = { globalMins[0], globalMaxs[0], globalMins[1], globalMaxs[1],
+    globalMins[2], globalMaxs[2] };
+  // the same decision on every process (the grid depends on global values only)
+  bool ok = global[0] > 0.0 && volume->SetUpGrid(bounds, global[1] / global[0]);
+  ok = ok && volume->ComputeSumsOnCPU(positions, radii);
+  int allOk = ok ? 1 : 0;
+  int everywhere = allOk;
+  controller->AllReduce(&allOk, &everywhere, 1, vtkCommunicator::MIN_OP);
+  if (!everywhere)
+  {
+    this->Mapper->SetDistributedDensityVolume(nullptr);
+    return;
+  }
+  // the sum over the processes, then g and the clamp (Eq. 5)
+  std::vector<float>& sums = volume->GetMutableVolume();
+  std::vector<float> total(sums.size());
+  controller->AllReduce(sums.data(), total.data(), static_cast<vtkIdType>(sums.size()),
+    vtkCommunicator::SUM_OP);
+  sums.swap(total);
+  volume->FinishSums();
+  volume->Modified();
+  this->Mapper->SetDistributedDensityVolume(volume);
 }
 
 //------------------------------------------------------------------------------

@@ -49,6 +49,7 @@
 class vtkActor;
 class vtkDataObject;
 class vtkDoubleArray;
+class vtkParticleDensityVolume;
 class vtkParticlePartition;
 class vtkUnsignedCharArray;
 class vtkParticleSphereMapper;
@@ -268,6 +269,18 @@ protected:
    * set as the mapper's ColumnLayers. Collective (RequestData).
    */
   void UpdateGlobalColumnLayers(const double sphereBounds[6]);
+  /**
+   * Distributed rendering with the view's density-volume AO (vtkDensityVolumeAOPass): the
+   * volume of every process's particles over the global bounds, each process splatting its own
+   * (vtkParticleDensityVolume::ComputeSumsOnCPU) and the voxel sums added over the processes
+   * (all-reduce), given to the mapper (SetDistributedDensityVolume). In REQUEST_RENDER, only
+   * when every process renders (distributed rendering), again only when the data, the radii,
+   * the actor's matrix or the pass's volume settings changed. Not in a render pass: IceT may
+   * run those zero or several times per frame.
+   */
+  void UpdateDistributedDensityVolume(vtkInformation* inInfo);
+  vtkNew<vtkParticleDensityVolume> DensityVolume;
+  std::string DensityVolumeKey;
   double GlobalColumnLayers = 0.0;
   // `particles` without its ghost copies (cached)
   vtkPolyData* WithoutGhosts(vtkPolyData* particles, vtkUnsignedCharArray* ghosts);

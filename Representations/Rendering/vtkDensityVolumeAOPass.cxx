@@ -132,6 +132,21 @@ vtkParticleDensityVolume* vtkDensityVolumeAOPass::GetDensityVolume()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// linear interpolation; outside the volume there is nothing: density 0
+void SetVolumeSampling(vtkTextureObject* texture)
+{
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetWrapS(vtkTextureObject::ClampToBorder);
+  texture->SetWrapT(vtkTextureObject::ClampToBorder);
+  texture->SetWrapR(vtkTextureObject::ClampToBorder);
+  texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
 {
   vtkInternals& internals = *this->Internals;
@@ -142,6 +157,12 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(internals.Volume.Get())));
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
   state.push_back(this->GenerationMode);
+  // distributed rendering: the volume of all processes' particles, summed in the pipeline
+  vtkParticleDensityVolume* distributed = particles.size() == 1
+    ? particles.front().second->GetDistributedDensityVolume()
+    : nullptr;
+  state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
+  state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
   if (!this->NeedsBuild(state))
   {
     return; // built already (or failed for the same input: no retry, no repeated message)
@@ -153,26 +174,38 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
     return;
   }
 
-  // voxelise every particle prop into the volume and its texture (vtkParticleDensityVolume)
   vtkParticleDensityVolume* volume = internals.Volume;
+  vtkOpenGLRenderWindow* context =
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  if (distributed)
+  {
+    vtkTextureObject* texture = this->VolumeTexture;
+    SetVolumeSampling(texture);
+    if (volume->UploadVolumeOf(distributed, context, texture))
+    {
+      this->LastGenerationMode = CPU_GENERATION;
+      this->VolumeValid = true;
+      ++this->NumberOfVolumeBuilds;
+    }
+    return;
+  }
+  if (particles.size() > 1 && particles.front().second->GetDistributedDensityVolume())
+  {
+    vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
+                       "density volume holds only its own particles.");
+  }
+
+  // voxelise every particle prop into the volume and its texture (vtkParticleDensityVolume)
   volume->BeginParticles();
   for (auto& item : particles)
   {
     volume->AddParticles(item.first, item.second);
   }
   const vtkProgressScope progressScope(this, volume->GetNumberOfParticles());
-  vtkOpenGLRenderWindow* ctx =
-    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   vtkTextureObject* texture = this->VolumeTexture;
-  texture->SetMinificationFilter(vtkTextureObject::Linear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  // outside the volume there is nothing: density 0
-  texture->SetWrapS(vtkTextureObject::ClampToBorder);
-  texture->SetWrapT(vtkTextureObject::ClampToBorder);
-  texture->SetWrapR(vtkTextureObject::ClampToBorder);
-  texture->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
+  SetVolumeSampling(texture);
   const bool generated =
-    volume->EndParticles(ctx, this->GenerationMode == GPU_GENERATION, texture);
+    volume->EndParticles(context, this->GenerationMode == GPU_GENERATION, texture);
   this->LastGenerationMode = volume->GetLastBuiltOnGPU() ? GPU_GENERATION : CPU_GENERATION;
   if (!generated)
   {

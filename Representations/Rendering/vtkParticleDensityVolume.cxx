@@ -175,6 +175,59 @@ bool vtkParticleDensityVolume::SetUpGrid(
 //------------------------------------------------------------------------------
 bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArray* radii)
 {
+  if (!this->ComputeSumsOnCPU(positions, radii))
+  {
+    return false;
+  }
+  this->FinishSums();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDensityVolume::FinishSums()
+{
+  float* out = this->Volume.data();
+  const double g = this->DensityFactor;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(this->Volume.size()),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        out[i] = static_cast<float>(std::min(1.0, g * out[i]));
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::UploadVolumeOf(
+  vtkParticleDensityVolume* other, vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  const int* dims = other ? other->Dimensions : nullptr;
+  if (!other || !context || !texture ||
+    other->Volume.size() != static_cast<size_t>(dims[0]) * dims[1] * dims[2] ||
+    other->Volume.empty())
+  {
+    vtkErrorMacro(<< "UploadVolumeOf() needs a built volume, a context and a texture.");
+    return false;
+  }
+  std::copy(dims, dims + 3, this->Dimensions);
+  std::copy(other->Origin, other->Origin + 3, this->Origin);
+  this->VoxelSize = other->VoxelSize;
+  this->Volume = other->Volume;
+  this->LastBuiltOnGPU = false;
+  texture->SetContext(context);
+  if (!texture->Create3DFromRaw(
+        dims[0], dims[1], dims[2], 1, VTK_FLOAT, const_cast<float*>(this->Volume.data())))
+  {
+    vtkErrorMacro(<< "Cannot create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " density texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloatArray* radii)
+{
   const vtkIdType voxels =
     static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
   if (voxels <= 0 || !positions || !radii ||
@@ -309,7 +362,6 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
       parts.push_back(local.data());
     }
   }
-  const double g = this->DensityFactor;
   vtkSMPTools::For(0, voxels, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -318,7 +370,7 @@ bool vtkParticleDensityVolume::ComputeOnCPU(vtkDataArray* positions, vtkFloatArr
       {
         sum += part[i];
       }
-      out[i] = static_cast<float>(std::min(1.0, g * sum));
+      out[i] = static_cast<float>(sum);
     }
   });
   return true;

@@ -141,6 +141,27 @@ public:
    */
   bool ComputeOnCPU(vtkDataArray* positions, vtkFloatArray* radii);
 
+  ///@{
+  /**
+   * Distributed building (vtkParticleRepresentation under MPI): ComputeSumsOnCPU() is
+   * ComputeOnCPU() without the final step, so GetVolume() holds the sums of the sphere volumes
+   * per voxel, in voxel volumes; after these have been summed over the processes,
+   * FinishSums() applies the factor g and the clamp to 1 (Eq. 5). The result equals one
+   * ComputeOnCPU() over all particles up to float rounding.
+   */
+  bool ComputeSumsOnCPU(vtkDataArray* positions, vtkFloatArray* radii);
+  std::vector<float>& GetMutableVolume() { return this->Volume; }
+  void FinishSums();
+  ///@}
+
+  /**
+   * Take the grid and the volume of `other` (built elsewhere, e.g. summed over processes by
+   * the pipeline) and fill `texture` with it (one-component float 3D texture). False, with a
+   * message, when there is no volume or the texture cannot be made.
+   */
+  bool UploadVolumeOf(
+    vtkParticleDensityVolume* other, vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
+
   /**
    * The same on the GPU, from buffer objects holding float positions (positionStride floats per
    * particle, mapped by bufferToGrid -- row-major, e.g. VTK's VBO shift/scale undone and the

@@ -1,4 +1,5 @@
 #include "vtkParticleSphereMapper.h"
+#include "vtkParticleDensityVolume.h"
 #include "vtkParticleOcclusionCuller.h"
 
 #include "vtkActor.h"
@@ -825,6 +826,22 @@ void vtkParticleSphereMapper::SetClipBox(const double box[6])
   {
     std::copy(box, box + 6, this->ClipBox); // a uniform: no new shader
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetDistributedDensityVolume(vtkParticleDensityVolume* volume)
+{
+  if (this->DistributedDensityVolume != volume)
+  {
+    this->DistributedDensityVolume = volume;
+    // not Modified(): no shader or buffer depends on it (the AO pass tracks the volume's time)
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkParticleDensityVolume* vtkParticleSphereMapper::GetDistributedDensityVolume()
+{
+  return this->DistributedDensityVolume;
 }
 
 //------------------------------------------------------------------------------

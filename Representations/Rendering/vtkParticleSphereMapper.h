@@ -59,12 +59,15 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkParticleRenderingModule.h" // for export macro
 
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
 #include <string> // for std::string
 #include <vector> // for std::vector
 
 class vtkFloatArray;
 class vtkMatrix4x4;
 class vtkOpenGLBufferObject;
+class vtkParticleDensityVolume;
 class vtkParticleOcclusionCuller;
 
 class VTKPARTICLERENDERING_EXPORT vtkParticleSphereMapper : public vtkOpenGLPolyDataMapper
@@ -266,6 +269,18 @@ public:
   bool GetClipBox(double box[6]) const;
   ///@}
 
+  ///@{
+  /**
+   * A density volume of these particles' spheres together with those of every other process
+   * (distributed rendering: vtkParticleRepresentation builds it over the global bounds and sums
+   * it over the processes in the pipeline). vtkDensityVolumeAOPass uses it instead of
+   * voxelising the particles this process holds, so that occlusion does not stop at the
+   * processes' boundaries. Null (the default): the pass voxelises the drawn particles.
+   */
+  void SetDistributedDensityVolume(vtkParticleDensityVolume* volume);
+  vtkParticleDensityVolume* GetDistributedDensityVolume();
+  ///@}
+
 protected:
   vtkParticleSphereMapper();
   ~vtkParticleSphereMapper() override;
@@ -398,6 +413,7 @@ protected:
   // the clip box (SetClipBox) and whether it is set
   double ClipBox[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool UseClipBox = false;
+  vtkSmartPointer<vtkParticleDensityVolume> DistributedDensityVolume;
   vtkMTimeType ScaleOnlyMTime = 0;
   vtkMTimeType DataMTimeBeforeScale = 0;
   vtkIdType NumberOfSkippedParticles = 0;

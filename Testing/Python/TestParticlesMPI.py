@@ -18,10 +18,12 @@ Cases (Particle Render View, 400x300, coloured by type, radii from 'radius'):
 With N = 1 each image is compared with its baseline (Testing/Data/Baseline/TestParticlesMPI_*,
 the GPU's own picture on this platform) and written to <temp-dir>/TestParticlesMPI_<case>_np1.png;
 with N > 1 each image must equal that single-process image within --tolerance per pixel (8-bit
-steps, default 2/255). The measured maximum is printed per case.
+steps, default 2/255), but for at most 0.01 % of the pixels one step more (IceT composites the
+processes' 8-bit images, each rounded once). The measured maximum is printed per case.
 
 usage: mpiexec -np N pvbatch TestParticlesMPI.py --plugin ParticleRendering.so --data DIR
            --baseline-dir DIR --temp-dir DIR [--empty-rank] [--tolerance T] [--cases a,b]
+           [--reference-dir DIR (where the -np 1 run wrote its images; default the temp dir)]
 """
 import argparse
 import builtins
@@ -30,6 +32,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
+import numpy  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from paraview import servermanager, simple  # noqa: E402
 
 CASES = {
@@ -40,6 +44,14 @@ CASES = {
     "ao": (1.0, 0, "Density Volume"),
     "ao-translucent": (0.7, 0, "Density Volume"),
 }
+
+# share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)
+OVER_TOLERANCE_SHARE = 1e-4
+
+
+def rgb(image):
+    return vtk_to_numpy(image.GetPointData().GetScalars()).astype(int)[:, :3]
+
 
 SPLIT_SCRIPT = """
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -91,6 +103,7 @@ def parse_extra():
     parser.add_argument("--empty-rank", action="store_true")
     parser.add_argument("--tolerance", type=float, default=2.0)
     parser.add_argument("--cases", default=",".join(CASES))
+    parser.add_argument("--reference-dir", default="")
     extra, _ = parser.parse_known_args()
     return extra
 
@@ -163,21 +176,27 @@ def main():
         if ranks == 1:
             ok = pr.capture_and_compare(view, name, args, pr.SAME_PLATFORM)[0] and ok
             continue
-        reference_path = os.path.join(args.temp_dir, "%s_np1.png" % name)
+        reference_path = os.path.join(extra.reference_dir or args.temp_dir, "%s_np1.png" % name)
         if not os.path.exists(reference_path):
             print("FAIL: %s: no single-process image %s (run with -np 1 first)" % (case, reference_path))
             ok = False
             continue
-        worst, mean = pr.difference(image, pr.read_png(reference_path))
+        reference = pr.read_png(reference_path)
+        worst, mean = pr.difference(image, reference)
         if worst is None:
             print("FAIL: %s: the image cannot be compared with the single-process one" % case)
             ok = False
             continue
-        print("%s: np %d against np 1: max %.0f/255, mean %.3f/255" % (case, ranks, worst, mean))
+        error = numpy.abs(rgb(image) - rgb(reference)).max(axis=1)
+        over = int(numpy.count_nonzero(error > extra.tolerance))
+        print("%s: np %d against np 1: max %.0f/255, mean %.3f/255, %d of %d pixels over %.0f/255"
+              % (case, ranks, worst, mean, over, error.size, extra.tolerance))
         worst_overall = builtins.max(worst_overall, worst)
-        if worst > extra.tolerance:
-            print("FAIL: %s: differs from the single-process image by %.0f/255 > %.0f/255"
-                  % (case, worst, extra.tolerance))
+        # IceT composites the processes' 8-bit images: each rounds once, so a few pixels may
+        # be one step further off than the single-process image
+        if builtins.round(worst) > extra.tolerance + 1 or over > OVER_TOLERANCE_SHARE * error.size:
+            print("FAIL: %s: differs from the single-process image by %.0f/255 (%d pixels over "
+                  "%.0f/255)" % (case, worst, over, extra.tolerance))
             ok = False
 
     if ranks > 1:
