@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -210,13 +211,14 @@ void vtkParticlePartition::GetBox(double box[6]) const
 bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusArray,
   double radius, double radiusScale, double reach, const double sphereBounds[6])
 {
+  const double start = vtkTimerLog::GetUniversalTime();
   vtkMultiProcessController* controller = this->Controller;
   const int size = controller ? controller->GetNumberOfProcesses() : 1;
   const int rank = controller ? controller->GetLocalProcessId() : 0;
   this->Output = vtkSmartPointer<vtkPolyData>::New();
   this->Output->SetPoints(vtkSmartPointer<vtkPoints>::New());
   this->Boxes.assign(6 * size, 0.0);
-  this->Distribution.assign(4 * size, 0.0);
+  this->Distribution.assign(5 * size, 0.0);
 
   const vtkIdType localCount =
     (particles && particles->GetPoints()) ? particles->GetNumberOfPoints() : 0;
@@ -562,15 +564,15 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
   {
     owned += ghosts->GetValue(i) == 0 ? 1 : 0;
   }
-  double stats[4] = { static_cast<double>(localCount), static_cast<double>(owned),
-    static_cast<double>(total - owned), bytesSent };
+  double stats[5] = { static_cast<double>(localCount), static_cast<double>(owned),
+    static_cast<double>(total - owned), bytesSent, vtkTimerLog::GetUniversalTime() - start };
   if (size > 1)
   {
-    controller->AllGather(stats, this->Distribution.data(), 4);
+    controller->AllGather(stats, this->Distribution.data(), 5);
   }
   else
   {
-    std::copy(stats, stats + 4, this->Distribution.begin());
+    std::copy(stats, stats + 5, this->Distribution.begin());
   }
   return true;
 }

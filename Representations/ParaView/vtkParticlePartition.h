@@ -26,7 +26,7 @@
  *
  * Partition() is collective: every process of the controller must call it, also those without
  * particles. Statistics (GetDistribution): per process, particles given, owned and ghost
- * particles after, bytes sent.
+ * particles after, bytes sent, seconds.
  *
  * @sa vtkParticleRepresentation vtkParticleSphereMapper
  */
@@ -88,8 +88,9 @@ public:
   const std::vector<double>& GetBoxes() const { return this->Boxes; }
 
   /**
-   * Per process, 4 values: particles given to Partition(), owned and ghost particles after it,
-   * bytes sent to other processes (the same on every process).
+   * Per process, 5 values: particles given to Partition(), owned and ghost particles after it,
+   * bytes sent to other processes, seconds the partition took there (the same on every
+   * process).
    */
   const std::vector<double>& GetDistribution() const { return this->Distribution; }
 

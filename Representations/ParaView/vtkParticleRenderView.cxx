@@ -169,6 +169,7 @@ void vtkParticleRenderView::SetDensityVolumeAOPass(vtkDensityVolumeAOPass* pass)
   }
   this->PassProgressTag = pass->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
+  pass->SetWarnWithoutParticles(false); // a process without particles is normal here
   this->ReplaceAmbientOcclusionPass(this->DensityVolumeAOPass, pass, DENSITY_VOLUME);
 }
 
@@ -179,6 +180,7 @@ void vtkParticleRenderView::SetVoxelConeAOPass(vtkVoxelConeAOPass* pass)
   {
     return;
   }
+  pass->SetWarnWithoutParticles(false); // a process without particles is normal here
   this->ReplaceAmbientOcclusionPass(this->VoxelConeAOPass, pass, VOXEL_CONE_TRACING);
 }
 

@@ -490,9 +490,9 @@ bool vtkParticleRepresentation::PartitionParticles(
   const vtkIdType localCount = this->ProcessedData ? this->ProcessedData->GetNumberOfPoints() : 0;
   if (size <= 1)
   {
-    this->Distribution->SetNumberOfValues(4);
-    const double values[4] = { double(localCount), double(localCount), 0.0, 0.0 };
-    std::copy(values, values + 4, this->Distribution->GetPointer(0));
+    this->Distribution->SetNumberOfValues(5);
+    const double values[5] = { double(localCount), double(localCount), 0.0, 0.0, 0.0 };
+    std::copy(values, values + 5, this->Distribution->GetPointer(0));
     return false;
   }
   // Only translucent spheres need the partition: opaque ones composite by depth wherever they
@@ -515,9 +515,9 @@ bool vtkParticleRepresentation::PartitionParticles(
   if (!needed)
   {
     // the data stays where it is
-    double local[4] = { double(localCount), double(localCount), 0.0, 0.0 };
-    this->Distribution->SetNumberOfValues(4 * size);
-    controller->AllGather(local, this->Distribution->GetPointer(0), 4);
+    double local[5] = { double(localCount), double(localCount), 0.0, 0.0, 0.0 };
+    this->Distribution->SetNumberOfValues(5 * size);
+    controller->AllGather(local, this->Distribution->GetPointer(0), 5);
     return false;
   }
   const bool partitioned = this->Partition->Partition(this->ProcessedData,

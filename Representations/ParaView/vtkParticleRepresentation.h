@@ -219,9 +219,9 @@ public:
   vtkIdType GetNumberOfParticles();
 
   /**
-   * How the particles are spread over the processes, 4 values per process: particles of the
+   * How the particles are spread over the processes, 5 values per process: particles of the
    * process's piece, particles it owns and ghost copies it draws after the partition, bytes it
-   * sent (see vtkParticlePartition). Translucent spheres are partitioned when there is more than
+   * sent, seconds the partition took (see vtkParticlePartition). Translucent spheres are partitioned when there is more than
    * one process; otherwise every process owns its piece. For an information property.
    */
   vtkDoubleArray* GetParticleDistribution();

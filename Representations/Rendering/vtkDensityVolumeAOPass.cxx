@@ -169,8 +169,11 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   }
   if (particles.empty())
   {
-    vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
-                       "in the renderer: no ambient occlusion to compute.");
+    if (this->WarnWithoutParticles)
+    {
+      vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
+                         "in the renderer: no ambient occlusion to compute.");
+    }
     return;
   }
 

@@ -49,6 +49,16 @@ public:
    */
   vtkGetMacro(NumberOfVolumeBuilds, vtkIdType);
 
+  ///@{
+  /**
+   * Warn when the renderer has no visible particle prop to build the volume from (default on).
+   * ParaView's Particle Render View switches it off: a process without particles is normal
+   * there (a client of a remote server, a rank with an empty piece).
+   */
+  vtkSetMacro(WarnWithoutParticles, bool);
+  vtkGetMacro(WarnWithoutParticles, bool);
+  ///@}
+
 protected:
   vtkParticleVolumeAOPass();
   ~vtkParticleVolumeAOPass() override;
@@ -99,6 +109,7 @@ protected:
   vtkTextureObject* VolumeTexture;
   bool VolumeValid = false;
   vtkIdType NumberOfVolumeBuilds = 0;
+  bool WarnWithoutParticles = true;
   // the renderer being drawn (between PreRender and PostRender)
   vtkRenderer* CurrentRenderer = nullptr;
   // the shader hooks the pass fills (warns once per missing hook)

@@ -96,8 +96,11 @@ void vtkVoxelConeAOPass::UpdateVolume(const vtkRenderState* s)
   }
   if (particles.empty())
   {
-    vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
-                       "in the renderer: no voxel cone tracing.");
+    if (this->WarnWithoutParticles)
+    {
+      vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
+                         "in the renderer: no voxel cone tracing.");
+    }
     return;
   }
   vtkParticleAmbientVolume* volume = internals.Volume;

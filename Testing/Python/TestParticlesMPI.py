@@ -32,71 +32,10 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
+from prMPITesting import (CASES, OVER_TOLERANCE_SHARE, apply_case, make_film_pieces, rgb,
+                          show_film)  # noqa: E402
 import numpy  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from paraview import servermanager, simple  # noqa: E402
-
-CASES = {
-    # name: (opacity, density model, ambient occlusion)
-    "opaque": (1.0, 0, "None"),
-    "translucent": (0.7, 0, "None"),
-    "translucent-squared": (0.7, 1, "None"),
-    "ao": (1.0, 0, "Density Volume"),
-    "ao-translucent": (0.7, 0, "Density Volume"),
-}
-
-# share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)
-OVER_TOLERANCE_SHARE = 1e-4
-
-
-def rgb(image):
-    return vtk_to_numpy(image.GetPointData().GetScalars()).astype(int)[:, :3]
-
-
-SPLIT_SCRIPT = """
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
-import numpy
-from vtkmodules.util.numpy_support import numpy_to_vtk
-info = self.GetOutputInformation(0)
-piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
-pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
-reader = vtkXMLPolyDataReader()
-reader.SetFileName(%(path)r)
-reader.Update()
-full = reader.GetOutput()
-n = full.GetNumberOfPoints()
-owner = numpy.arange(n) %% pieces
-if %(empty_rank)r and pieces > 1:
-    owner[owner == pieces - 1] = 0
-keep = numpy.nonzero(owner == piece)[0]
-from vtkmodules.vtkCommonCore import vtkIdList
-ids = vtkIdList()
-ids.SetNumberOfIds(len(keep))
-for k, i in enumerate(keep):
-    ids.SetId(k, int(i))
-from vtkmodules.vtkCommonCore import vtkPoints
-out = self.GetPolyDataOutput()
-points = vtkPoints()
-points.SetDataType(full.GetPoints().GetDataType())
-full.GetPoints().GetPoints(ids, points)
-out.SetPoints(points)
-for a in range(full.GetPointData().GetNumberOfArrays()):
-    src = full.GetPointData().GetArray(a)
-    dst = src.NewInstance()
-    dst.SetName(src.GetName())
-    dst.SetNumberOfComponents(src.GetNumberOfComponents())
-    dst.SetNumberOfTuples(len(keep))
-    src.GetTuples(ids, dst)
-    out.GetPointData().AddArray(dst)
-"""
-
-SPLIT_INFORMATION_SCRIPT = """
-from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
-self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
-"""
-
 
 def parse_extra():
     parser = argparse.ArgumentParser()
@@ -117,21 +56,14 @@ def main():
     ok = True
 
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
-    path = os.path.join(args.data, "lj_film.vtp")
-    pieces_source = simple.ProgrammableSource()
-    pieces_source.OutputDataSetType = "vtkPolyData"
-    pieces_source.Script = SPLIT_SCRIPT % {"path": path, "empty_rank": extra.empty_rank}
-    pieces_source.ScriptRequestInformation = SPLIT_INFORMATION_SCRIPT
-    pieces_source.UpdatePipeline()
+    pieces_source = make_film_pieces(args, extra.empty_rank)
     total = pieces_source.GetDataInformation().GetNumberOfPoints()
     print("ranks %d, particles %d" % (ranks, total))
     if total != 19360:
         print("FAIL: the split source has %d particles, not 19360" % total)
         ok = False
 
-    view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=(400, 300))
-    display = pr.show_particles(pieces_source, view)
-    pr.set_camera(view, position=(95.0, -60.0, 70.0), focal_point=(19.7, 19.7, 9.0))
+    view, display = show_film(pieces_source, pr)
 
 
     def distribution():
@@ -139,7 +71,7 @@ def main():
         display.SMProxy.UpdatePropertyInformation()
         prop = display.GetProperty("ParticleDistribution")
         values = list(prop) if prop is not None else []
-        return [values[4 * r:4 * r + 4] for r in range(len(values) // 4)]
+        return [values[5 * r:5 * r + 4] for r in range(len(values) // 5)]
 
 
     def expected_input_counts():
@@ -152,10 +84,7 @@ def main():
 
     worst_overall = 0
     for case in extra.cases.split(","):
-        opacity, model, ao = CASES[case]
-        display.Opacity = opacity
-        display.DensityModel = model
-        view.ParticleAmbientOcclusion = ao
+        apply_case(view, display, case)
         name = "TestParticlesMPI_%s" % case
         image = pr.capture(view, os.path.join(args.temp_dir, "%s_np%d.png" % (name, ranks)))
         per_rank = distribution()

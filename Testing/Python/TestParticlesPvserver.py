@@ -1,0 +1,136 @@
+"""Distributed rendering in client-server mode: pvpython connects to a pvserver with 2 MPI ranks
+and gets the picture of the built-in (single-process) connection.
+
+The test first renders the LAMMPS film (Testing/Data/lj_film.vtp, split into interleaved pieces,
+see prMPITesting) as translucent Particles (opacity 0.7) with density-volume AO in a Particle
+Render View over the built-in connection. It then starts `mpiexec -np 2 pvserver` on a free
+port, connects, loads the plugin on both sides, forces rendering on the server (remote render
+threshold 0, so both ranks render and IceT composites) and renders the same scene: the image
+must equal the built-in one within 2/255 (one step more on at most 0.01 % of the pixels, the
+ranks' 8-bit images; without the partition on the server translucent particles split over two
+ranks differ by up to ~90/255, without the summed volume the AO by up to ~95/255, see
+TestParticlesMPI). The server must have 2 ranks. (The representation's ParticleDistribution
+information comes from the client's object in client-server mode, so the per-rank counts are
+checked by TestParticlesMPI under pvbatch.)
+
+usage: pvpython TestParticlesPvserver.py --plugin ParticleRendering.so --data DIR
+           --baseline-dir DIR --temp-dir DIR --mpiexec PATH --pvserver PATH [--np N]
+"""
+import argparse
+import builtins
+import os
+import socket
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import prParaViewTesting as pr  # noqa: E402
+from prMPITesting import (OVER_TOLERANCE_SHARE, apply_case, make_film_pieces, rgb,  # noqa: E402
+                          show_film)
+import numpy  # noqa: E402
+from paraview import simple  # noqa: E402
+
+CASE = "ao-translucent"
+TOLERANCE = 2.0
+
+
+def parse_extra():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--mpiexec", required=True)
+    parser.add_argument("--pvserver", required=True)
+    parser.add_argument("--np", type=int, default=2)
+    extra, _ = parser.parse_known_args()
+    return extra
+
+
+def free_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind(("localhost", 0))
+        return s.getsockname()[1]
+
+
+def start_server(extra, port):
+    """mpiexec -np N pvserver on `port`; returns the process once it accepts connections."""
+    import select  # here: the ProgrammableSource replaced the global `select` (numpy's)
+    # this pvpython is an MPI singleton: its Open MPI / PMIx variables would make mpiexec fail
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))}
+    env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = [extra.mpiexec, "-np", str(extra.np), "--oversubscribe", "-x", "DISPLAY",
+               "-x", "PYTHONPATH", extra.pvserver, "--server-port=%d" % port,
+               "--force-offscreen-rendering"]
+    print("starting: %s" % " ".join(command))
+    server = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env)
+    deadline = time.time() + 120.0
+    output = b""
+    while time.time() < deadline:
+        ready, _, _ = select.select([server.stdout], [], [], 1.0)
+        if ready:
+            chunk = os.read(server.stdout.fileno(), 4096)
+            if not chunk:
+                break
+            output += chunk
+            if b"Accepting connection" in output:
+                return server
+        if server.poll() is not None:
+            break
+    print("FAIL: the server did not start:\n%s" % output.decode(errors="replace"))
+    server.kill()
+    return None
+
+
+def render_case(args, name):
+    source = make_film_pieces(args)
+    view, display = show_film(source, pr)
+    apply_case(view, display, CASE)
+    return pr.capture(view, os.path.join(args.temp_dir, "TestParticlesPvserver_%s.png" % name))
+
+
+def main():
+    args = pr.parse_arguments()
+    extra = parse_extra()
+    ok = True
+
+    # the built-in connection's picture
+    pr.load_plugin(args)
+    reference = render_case(args, "builtin")
+    simple.Disconnect()
+
+    port = free_port()
+    server = start_server(extra, port)
+    if server is None:
+        return False
+    try:
+        simple.Connect("localhost", port)
+        simple.LoadPlugin(args.plugin, remote=True)
+        simple.LoadPlugin(args.plugin, remote=False)
+        # every server rank renders its part, IceT composites (no gathering to the client)
+        simple.GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
+        partitions = simple.servermanager.ActiveConnection.GetNumberOfDataPartitions()
+        if partitions != extra.np:
+            print("FAIL: the server has %d ranks, not %d" % (partitions, extra.np))
+            ok = False
+        image = render_case(args, "pvserver")
+        worst, mean = pr.difference(image, reference)
+        if worst is None:
+            print("FAIL: the client-server image cannot be compared with the built-in one")
+            return False
+        error = numpy.abs(rgb(image) - rgb(reference)).max(axis=1)
+        over = int(numpy.count_nonzero(error > TOLERANCE))
+        print("pvserver -np %d against the built-in connection: max %.0f/255, mean %.3f/255, "
+              "%d of %d pixels over %.0f/255" % (extra.np, worst, mean, over, error.size, TOLERANCE))
+        if builtins.round(worst) > TOLERANCE + 1 or over > OVER_TOLERANCE_SHARE * error.size:
+            print("FAIL: the client-server picture differs from the built-in one")
+            ok = False
+        simple.Disconnect()
+    finally:
+        server.terminate()
+        try:
+            server.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            server.kill()
+    return ok
+
+
+pr.finish(main())

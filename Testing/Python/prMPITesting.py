@@ -1,0 +1,101 @@
+"""Shared parts of the distributed-rendering tests (TestParticlesMPI, TestParticlesPvserver):
+the LAMMPS film split into interleaved pieces per rank, the cases, the comparison helpers.
+
+Note: a ProgrammableSource's script runs in the __main__ namespace of pvpython/pvbatch in a
+builtin session and replaces globals there (e.g. `split`, `max`, `sum` from
+numpy_interface.algorithms): the test scripts keep their work inside functions.
+"""
+import os
+
+from paraview import simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+CASES = {
+    # name: (opacity, density model, ambient occlusion)
+    "opaque": (1.0, 0, "None"),
+    "translucent": (0.7, 0, "None"),
+    "translucent-squared": (0.7, 1, "None"),
+    "ao": (1.0, 0, "Density Volume"),
+    "ao-translucent": (0.7, 0, "Density Volume"),
+}
+
+# share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)
+OVER_TOLERANCE_SHARE = 1e-4
+
+
+def rgb(image):
+    return vtk_to_numpy(image.GetPointData().GetScalars()).astype(int)[:, :3]
+
+
+SPLIT_SCRIPT = """
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+import numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk
+info = self.GetOutputInformation(0)
+piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
+pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
+reader = vtkXMLPolyDataReader()
+reader.SetFileName(%(path)r)
+reader.Update()
+full = reader.GetOutput()
+n = full.GetNumberOfPoints()
+owner = numpy.arange(n) %% pieces
+if %(empty_rank)r and pieces > 1:
+    owner[owner == pieces - 1] = 0
+keep = numpy.nonzero(owner == piece)[0]
+from vtkmodules.vtkCommonCore import vtkIdList
+ids = vtkIdList()
+ids.SetNumberOfIds(len(keep))
+for k, i in enumerate(keep):
+    ids.SetId(k, int(i))
+from vtkmodules.vtkCommonCore import vtkPoints
+out = self.GetPolyDataOutput()
+points = vtkPoints()
+points.SetDataType(full.GetPoints().GetDataType())
+full.GetPoints().GetPoints(ids, points)
+out.SetPoints(points)
+for a in range(full.GetPointData().GetNumberOfArrays()):
+    src = full.GetPointData().GetArray(a)
+    dst = src.NewInstance()
+    dst.SetName(src.GetName())
+    dst.SetNumberOfComponents(src.GetNumberOfComponents())
+    dst.SetNumberOfTuples(len(keep))
+    src.GetTuples(ids, dst)
+    out.GetPointData().AddArray(dst)
+"""
+
+SPLIT_INFORMATION_SCRIPT = """
+from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
+self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
+"""
+
+
+
+def make_film_pieces(args, empty_rank=False):
+    """A ProgrammableSource that reads Testing/Data/lj_film.vtp (19360 atoms) on every rank and
+    keeps particle i on rank i mod N (with empty_rank: the last rank's go to rank 0)."""
+    source = simple.ProgrammableSource()
+    source.OutputDataSetType = "vtkPolyData"
+    source.Script = SPLIT_SCRIPT % {"path": os.path.join(args.data, "lj_film.vtp"),
+                                    "empty_rank": empty_rank}
+    source.ScriptRequestInformation = SPLIT_INFORMATION_SCRIPT
+    source.UpdatePipeline()
+    return source
+
+
+def show_film(source, pr):
+    """The Particle Render View (400x300) of the tests with the film as Particles coloured by
+    type, radii from 'radius'; returns (view, display). pr: prParaViewTesting."""
+    view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=(400, 300))
+    display = pr.show_particles(source, view)
+    pr.set_camera(view, position=(95.0, -60.0, 70.0), focal_point=(19.7, 19.7, 9.0))
+    return view, display
+
+
+def apply_case(view, display, case):
+    opacity, model, ao = CASES[case]
+    display.Opacity = opacity
+    display.DensityModel = model
+    view.ParticleAmbientOcclusion = ao
