@@ -12,7 +12,8 @@ IceT has composited):
   translucent with density-volume AO: the mean of FRAMES frames, each after a camera rotation
   (nothing but drawing and compositing);
 - step_s: a time step (every particle moved a little, the source executes again) rendered
-  translucent with AO: source, partition, volume sum and frame;
+  translucent with AO: source (source_s: the ProgrammableSource generating the pieces, not our
+  code), partition, volume sum and frame;
 - partition_s: the partition's own time in that step (the slowest rank, from the
   representation's ParticleDistribution), bytes: bytes sent by all ranks, ghosts: ghost copies
   drawn by all ranks.
@@ -136,6 +137,8 @@ def main():
     # a time step
     source.Script = SCRIPT % {"path": path, "repeat": args.repeat, "step": 1}
     start = time.time()
+    source.UpdatePipeline()
+    row["source_s"] = time.time() - start
     simple.Render(view)
     row["step_s"] = time.time() - start
     per_rank = distribution()
@@ -147,7 +150,7 @@ def main():
     print(row)
 
     columns = ["particles", "ranks", "width", "height", "opaque_frame_s", "translucent_frame_s",
-               "translucent_ao_frame_s", "step_s", "partition_s", "bytes", "ghosts",
+               "translucent_ao_frame_s", "source_s", "step_s", "partition_s", "bytes", "ghosts",
                "owned_min", "owned_max"]
     new = not os.path.exists(args.csv)
     with open(args.csv, "a") as f:
