@@ -13,16 +13,27 @@
  * vtkPolyData of particles (RequestData). A single leaf with explicit points shares its points
  * and point arrays (no copy); several leaves are appended (vtkAppendPolyData keeps the point
  * arrays common to all leaves); implicit points (image data, rectilinear grids) are made
- * explicit. When running with more than one process one vertex cell per particle is added, so
- * ParaView's redistribution for ordered compositing (which moves cells) keeps every particle.
+ * explicit.
+ *
+ * Distributed rendering (more than one process; all of it collective, in the pipeline, never
+ * in a render pass): translucent spheres are partitioned in RequestData (vtkParticlePartition:
+ * one k-d box per process, raw point arrays moved, ghost copies of spheres reaching into other
+ * boxes); the view gets the process's box as its geometry bounds with
+ * USE_BOUNDS_FOR_REDISTRIBUTION (IceT orders the processes by the boxes; never
+ * DATA_IS_REDISTRIBUTABLE, whose appended-XML path Debian's expat breaks in VTK 9.2), and the
+ * mapper clips its drawing to the box (vtkParticleSphereMapper::SetClipBox), so the processes'
+ * images composite to the single-process picture. The column-opacity layer estimate is taken
+ * over all processes. With the Particle Render View's density-volume AO, REQUEST_RENDER (when
+ * every process renders) sums the processes' density volumes over the global bounds and hands
+ * the result to the mapper (SetDistributedDensityVolume). Opaque spheres stay where they are.
  *
  * View protocol (like vtkPointGaussianRepresentation): REQUEST_UPDATE hands the particle
  * polydata to the view (vtkPVView::SetPiece), reports the bounds of the spheres (the points'
  * finite bounds grown by the largest radius in use times RadiusScaleFactor, under the actor's
- * transform) and the ordered-compositing needs (only when translucent); REQUEST_RENDER gives the
- * delivered piece to the mapper and updates the colouring. An empty local piece (normal in
- * parallel, or for an empty filter output) hides the actor for that render instead of letting
- * the mapper warn about an input without points.
+ * transform, or the partition box) and the ordered-compositing needs (only when translucent);
+ * REQUEST_RENDER gives the delivered piece to the mapper and updates the colouring. An empty
+ * local piece (normal in parallel, or for an empty filter output) hides the actor for that
+ * render instead of letting the mapper warn about an input without points.
  *
  * Radii: UseRadiusArray chooses between the point array RadiusArray and the constant Radius;
  * both are scaled by RadiusScaleFactor (map to vtkParticleSphereMapper's RadiusArrayName, Radius
