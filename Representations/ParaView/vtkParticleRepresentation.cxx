@@ -20,6 +20,8 @@
 #include "vtkPVRenderView.h"
 #include "vtkMetaballMapper.h"
 #include "vtkDensityVolumeAOPass.h"
+#include "vtkParticleAmbientVolume.h"
+#include "vtkVoxelConeAOPass.h"
 #include "vtkParticleDensityVolume.h"
 #include "vtkParticlePartition.h"
 #include "vtkParticleRenderView.h"
@@ -471,6 +473,7 @@ int vtkParticleRepresentation::ProcessViewRequest(
     this->Mapper->SetClipBox(clipBox);
     this->Mapper->SetInputDataObject(particles);
     this->UpdateDistributedDensityVolume(inInfo);
+    this->UpdateDistributedAmbientVolume(inInfo);
     this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
     // an empty filter output): draw nothing, without the mapper's "no points" warning.
@@ -590,17 +593,140 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleRepresentation::IsDistributedRender(vtkInformation* inInfo)
+{
+  // Every process renders (distributed rendering): all of them are in REQUEST_RENDER together,
+  // so sums over the processes are safe. A client that renders gathered data alone does not
+  // need them (its passes voxelise everything).
+  auto controller = vtkMultiProcessController::GetGlobalController();
+  auto view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+  const bool lod =
+    inInfo->Has(vtkPVRenderView::USE_LOD()) && inInfo->Get(vtkPVRenderView::USE_LOD());
+  return controller && controller->GetNumberOfProcesses() > 1 && view &&
+    (lod ? view->GetUseDistributedRenderingForLODRender()
+         : view->GetUseDistributedRenderingForRender());
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleRepresentation::StaleOnAnyProcess(const std::string& key, std::string& stored)
+{
+  int stale = key != stored ? 1 : 0;
+  int anyStale = stale;
+  vtkMultiProcessController::GetGlobalController()->AllReduce(
+    &stale, &anyStale, 1, vtkCommunicator::MAX_OP);
+  stored = key;
+  return anyStale != 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateDistributedAmbientVolume(vtkInformation* inInfo)
+{
+  auto view = vtkParticleRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+  if (!IsDistributedRender(inInfo) || !view)
+  {
+    this->Mapper->SetDistributedAmbientVolume(nullptr);
+    return;
+  }
+  auto controller = vtkMultiProcessController::GetGlobalController();
+  vtkVoxelConeAOPass* pass = view->GetVoxelConeAOPass();
+  const bool needed = pass &&
+    view->GetAmbientOcclusion() == vtkParticleRenderView::VOXEL_CONE_TRACING &&
+    this->Technique == SPHERES;
+  vtkParticleAmbientVolume* settings = needed ? pass->GetAmbientVolume() : nullptr;
+  // what the voxels depend on: the spheres (data, radii, matrix), their colours and opacities
+  // (mapper, lookup table, property) and the volume's settings
+  vtkPolyData* input = this->Mapper->GetInput();
+  std::ostringstream key;
+  key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";"
+      << this->Mapper->GetMTime() << ";"
+      << (this->Mapper->GetLookupTable() ? this->Mapper->GetLookupTable()->GetMTime() : 0) << ";"
+      << this->Actor->GetProperty()->GetMTime() << ";" << this->Actor->GetMatrix()->GetMTime()
+      << ";" << (settings ? settings->GetMTime() : 0);
+  if (!StaleOnAnyProcess(key.str(), this->AmbientVolumeKey))
+  {
+    this->Mapper->SetDistributedAmbientVolume(needed ? this->AmbientVolume.Get() : nullptr);
+    return;
+  }
+  if (!needed)
+  {
+    this->Mapper->SetDistributedAmbientVolume(nullptr);
+    return;
+  }
+  // this process's own spheres as the pass would gather them (ghost copies left out)
+  std::vector<double> centers;
+  std::vector<double> radii;
+  std::vector<double> colors;
+  std::vector<double> opacities;
+  if (input && input->GetNumberOfPoints() > 0)
+  {
+    this->Mapper->GetBounds(); // prepares the radii
+    vtkParticleAmbientVolume::GatherSpheres(
+      this->Actor, this->Mapper, true, centers, radii, colors, opacities);
+  }
+  // the grid of all processes' spheres: bounds and mean radius of the drawn ones (as
+  // vtkParticleAmbientVolume sets it up from one process's)
+  double mins[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double maxs[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double local[2] = { 0.0, 0.0 };
+  for (size_t i = 0; i < radii.size(); ++i)
+  {
+    const double* c = &centers[3 * i];
+    const double r = radii[i];
+    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(c[0] + c[1] + c[2]) ||
+      !(opacities[i] > 0.0))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      mins[k] = std::min(mins[k], c[k] - r);
+      maxs[k] = std::max(maxs[k], c[k] + r);
+    }
+    local[0] += 1.0;
+    local[1] += r;
+  }
+  double global[2];
+  double globalMins[3];
+  double globalMaxs[3];
+  controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
+  controller->AllReduce(mins, globalMins, 3, vtkCommunicator::MIN_OP);
+  controller->AllReduce(maxs, globalMaxs, 3, vtkCommunicator::MAX_OP);
+  vtkParticleAmbientVolume* volume = this->AmbientVolume;
+  volume->SetResolution(settings->GetResolution());
+  volume->SetMaximumResolution(settings->GetMaximumResolution());
+  volume->SetSubGridSamples(settings->GetSubGridSamples());
+  volume->SetAmbientEmission(settings->GetAmbientEmission());
+  volume->SetMaximumMemory(settings->GetMaximumMemory());
+  const double bounds[6] = { globalMins[0], globalMaxs[0], globalMins[1], globalMaxs[1],
+    globalMins[2], globalMaxs[2] };
+  int ok = global[0] > 0.0 &&
+      volume->VoxeliseLevelZero(centers, radii, colors, opacities, bounds, global[1] / global[0])
+    ? 1
+    : 0;
+  int everywhere = ok;
+  controller->AllReduce(&ok, &everywhere, 1, vtkCommunicator::MIN_OP);
+  if (!everywhere)
+  {
+    this->Mapper->SetDistributedAmbientVolume(nullptr);
+    return;
+  }
+  // level 0 summed over the processes (extinction and emission add up); the pass builds the mips
+  std::vector<float>& level = volume->GetMutableLevelZero();
+  std::vector<float> total(level.size());
+  controller->AllReduce(
+    level.data(), total.data(), static_cast<vtkIdType>(level.size()), vtkCommunicator::SUM_OP);
+  level.swap(total);
+  volume->Modified();
+  this->Mapper->SetDistributedAmbientVolume(volume);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRepresentation::UpdateDistributedDensityVolume(vtkInformation* inInfo)
 {
   auto controller = vtkMultiProcessController::GetGlobalController();
   auto view = vtkParticleRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
-  const bool lod = inInfo->Has(vtkPVRenderView::USE_LOD()) && inInfo->Get(vtkPVRenderView::USE_LOD());
-  // Only when every process renders (distributed rendering: all of them are here together, so
-  // the sum over processes is safe) and the view's ambient occlusion is the density volume. A
-  // client rendering gathered data alone voxelises it all in the pass.
-  const bool distributed = controller && controller->GetNumberOfProcesses() > 1 && view &&
-    (lod ? view->GetUseDistributedRenderingForLODRender()
-         : view->GetUseDistributedRenderingForRender());
+  // only when the view's ambient occlusion is the density volume
+  const bool distributed = IsDistributedRender(inInfo);
   vtkDensityVolumeAOPass* pass = view ? view->GetDensityVolumeAOPass() : nullptr;
   const bool needed = distributed && pass &&
     view->GetAmbientOcclusion() == vtkParticleRenderView::DENSITY_VOLUME &&
@@ -623,15 +749,11 @@ void vtkParticleRepresentation::UpdateDistributedDensityVolume(vtkInformation* i
   {
     key << ";" << matrix->GetData()[i];
   }
-  int stale = key.str() != this->DensityVolumeKey ? 1 : 0;
-  int anyStale = stale;
-  controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
-  if (!anyStale)
+  if (!StaleOnAnyProcess(key.str(), this->DensityVolumeKey))
   {
     this->Mapper->SetDistributedDensityVolume(needed ? this->DensityVolume.Get() : nullptr);
     return;
   }
-  this->DensityVolumeKey = key.str();
   if (!needed)
   {
     this->Mapper->SetDistributedDensityVolume(nullptr);

@@ -60,6 +60,7 @@
 class vtkActor;
 class vtkDataObject;
 class vtkDoubleArray;
+class vtkParticleAmbientVolume;
 class vtkParticleDensityVolume;
 class vtkParticlePartition;
 class vtkUnsignedCharArray;
@@ -292,6 +293,19 @@ protected:
   void UpdateDistributedDensityVolume(vtkInformation* inInfo);
   vtkNew<vtkParticleDensityVolume> DensityVolume;
   std::string DensityVolumeKey;
+  /**
+   * The same for the view's voxel-cone AO (vtkVoxelConeAOPass): level 0 of an ambient volume
+   * over all processes' spheres (own particles, not ghost copies; colours and opacities as
+   * drawn), summed over the processes; the pass builds the mips
+   * (vtkParticleSphereMapper::SetDistributedAmbientVolume).
+   */
+  void UpdateDistributedAmbientVolume(vtkInformation* inInfo);
+  vtkNew<vtkParticleAmbientVolume> AmbientVolume;
+  std::string AmbientVolumeKey;
+  // every process renders this frame (distributed rendering; see UpdateDistributedDensityVolume)
+  static bool IsDistributedRender(vtkInformation* inInfo);
+  // whether key differs from stored on any process (collective); stores key
+  static bool StaleOnAnyProcess(const std::string& key, std::string& stored);
   double GlobalColumnLayers = 0.0;
   // `particles` without its ghost copies (cached)
   vtkPolyData* WithoutGhosts(vtkPolyData* particles, vtkUnsignedCharArray* ghosts);

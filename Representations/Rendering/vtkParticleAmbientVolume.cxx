@@ -6,6 +6,8 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
@@ -115,6 +117,10 @@ public:
   vtkOpenGLRenderWindow* Context = nullptr;
   bool WarnedNoCompute = false;
   unsigned int TextureHandle = 0; // the texture AllocateTexture() made all levels of
+  // VoxeliseLevelZero: the grid comes from these (all processes') bounds and mean radius
+  bool GivenGrid = false;
+  double GivenBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  double GivenMeanRadius = 0.0;
 };
 
 //------------------------------------------------------------------------------
@@ -331,13 +337,18 @@ bool vtkParticleAmbientVolume::PrepareSpheres(const std::vector<double>& centers
       bounds[2 * k + 1] = std::max(bounds[2 * k + 1], c[k] + r);
     }
   }
-  if (valid.empty())
+  if (valid.empty() && !this->Internals->GivenGrid)
   {
     vtkWarningMacro(<< "No particle with a finite position, a radius > 0 and an opacity > 0: "
                        "the ambient volume stays empty.");
     return false;
   }
-  const double meanRadius = radiusSum / static_cast<double>(valid.size());
+  double meanRadius = valid.empty() ? 0.0 : radiusSum / static_cast<double>(valid.size());
+  if (this->Internals->GivenGrid)
+  {
+    std::copy(this->Internals->GivenBounds, this->Internals->GivenBounds + 6, bounds);
+    meanRadius = this->Internals->GivenMeanRadius;
+  }
   const double prepareStart = vtkTimerLog::GetUniversalTime();
   if (!this->SetUpGrid(bounds, meanRadius, deviceAxisLimit))
   {
@@ -630,6 +641,63 @@ const std::vector<float>& vtkParticleAmbientVolume::GetLevel(int level) const
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::VoxeliseLevelZero(const std::vector<double>& centers,
+  const std::vector<double>& radii, const std::vector<double>& colors,
+  const std::vector<double>& meanOpacities, const double sphereBounds[6], double meanRadius)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.GivenGrid = true;
+  std::copy(sphereBounds, sphereBounds + 6, internals.GivenBounds);
+  internals.GivenMeanRadius = meanRadius;
+  const bool prepared = this->PrepareSpheres(centers, radii, colors, meanOpacities, 0);
+  internals.GivenGrid = false;
+  if (!prepared)
+  {
+    return false;
+  }
+  this->DepositOnCPU();
+  internals.Levels.resize(1);
+  internals.LevelsValid = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float>& vtkParticleAmbientVolume::GetMutableLevelZero()
+{
+  if (this->Internals->Levels.empty())
+  {
+    this->Internals->Levels.resize(1);
+  }
+  return this->Internals->Levels[0];
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::UploadVolumeOf(
+  vtkParticleAmbientVolume* other, vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  const int* dims = other ? other->Dimensions : nullptr;
+  if (!other || !context || !texture || other->Internals->Levels.empty() ||
+    other->Internals->Levels[0].size() != 4 * static_cast<size_t>(dims[0]) * dims[1] * dims[2] ||
+    other->Internals->Levels[0].empty())
+  {
+    vtkErrorMacro(<< "UploadVolumeOf() needs a voxelised level 0, a context and a texture.");
+    return false;
+  }
+  std::copy(dims, dims + 3, this->Dimensions);
+  std::copy(other->Origin, other->Origin + 3, this->Origin);
+  this->VoxelSize = other->VoxelSize;
+  this->NumberOfLevels = other->NumberOfLevels;
+  this->TextureBytes = other->TextureBytes;
+  this->Internals->Levels.resize(std::max(1, this->NumberOfLevels));
+  this->Internals->Levels[0] = other->Internals->Levels[0];
+  const double mipStart = vtkTimerLog::GetUniversalTime();
+  this->BuildMips();
+  this->LastMipSeconds = vtkTimerLog::GetUniversalTime() - mipStart;
+  this->LastBuildOnGPU = false;
+  return this->UploadLevels(context, texture);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleAmbientVolume::BeginParticles()
 {
   this->Internals->Props.clear();
@@ -656,6 +724,97 @@ vtkIdType vtkParticleAmbientVolume::GetNumberOfParticles()
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleAmbientVolume::GatherSpheres(vtkActor* actor, vtkParticleSphereMapper* mapper,
+  bool ownedOnly, std::vector<double>& centers, std::vector<double>& radii,
+  std::vector<double>& colors, std::vector<double>& opacities)
+{
+  if (!actor || !mapper || !mapper->GetInput())
+  {
+    return;
+  }
+  const vtkIdType n = mapper->GetParticleRadii()->GetNumberOfTuples();
+  vtkPoints* points = mapper->GetInput()->GetPoints();
+  if (n == 0 || !points || points->GetNumberOfPoints() < n)
+  {
+    return;
+  }
+  const vtkIdType offset = static_cast<vtkIdType>(radii.size());
+  centers.resize(3 * (offset + n));
+  radii.resize(offset + n, 0.0);
+  colors.resize(3 * (offset + n), 1.0);
+  opacities.resize(offset + n, 1.0);
+  auto ghosts = ownedOnly ? vtkUnsignedCharArray::SafeDownCast(
+                              mapper->GetInput()->GetPointData()->GetArray(
+                                vtkDataSetAttributes::GhostArrayName()))
+                          : nullptr;
+  if (ghosts && ghosts->GetNumberOfTuples() < n)
+  {
+    ghosts = nullptr;
+  }
+  const float* r = mapper->GetParticleRadii()->GetPointer(0);
+  const double scale = mapper->GetRadiusScaleVC(actor);
+  const double* m = actor->GetMatrix()->GetData();
+  vtkUnsignedCharArray* mapped = mapper->MapScalars(1.0);
+  if (mapped && (mapped->GetNumberOfComponents() != 4 || mapped->GetNumberOfTuples() < n))
+  {
+    mapped = nullptr;
+  }
+  vtkProperty* property = actor->GetProperty();
+  double propertyColor[3];
+  property->GetColor(propertyColor);
+  const double propertyOpacity = property->GetOpacity();
+  vtkTransparentSphereMapper* transparent = vtkTransparentSphereMapper::SafeDownCast(mapper);
+  vtkDoubleArray* thetaA = transparent ? transparent->GetParticleOpacities() : nullptr;
+  if (thetaA && thetaA->GetNumberOfTuples() < n)
+  {
+    thetaA = nullptr;
+  }
+  const int model = transparent ? transparent->GetDensityModel() : 0;
+  const double hollow = transparent ? transparent->GetHollowFraction() : 0.0;
+  vtkDataArray* xyz = points->GetData();
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double q[3];
+      xyz->GetTuple(i, q);
+      for (int k = 0; k < 3; ++k)
+      {
+        centers[3 * (offset + i) + k] =
+          m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
+      }
+      // a ghost copy (another process's particle) is left out: radius 0
+      const bool ghost = ghosts && (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT);
+      radii[offset + i] = ghost ? 0.0 : r[i] * scale;
+      double theta = propertyOpacity;
+      if (mapped)
+      {
+        const unsigned char* c = mapped->GetPointer(4 * i);
+        for (int k = 0; k < 3; ++k)
+        {
+          colors[3 * (offset + i) + k] = c[k] / 255.0;
+        }
+        theta *= c[3] / 255.0;
+      }
+      else
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          colors[3 * (offset + i) + k] = propertyColor[k];
+        }
+      }
+      if (thetaA)
+      {
+        theta *= thetaA->GetValue(i);
+      }
+      // the opaque core draws a flat opacity over the disc; the emission-absorption glyphs
+      // their profile
+      opacities[offset + i] =
+        transparent ? vtkParticleAmbientVolume::MeanDiscOpacity(theta, model, hollow) : theta;
+    }
+  });
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleAmbientVolume::EndParticles(
   vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
 {
@@ -667,83 +826,13 @@ bool vtkParticleAmbientVolume::EndParticles(
   }
   // the spheres as drawn: world centres, radii, colours and mean disc opacities
   const double gatherStart = vtkTimerLog::GetUniversalTime();
-  const vtkIdType total = this->GetNumberOfParticles();
-  std::vector<double> centers(3 * total);
-  std::vector<double> radii(total, 0.0);
-  std::vector<double> colors(3 * total, 1.0);
-  std::vector<double> opacities(total, 1.0);
-  vtkIdType offset = 0;
+  std::vector<double> centers;
+  std::vector<double> radii;
+  std::vector<double> colors;
+  std::vector<double> opacities;
   for (auto& item : internals.Props)
   {
-    vtkActor* actor = item.first;
-    vtkParticleSphereMapper* mapper = item.second;
-    const vtkIdType n = mapper->GetParticleRadii()->GetNumberOfTuples();
-    vtkPoints* points = mapper->GetInput()->GetPoints();
-    if (n == 0 || !points || points->GetNumberOfPoints() < n)
-    {
-      offset += n;
-      continue;
-    }
-    const float* r = mapper->GetParticleRadii()->GetPointer(0);
-    const double scale = mapper->GetRadiusScaleVC(actor);
-    const double* m = actor->GetMatrix()->GetData();
-    vtkUnsignedCharArray* mapped = mapper->MapScalars(1.0);
-    if (mapped && (mapped->GetNumberOfComponents() != 4 || mapped->GetNumberOfTuples() < n))
-    {
-      mapped = nullptr;
-    }
-    vtkProperty* property = actor->GetProperty();
-    double propertyColor[3];
-    property->GetColor(propertyColor);
-    const double propertyOpacity = property->GetOpacity();
-    vtkTransparentSphereMapper* transparent = vtkTransparentSphereMapper::SafeDownCast(mapper);
-    vtkDoubleArray* thetaA = transparent ? transparent->GetParticleOpacities() : nullptr;
-    if (thetaA && thetaA->GetNumberOfTuples() < n)
-    {
-      thetaA = nullptr;
-    }
-    const int model = transparent ? transparent->GetDensityModel() : 0;
-    const double hollow = transparent ? transparent->GetHollowFraction() : 0.0;
-    vtkDataArray* xyz = points->GetData();
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        double q[3];
-        xyz->GetTuple(i, q);
-        for (int k = 0; k < 3; ++k)
-        {
-          centers[3 * (offset + i) + k] =
-            m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
-        }
-        radii[offset + i] = r[i] * scale;
-        double theta = propertyOpacity;
-        if (mapped)
-        {
-          const unsigned char* c = mapped->GetPointer(4 * i);
-          for (int k = 0; k < 3; ++k)
-          {
-            colors[3 * (offset + i) + k] = c[k] / 255.0;
-          }
-          theta *= c[3] / 255.0;
-        }
-        else
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            colors[3 * (offset + i) + k] = propertyColor[k];
-          }
-        }
-        if (thetaA)
-        {
-          theta *= thetaA->GetValue(i);
-        }
-        // the opaque core draws a flat opacity over the disc; the emission-absorption glyphs
-        // their profile
-        opacities[offset + i] =
-          transparent ? vtkParticleAmbientVolume::MeanDiscOpacity(theta, model, hollow) : theta;
-      }
-    });
-    offset += n;
+    GatherSpheres(item.first, item.second, false, centers, radii, colors, opacities);
   }
   this->LastGatherSeconds = vtkTimerLog::GetUniversalTime() - gatherStart;
   return this->BuildTexture(context, texture, centers, radii, colors, opacities);

@@ -150,6 +150,28 @@ public:
     const std::vector<double>& centers, const std::vector<double>& radii,
     const std::vector<double>& colors, const std::vector<double>& meanOpacities);
 
+  ///@{
+  /**
+   * Distributed building (vtkParticleRepresentation under MPI; the sums are linear in the
+   * particles): GatherSpheres() appends the spheres of one prop as EndParticles() gathers them
+   * (ownedOnly: points flagged as ghosts by vtkGhostType are left out);
+   * VoxeliseLevelZero() deposits them on the CPU into level 0 of the grid set up for the given
+   * sphere bounds and mean radius (those of all processes, so every process gets the same grid;
+   * no spheres is fine); after level 0 (GetMutableLevelZero()) has been summed over the
+   * processes, UploadVolumeOf() on the pass's volume takes that grid and level, builds the mips
+   * and fills the texture.
+   */
+  static void GatherSpheres(vtkActor* actor, vtkParticleSphereMapper* mapper, bool ownedOnly,
+    std::vector<double>& centers, std::vector<double>& radii, std::vector<double>& colors,
+    std::vector<double>& meanOpacities);
+  bool VoxeliseLevelZero(const std::vector<double>& centers, const std::vector<double>& radii,
+    const std::vector<double>& colors, const std::vector<double>& meanOpacities,
+    const double sphereBounds[6], double meanRadius);
+  std::vector<float>& GetMutableLevelZero();
+  bool UploadVolumeOf(
+    vtkParticleAmbientVolume* other, vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
+  ///@}
+
   /**
    * Whether the last build ran on the GPU.
    */

@@ -1,4 +1,5 @@
 #include "vtkParticleSphereMapper.h"
+#include "vtkParticleAmbientVolume.h"
 #include "vtkParticleDensityVolume.h"
 #include "vtkParticleOcclusionCuller.h"
 
@@ -836,6 +837,18 @@ void vtkParticleSphereMapper::SetDistributedDensityVolume(vtkParticleDensityVolu
     this->DistributedDensityVolume = volume;
     // not Modified(): no shader or buffer depends on it (the AO pass tracks the volume's time)
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetDistributedAmbientVolume(vtkParticleAmbientVolume* volume)
+{
+  this->DistributedAmbientVolume = volume; // not Modified(): see SetDistributedDensityVolume
+}
+
+//------------------------------------------------------------------------------
+vtkParticleAmbientVolume* vtkParticleSphereMapper::GetDistributedAmbientVolume()
+{
+  return this->DistributedAmbientVolume;
 }
 
 //------------------------------------------------------------------------------

@@ -67,6 +67,7 @@
 class vtkFloatArray;
 class vtkMatrix4x4;
 class vtkOpenGLBufferObject;
+class vtkParticleAmbientVolume;
 class vtkParticleDensityVolume;
 class vtkParticleOcclusionCuller;
 
@@ -281,6 +282,16 @@ public:
   vtkParticleDensityVolume* GetDistributedDensityVolume();
   ///@}
 
+  ///@{
+  /**
+   * The same for vtkVoxelConeAOPass: an ambient volume whose level 0 holds the spheres of every
+   * process (summed by vtkParticleRepresentation); the pass builds its mips and uses it instead
+   * of voxelising the local particles. Null (the default): the pass voxelises.
+   */
+  void SetDistributedAmbientVolume(vtkParticleAmbientVolume* volume);
+  vtkParticleAmbientVolume* GetDistributedAmbientVolume();
+  ///@}
+
 protected:
   vtkParticleSphereMapper();
   ~vtkParticleSphereMapper() override;
@@ -414,6 +425,7 @@ protected:
   double ClipBox[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool UseClipBox = false;
   vtkSmartPointer<vtkParticleDensityVolume> DistributedDensityVolume;
+  vtkSmartPointer<vtkParticleAmbientVolume> DistributedAmbientVolume;
   vtkMTimeType ScaleOnlyMTime = 0;
   vtkMTimeType DataMTimeBeforeScale = 0;
   vtkIdType NumberOfSkippedParticles = 0;

@@ -90,6 +90,12 @@ void vtkVoxelConeAOPass::UpdateVolume(const vtkRenderState* s)
   this->GatherParticleProps(s, particles, state);
   state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(internals.Volume.Get())));
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
+  // distributed rendering: level 0 of all processes' spheres, summed in the pipeline
+  vtkParticleAmbientVolume* distributed = particles.size() == 1
+    ? particles.front().second->GetDistributedAmbientVolume()
+    : nullptr;
+  state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
+  state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
   if (!this->NeedsBuild(state))
   {
     return; // built already (or failed for the same input: no retry, no repeated message)
@@ -111,7 +117,8 @@ void vtkVoxelConeAOPass::UpdateVolume(const vtkRenderState* s)
   }
   vtkOpenGLRenderWindow* ctx =
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  if (!volume->EndParticles(ctx, this->VolumeTexture))
+  if (distributed ? !volume->UploadVolumeOf(distributed, ctx, this->VolumeTexture)
+                  : !volume->EndParticles(ctx, this->VolumeTexture))
   {
     return; // the volume said why; no ambient occlusion
   }

@@ -17,6 +17,8 @@ CASES = {
     "translucent-squared": (0.7, 1, "None"),
     "ao": (1.0, 0, "Density Volume"),
     "ao-translucent": (0.7, 0, "Density Volume"),
+    "voxel-cone": (1.0, 0, "Voxel Cone Tracing"),
+    "voxel-cone-translucent": (0.7, 0, "Voxel Cone Tracing"),
 }
 
 # share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)
