@@ -117,7 +117,7 @@ void vtkParticleRepresentation::SetTechnique(int technique)
     vtkCommand::ProgressEvent, this, &vtkParticleRepresentation::ForwardMapperProgress);
   this->ApplyMapperSettings();
   this->Actor->SetMapper(this->Mapper);
-  this->Modified();
+  this->MarkModified(); // bounds, and the partition of metaballs under MPI
 }
 
 //------------------------------------------------------------------------------
@@ -498,15 +498,17 @@ bool vtkParticleRepresentation::PartitionParticles(
     std::copy(values, values + 5, this->Distribution->GetPointer(0));
     return false;
   }
-  // Only translucent spheres need the partition: opaque ones composite by depth wherever they
-  // are. (Metaballs would need ghosts within the influence radius and a clipped surface.)
-  const bool needed = translucent && this->Technique == SPHERES;
+  // Translucent spheres need the partition (ordered compositing of boxes); metaballs need every
+  // particle whose influence reaches into the box (ghosts within k R) and a surface clipped to
+  // it; opaque spheres composite by depth wherever they are.
+  const bool needed = (translucent && this->Technique == SPHERES) || this->Technique == METABALLS;
+  const double reach = this->Technique == METABALLS ? this->InfluenceFactor : 1.0;
   const std::string radiusArray = this->EffectiveRadiusArray(this->ProcessedData);
   std::ostringstream key;
   key.precision(17);
   key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
       << ";"
-      << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor();
+      << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor() << ";" << reach;
   int stale = key.str() != this->PartitionKey ? 1 : 0;
   int anyStale = stale;
   controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
@@ -525,7 +527,7 @@ bool vtkParticleRepresentation::PartitionParticles(
   }
   const bool partitioned = this->Partition->Partition(this->ProcessedData,
     radiusArray.empty() ? nullptr : radiusArray.c_str(), this->Mapper->GetRadius(),
-    this->Mapper->GetRadiusScaleFactor(), 1.0, sphereBounds);
+    this->Mapper->GetRadiusScaleFactor(), reach, sphereBounds);
   const std::vector<double>& distribution = this->Partition->GetDistribution();
   this->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
   std::copy(distribution.begin(), distribution.end(), this->Distribution->GetPointer(0));

@@ -15,6 +15,10 @@ Cases (Particle Render View, 400x300, coloured by type, radii from 'radius'):
   translucent-squared opacity 0.7, Squared Distance density model
   ao                  opacity 1, Density Volume AO
   ao-translucent      opacity 0.7, Density Volume AO
+  voxel-cone          opacity 1, Voxel Cone Tracing AO
+  voxel-cone-translucent  opacity 0.7, Voxel Cone Tracing AO
+  metaballs           the Metaballs technique (partitioned with ghosts within the influence
+                      radius, the surface clipped to each rank's box)
 With N = 1 each image is compared with its baseline (Testing/Data/Baseline/TestParticlesMPI_*,
 the GPU's own picture on this platform) and written to <temp-dir>/TestParticlesMPI_<case>_np1.png;
 with N > 1 each image must equal that single-process image within --tolerance per pixel (8-bit

@@ -11,14 +11,15 @@ from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 CASES = {
-    # name: (opacity, density model, ambient occlusion)
-    "opaque": (1.0, 0, "None"),
-    "translucent": (0.7, 0, "None"),
-    "translucent-squared": (0.7, 1, "None"),
-    "ao": (1.0, 0, "Density Volume"),
-    "ao-translucent": (0.7, 0, "Density Volume"),
-    "voxel-cone": (1.0, 0, "Voxel Cone Tracing"),
-    "voxel-cone-translucent": (0.7, 0, "Voxel Cone Tracing"),
+    # name: (opacity, density model, ambient occlusion, technique)
+    "opaque": (1.0, 0, "None", "Spheres"),
+    "translucent": (0.7, 0, "None", "Spheres"),
+    "translucent-squared": (0.7, 1, "None", "Spheres"),
+    "ao": (1.0, 0, "Density Volume", "Spheres"),
+    "ao-translucent": (0.7, 0, "Density Volume", "Spheres"),
+    "voxel-cone": (1.0, 0, "Voxel Cone Tracing", "Spheres"),
+    "voxel-cone-translucent": (0.7, 0, "Voxel Cone Tracing", "Spheres"),
+    "metaballs": (1.0, 0, "None", "Metaballs"),
 }
 
 # share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)
@@ -97,7 +98,8 @@ def show_film(source, pr):
 
 
 def apply_case(view, display, case):
-    opacity, model, ao = CASES[case]
+    opacity, model, ao, technique = CASES[case]
+    display.Technique = technique
     display.Opacity = opacity
     display.DensityModel = model
     view.ParticleAmbientOcclusion = ao
