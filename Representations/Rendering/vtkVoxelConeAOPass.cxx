@@ -109,6 +109,12 @@ void vtkVoxelConeAOPass::UpdateVolume(const vtkRenderState* s)
     }
     return;
   }
+  if (!distributed && particles.size() > 1 &&
+    particles.front().second->GetDistributedAmbientVolume())
+  {
+    vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
+                       "ambient volume holds only its own particles.");
+  }
   vtkParticleAmbientVolume* volume = internals.Volume;
   volume->BeginParticles();
   for (auto& item : particles)

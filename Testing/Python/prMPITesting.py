@@ -44,6 +44,8 @@ reader.SetFileName(%(path)r)
 reader.Update()
 full = reader.GetOutput()
 n = full.GetNumberOfPoints()
+if 0 < %(keep)d < n:  # (not min(): this script's namespace has numpy_interface's)
+    n = %(keep)d
 owner = numpy.arange(n) %% pieces
 if %(empty_rank)r and pieces > 1:
     owner[owner == pieces - 1] = 0
@@ -76,13 +78,14 @@ self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
 
 
 
-def make_film_pieces(args, empty_rank=False):
+def make_film_pieces(args, empty_rank=False, keep=0):
     """A ProgrammableSource that reads Testing/Data/lj_film.vtp (19360 atoms) on every rank and
-    keeps particle i on rank i mod N (with empty_rank: the last rank's go to rank 0)."""
+    keeps particle i on rank i mod N (with empty_rank: the last rank's go to rank 0; keep > 0:
+    only the first `keep` particles)."""
     source = simple.ProgrammableSource()
     source.OutputDataSetType = "vtkPolyData"
     source.Script = SPLIT_SCRIPT % {"path": os.path.join(args.data, "lj_film.vtp"),
-                                    "empty_rank": empty_rank}
+                                    "empty_rank": empty_rank, "keep": keep}
     source.ScriptRequestInformation = SPLIT_INFORMATION_SCRIPT
     source.UpdatePipeline()
     return source
