@@ -1290,4 +1290,8 @@ void vtkParticleRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Mapper->GetRadius() << "\n";
   os << indent << "RadiusScaleFactor: " << this->Mapper->GetRadiusScaleFactor() << "\n";
   os << indent << "NumberOfParticles: " << this->GetNumberOfParticles() << "\n";
+  os << indent << "Partitioned: " << this->Partitioned << "\n";
+  os << indent << "GlobalColumnLayers: " << this->GlobalColumnLayers << "\n";
+  os << indent << "Partition:\n";
+  this->Partition->PrintSelf(os, indent.GetNextIndent());
 }

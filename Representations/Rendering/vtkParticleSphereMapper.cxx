@@ -1329,4 +1329,18 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
   os << indent << "OcclusionCullingThreshold: " << this->OcclusionCullingThreshold << "\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
+  os << indent << "ClipBox: ";
+  if (this->UseClipBox)
+  {
+    os << this->ClipBox[0] << " " << this->ClipBox[1] << " " << this->ClipBox[2] << " "
+       << this->ClipBox[3] << " " << this->ClipBox[4] << " " << this->ClipBox[5] << "\n";
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+  os << indent << "DistributedDensityVolume: " << this->DistributedDensityVolume.GetPointer()
+     << "\n";
+  os << indent << "DistributedAmbientVolume: " << this->DistributedAmbientVolume.GetPointer()
+     << "\n";
 }
