@@ -33,6 +33,8 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkScalarsToColors.h"
 #include "vtkTransform.h"
 #include "vtkTypeInt32Array.h"
@@ -371,12 +373,51 @@ void vtkParticleRepresentation::ComputeSphereBounds(vtkPolyData* particles, doub
   {
     return;
   }
-  // Finite ranges (cached by the arrays): NaN/Inf particles are not drawn.
+  // Bounds of the centres whose three coordinates are finite (the particles the mapper draws;
+  // per-component finite ranges would let a point such as (1e30, 1e30, Inf) stretch them),
+  // cached on the points' modification time.
   vtkDataArray* points = particles->GetPoints()->GetData();
+  if (points != this->CenterBoundsArray || points->GetMTime() != this->CenterBoundsTime)
+  {
+    struct Partial
+    {
+      double B[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+        VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    };
+    vtkSMPThreadLocal<Partial> partials;
+    vtkSMPTools::For(0, points->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+      Partial& partial = partials.Local();
+      double x[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetTuple(i, x);
+        if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            partial.B[2 * k] = std::min(partial.B[2 * k], x[k]);
+            partial.B[2 * k + 1] = std::max(partial.B[2 * k + 1], x[k]);
+          }
+        }
+      }
+    });
+    Partial all;
+    for (const Partial& partial : partials)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        all.B[2 * k] = std::min(all.B[2 * k], partial.B[2 * k]);
+        all.B[2 * k + 1] = std::max(all.B[2 * k + 1], partial.B[2 * k + 1]);
+      }
+    }
+    std::copy(all.B, all.B + 6, this->CenterBounds);
+    this->CenterBoundsArray = points;
+    this->CenterBoundsTime = points->GetMTime();
+  }
   double centers[6];
+  std::copy(this->CenterBounds, this->CenterBounds + 6, centers);
   for (int k = 0; k < 3; ++k)
   {
-    points->GetFiniteRange(centers + 2 * k, k);
     if (!(centers[2 * k] <= centers[2 * k + 1]))
     {
       return;

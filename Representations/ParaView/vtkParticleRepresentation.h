@@ -58,6 +58,7 @@
 #include <string> // for std::string
 
 class vtkActor;
+class vtkDataArray;
 class vtkDataObject;
 class vtkDoubleArray;
 class vtkParticleAmbientVolume;
@@ -263,6 +264,10 @@ protected:
    * there is no valid point).
    */
   void ComputeSphereBounds(vtkPolyData* particles, double bounds[6]);
+  // the bounds of the finite centres, cached for this points array and time
+  double CenterBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  vtkDataArray* CenterBoundsArray = nullptr;
+  vtkMTimeType CenterBoundsTime = 0;
 
   void UpdateColoringParameters();
 

@@ -29,6 +29,8 @@ usage: mpiexec -np N pvbatch TestParticlesMPI.py --plugin ParticleRendering.so -
            --baseline-dir DIR --temp-dir DIR [--empty-rank] [--tolerance T] [--cases a,b]
            [--reference-dir DIR (where the -np 1 run wrote its images; default the temp dir)]
            [--few K (only the first K particles: more ranks than particles; no baseline at -np 1)]
+           [--bad-points (a NaN point and (1e30, 1e30, Inf) on the last rank: not drawn, the
+            picture unchanged)]
 """
 import argparse
 import builtins
@@ -49,6 +51,7 @@ def parse_extra():
     parser.add_argument("--cases", default=",".join(CASES))
     parser.add_argument("--reference-dir", default="")
     parser.add_argument("--few", type=int, default=0)
+    parser.add_argument("--bad-points", action="store_true")
     extra, _ = parser.parse_known_args()
     return extra
 
@@ -62,8 +65,8 @@ def main():
     ok = True
 
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
-    pieces_source = make_film_pieces(args, extra.empty_rank, extra.few)
-    expected_total = extra.few if extra.few > 0 else 19360
+    pieces_source = make_film_pieces(args, extra.empty_rank, extra.few, extra.bad_points)
+    expected_total = (extra.few if extra.few > 0 else 19360) + (2 if extra.bad_points else 0)
     total = pieces_source.GetDataInformation().GetNumberOfPoints()
     print("ranks %d, particles %d" % (ranks, total))
     if total != expected_total:
@@ -82,7 +85,10 @@ def main():
 
 
     def expected_input_counts():
-        counts = [len(range(r, expected_total, ranks)) for r in range(ranks)]
+        good = expected_total - (2 if extra.bad_points else 0)
+        counts = [len(range(r, good, ranks)) for r in range(ranks)]
+        if extra.bad_points:
+            counts[-1] += 2
         if extra.empty_rank and ranks > 1:
             counts[0] += counts[-1]
             counts[-1] = 0

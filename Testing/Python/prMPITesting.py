@@ -60,6 +60,12 @@ out = self.GetPolyDataOutput()
 points = vtkPoints()
 points.SetDataType(full.GetPoints().GetDataType())
 full.GetPoints().GetPoints(ids, points)
+# bad points on the last rank: NaN, and a huge point with an infinite coordinate (not drawn;
+# they must neither stretch the bounds nor break the partition)
+bad = %(bad)r and piece == pieces - 1
+if bad:
+    points.InsertNextPoint(float("nan"), 0.0, 0.0)
+    points.InsertNextPoint(1e30, 1e30, float("inf"))
 out.SetPoints(points)
 for a in range(full.GetPointData().GetNumberOfArrays()):
     src = full.GetPointData().GetArray(a)
@@ -68,6 +74,9 @@ for a in range(full.GetPointData().GetNumberOfArrays()):
     dst.SetNumberOfComponents(src.GetNumberOfComponents())
     dst.SetNumberOfTuples(len(keep))
     src.GetTuples(ids, dst)
+    if bad:
+        for copy in range(2):
+            dst.InsertNextTuple(src.GetTuple(0))
     out.GetPointData().AddArray(dst)
 """
 
@@ -78,14 +87,14 @@ self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
 
 
 
-def make_film_pieces(args, empty_rank=False, keep=0):
+def make_film_pieces(args, empty_rank=False, keep=0, bad_points=False):
     """A ProgrammableSource that reads Testing/Data/lj_film.vtp (19360 atoms) on every rank and
     keeps particle i on rank i mod N (with empty_rank: the last rank's go to rank 0; keep > 0:
-    only the first `keep` particles)."""
+    only the first `keep` particles; bad_points: 2 non-finite points more on the last rank)."""
     source = simple.ProgrammableSource()
     source.OutputDataSetType = "vtkPolyData"
     source.Script = SPLIT_SCRIPT % {"path": os.path.join(args.data, "lj_film.vtp"),
-                                    "empty_rank": empty_rank, "keep": keep}
+                                    "empty_rank": empty_rank, "keep": keep, "bad": bad_points}
     source.ScriptRequestInformation = SPLIT_INFORMATION_SCRIPT
     source.UpdatePipeline()
     return source
