@@ -49,6 +49,73 @@
 
 vtkStandardNewMacro(vtkParticleRepresentation);
 
+namespace
+{
+// Bounds and a count and radius sum of particles, gathered on each process and reduced over all
+// of them (distributed rendering: the grids and estimates every process must share).
+struct GlobalParticleExtent
+{
+  double Bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double Count = 0.0;
+  double RadiusSum = 0.0;
+
+  // the box [lo, hi] into the bounds
+  void AddBox(const double lo[3], const double hi[3])
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Bounds[2 * k] = std::min(this->Bounds[2 * k], lo[k]);
+      this->Bounds[2 * k + 1] = std::max(this->Bounds[2 * k + 1], hi[k]);
+    }
+  }
+  // a particle: its centre grown by `grow` into the bounds, its radius into the mean
+  void AddParticle(const double center[3], double grow, double radius)
+  {
+    const double lo[3] = { center[0] - grow, center[1] - grow, center[2] - grow };
+    const double hi[3] = { center[0] + grow, center[1] + grow, center[2] + grow };
+    this->AddBox(lo, hi);
+    this->Count += 1.0;
+    this->RadiusSum += radius;
+  }
+  // over all processes (collective)
+  void Reduce(vtkMultiProcessController* controller)
+  {
+    double local[8] = { this->Count, this->RadiusSum, this->Bounds[0], this->Bounds[2],
+      this->Bounds[4], -this->Bounds[1], -this->Bounds[3], -this->Bounds[5] };
+    double global[8];
+    controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
+    controller->AllReduce(local + 2, global + 2, 6, vtkCommunicator::MIN_OP);
+    this->Count = global[0];
+    this->RadiusSum = global[1];
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Bounds[2 * k] = global[2 + k];
+      this->Bounds[2 * k + 1] = -global[5 + k];
+    }
+  }
+  double MeanRadius() const { return this->Count > 0.0 ? this->RadiusSum / this->Count : 0.0; }
+};
+
+// whether ok holds on every process (collective)
+bool OnEveryProcess(vtkMultiProcessController* controller, bool ok)
+{
+  int local = ok ? 1 : 0;
+  int global = local;
+  controller->AllReduce(&local, &global, 1, vtkCommunicator::MIN_OP);
+  return global != 0;
+}
+
+// the values summed over the processes, in place (collective)
+void SumOverProcesses(vtkMultiProcessController* controller, std::vector<float>& values)
+{
+  std::vector<float> total(values.size());
+  controller->AllReduce(
+    values.data(), total.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::SUM_OP);
+  values.swap(total);
+}
+}
+
 //------------------------------------------------------------------------------
 vtkParticleRepresentation::vtkParticleRepresentation()
 {
@@ -550,14 +617,10 @@ bool vtkParticleRepresentation::PartitionParticles(
   key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
       << ";"
       << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor() << ";" << reach;
-  int stale = key.str() != this->PartitionKey ? 1 : 0;
-  int anyStale = stale;
-  controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
-  if (!anyStale)
+  if (!StaleOnAnyProcess(key.str(), this->PartitionKey))
   {
     return needed && this->Partitioned;
   }
-  this->PartitionKey = key.str();
   if (!needed)
   {
     // the data stays where it is
@@ -588,7 +651,7 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
   // what vtkTransparentSphereMapper::GetEffectiveColumnLayers counts, over all processes: drawn
   // particles (finite centre, radius > 0 before the scale factor) and the union of the sphere
   // bounds
-  double local[2] = { 0.0, 0.0 }; // count, sum of radii
+  GlobalParticleExtent extent;
   vtkPolyData* particles = this->ProcessedData;
   const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
   const std::string radiusArray = this->EffectiveRadiusArray(particles);
@@ -608,30 +671,19 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
     if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(r) &&
       r > 0.0)
     {
-      local[0] += 1.0;
-      local[1] += r;
+      extent.Count += 1.0;
+      extent.RadiusSum += r;
     }
   }
-  double global[2];
-  controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
-  double mins[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double maxs[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   if (vtkMath::AreBoundsInitialized(sphereBounds))
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      mins[k] = sphereBounds[2 * k];
-      maxs[k] = sphereBounds[2 * k + 1];
-    }
+    const double lo[3] = { sphereBounds[0], sphereBounds[2], sphereBounds[4] };
+    const double hi[3] = { sphereBounds[1], sphereBounds[3], sphereBounds[5] };
+    extent.AddBox(lo, hi);
   }
-  double globalMins[3];
-  double globalMaxs[3];
-  controller->AllReduce(mins, globalMins, 3, vtkCommunicator::MIN_OP);
-  controller->AllReduce(maxs, globalMaxs, 3, vtkCommunicator::MAX_OP);
-  const double bounds[6] = { globalMins[0], globalMaxs[0], globalMins[1], globalMaxs[1],
-    globalMins[2], globalMaxs[2] };
-  this->GlobalColumnLayers =
-    vtkTransparentSphereMapper::EstimateColumnLayers(global[0], global[1], bounds);
+  extent.Reduce(controller);
+  this->GlobalColumnLayers = vtkTransparentSphereMapper::EstimateColumnLayers(
+    extent.Count, extent.RadiusSum, extent.Bounds);
   this->ApplyMapperSettings();
 }
 
@@ -708,57 +760,33 @@ void vtkParticleRepresentation::UpdateDistributedAmbientVolume(vtkInformation* i
   }
   // the grid of all processes' spheres: bounds and mean radius of the drawn ones (as
   // vtkParticleAmbientVolume sets it up from one process's)
-  double mins[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double maxs[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  double local[2] = { 0.0, 0.0 };
+  GlobalParticleExtent extent;
   for (size_t i = 0; i < radii.size(); ++i)
   {
     const double* c = &centers[3 * i];
     const double r = radii[i];
-    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(c[0] + c[1] + c[2]) ||
-      !(opacities[i] > 0.0))
+    if (r > 0.0 && std::isfinite(r) && std::isfinite(c[0] + c[1] + c[2]) && opacities[i] > 0.0)
     {
-      continue;
+      extent.AddParticle(c, r, r);
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      mins[k] = std::min(mins[k], c[k] - r);
-      maxs[k] = std::max(maxs[k], c[k] + r);
-    }
-    local[0] += 1.0;
-    local[1] += r;
   }
-  double global[2];
-  double globalMins[3];
-  double globalMaxs[3];
-  controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
-  controller->AllReduce(mins, globalMins, 3, vtkCommunicator::MIN_OP);
-  controller->AllReduce(maxs, globalMaxs, 3, vtkCommunicator::MAX_OP);
+  extent.Reduce(controller);
   vtkParticleAmbientVolume* volume = this->AmbientVolume;
   volume->SetResolution(settings->GetResolution());
   volume->SetMaximumResolution(settings->GetMaximumResolution());
   volume->SetSubGridSamples(settings->GetSubGridSamples());
   volume->SetAmbientEmission(settings->GetAmbientEmission());
   volume->SetMaximumMemory(settings->GetMaximumMemory());
-  const double bounds[6] = { globalMins[0], globalMaxs[0], globalMins[1], globalMaxs[1],
-    globalMins[2], globalMaxs[2] };
-  int ok = global[0] > 0.0 &&
-      volume->VoxeliseLevelZero(centers, radii, colors, opacities, bounds, global[1] / global[0])
-    ? 1
-    : 0;
-  int everywhere = ok;
-  controller->AllReduce(&ok, &everywhere, 1, vtkCommunicator::MIN_OP);
-  if (!everywhere)
+  const bool ok = extent.Count > 0.0 &&
+    volume->VoxeliseLevelZero(
+      centers, radii, colors, opacities, extent.Bounds, extent.MeanRadius());
+  if (!OnEveryProcess(controller, ok))
   {
     this->Mapper->SetDistributedAmbientVolume(nullptr);
     return;
   }
   // level 0 summed over the processes (extinction and emission add up); the pass builds the mips
-  std::vector<float>& level = volume->GetMutableLevelZero();
-  std::vector<float> total(level.size());
-  controller->AllReduce(
-    level.data(), total.data(), static_cast<vtkIdType>(level.size()), vtkCommunicator::SUM_OP);
-  level.swap(total);
+  SumOverProcesses(controller, volume->GetMutableLevelZero());
   volume->Modified();
   this->Mapper->SetDistributedAmbientVolume(volume);
 }
@@ -821,9 +849,7 @@ void vtkParticleRepresentation::UpdateDistributedDensityVolume(vtkInformation* i
   positions->Allocate(3 * n);
   vtkNew<vtkFloatArray> radii;
   radii->Allocate(n);
-  double mins[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double maxs[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  double local[2] = { 0.0, 0.0 }; // count, sum of radii
+  GlobalParticleExtent extent; // of the centres
   const double* m = matrix->GetData();
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -841,45 +867,25 @@ void vtkParticleRepresentation::UpdateDistributedDensityVolume(vtkInformation* i
     }
     positions->InsertNextTuple(p);
     radii->InsertNextValue(static_cast<float>(r));
-    for (int k = 0; k < 3; ++k)
-    {
-      mins[k] = std::min(mins[k], p[k]);
-      maxs[k] = std::max(maxs[k], p[k]);
-    }
-    local[0] += 1.0;
-    local[1] += r;
+    extent.AddParticle(p, 0.0, r);
   }
-  double global[2];
-  double globalMins[3];
-  double globalMaxs[3];
-  controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
-  controller->AllReduce(mins, globalMins, 3, vtkCommunicator::MIN_OP);
-  controller->AllReduce(maxs, globalMaxs, 3, vtkCommunicator::MAX_OP);
+  extent.Reduce(controller);
   vtkParticleDensityVolume* volume = this->DensityVolume;
   volume->SetResolution(settings->GetResolution());
   volume->SetMaximumResolution(settings->GetMaximumResolution());
   volume->SetMaximumVoxelCount(settings->GetMaximumVoxelCount());
   volume->SetSplatMode(settings->GetSplatMode());
   volume->SetDensityFactor(settings->GetDensityFactor());
-  const double bounds[6] = { globalMins[0], globalMaxs[0], globalMins[1], globalMaxs[1],
-    globalMins[2], globalMaxs[2] };
-  // the same decision on every process (the grid depends on global values only)
-  bool ok = global[0] > 0.0 && volume->SetUpGrid(bounds, global[1] / global[0]);
-  ok = ok && volume->ComputeSumsOnCPU(positions, radii);
-  int allOk = ok ? 1 : 0;
-  int everywhere = allOk;
-  controller->AllReduce(&allOk, &everywhere, 1, vtkCommunicator::MIN_OP);
-  if (!everywhere)
+  // (the grid depends on global values only: the same on every process)
+  const bool ok = extent.Count > 0.0 && volume->SetUpGrid(extent.Bounds, extent.MeanRadius()) &&
+    volume->ComputeSumsOnCPU(positions, radii);
+  if (!OnEveryProcess(controller, ok))
   {
     this->Mapper->SetDistributedDensityVolume(nullptr);
     return;
   }
   // the sum over the processes, then g and the clamp (Eq. 5)
-  std::vector<float>& sums = volume->GetMutableVolume();
-  std::vector<float> total(sums.size());
-  controller->AllReduce(sums.data(), total.data(), static_cast<vtkIdType>(sums.size()),
-    vtkCommunicator::SUM_OP);
-  sums.swap(total);
+  SumOverProcesses(controller, volume->GetMutableVolume());
   volume->FinishSums();
   volume->Modified();
   this->Mapper->SetDistributedDensityVolume(volume);

@@ -18,7 +18,6 @@ usage: pvpython TestParticlesPvserver.py --plugin ParticleRendering.so --data DI
            --baseline-dir DIR --temp-dir DIR --mpiexec PATH --pvserver PATH [--np N]
 """
 import argparse
-import builtins
 import os
 import socket
 import subprocess
@@ -27,13 +26,11 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
-from prMPITesting import (OVER_TOLERANCE_SHARE, apply_case, make_film_pieces, rgb,  # noqa: E402
-                          show_film)
-import numpy  # noqa: E402
+from prMPITesting import (apply_case, compare_with_single_process,  # noqa: E402
+                          make_film_pieces, show_film)
 from paraview import simple  # noqa: E402
 
 CASE = "ao-translucent"
-TOLERANCE = 2.0
 
 
 def parse_extra():
@@ -88,21 +85,6 @@ def render_case(args, name):
     return pr.capture(view, os.path.join(args.temp_dir, "TestParticlesPvserver_%s.png" % name))
 
 
-def compare(image, reference, what):
-    worst, mean = pr.difference(image, reference)
-    if worst is None:
-        print("FAIL: %s: the image cannot be compared with the built-in one" % what)
-        return False
-    error = numpy.abs(rgb(image) - rgb(reference)).max(axis=1)
-    over = int(numpy.count_nonzero(error > TOLERANCE))
-    print("%s against the built-in connection: max %.0f/255, mean %.3f/255, %d of %d pixels "
-          "over %.0f/255" % (what, worst, mean, over, error.size, TOLERANCE))
-    if builtins.round(worst) > TOLERANCE + 1 or over > OVER_TOLERANCE_SHARE * error.size:
-        print("FAIL: %s: the client-server picture differs from the built-in one" % what)
-        return False
-    return True
-
-
 def main():
     args = pr.parse_arguments()
     extra = parse_extra()
@@ -110,7 +92,8 @@ def main():
 
     # the built-in connection's picture
     pr.load_plugin(args)
-    reference = render_case(args, "builtin")
+    render_case(args, "builtin")
+    reference = os.path.join(args.temp_dir, "TestParticlesPvserver_builtin.png")
     simple.Disconnect()
 
     port = free_port()
@@ -127,11 +110,13 @@ def main():
         if partitions != extra.np:
             print("FAIL: the server has %d ranks, not %d" % (partitions, extra.np))
             ok = False
-        ok = compare(render_case(args, "pvserver"), reference, "server rendering") and ok
+        ok = compare_with_single_process(pr, render_case(args, "pvserver"), reference,
+                                         args.temp_dir, "TestParticlesPvserver_server")[0] and ok
         # the client renders: the server gathers the partitioned particles to it, ghost copies
         # included, which the client must leave out
         simple.GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 1e6
-        ok = compare(render_case(args, "client"), reference, "client rendering") and ok
+        ok = compare_with_single_process(pr, render_case(args, "client"), reference,
+                                         args.temp_dir, "TestParticlesPvserver_client")[0] and ok
         simple.Disconnect()
     finally:
         server.terminate()

@@ -26,6 +26,31 @@ CASES = {
 OVER_TOLERANCE_SHARE = 1e-4
 
 
+def compare_with_single_process(pr, image, reference_path, temp_dir, name, tolerance=2.0):
+    """Compare a distributed rendering with the single-process image at reference_path through
+    the suite's comparison (vtkParticleImageComparison.TestImage, which also checks that the
+    criteria reject the reference darkened by 10 % and shifted by one pixel). Criteria: at most
+    OVER_TOLERANCE_SHARE of the pixels over `tolerance` (8-bit steps), none more than one step
+    over it (IceT composites the processes' 8-bit images, each rounded once), mean 0.5/255.
+    Prints the measured maximum, mean and pixels over the tolerance. Returns (ok, maximum).
+    pr: prParaViewTesting."""
+    reference = pr.read_png(reference_path)
+    worst, mean = pr.difference(image, reference)
+    if worst is None:
+        print("FAIL: %s: the image cannot be compared with %s" % (name, reference_path))
+        return False, 0.0
+    # 8-bit images: errors are whole steps; half a step above each bound keeps float rounding
+    # of k/255 away from them ("over 2" means 3 or more)
+    criteria = pr.Criteria(tolerance=tolerance + 0.5, max_share=OVER_TOLERANCE_SHARE,
+                           max_mean=0.5, max_error=tolerance + 1.5)
+    counter = criteria.comparison()
+    counter.CompareImages(image, reference)
+    print("%s: max %.0f/255, mean %.3f/255, %d of %d pixels over %.0f/255"
+          % (name, worst, mean, counter.GetNumberOfPixelsOverTolerance(),
+             counter.GetNumberOfComparedPixels(), tolerance))
+    return criteria.comparison().TestImage(image, reference_path, temp_dir, name), worst
+
+
 def rgb(image):
     return vtk_to_numpy(image.GetPointData().GetScalars()).astype(int)[:, :3]
 
