@@ -1294,9 +1294,24 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       vtkRenderState sampleState(ren);
       sampleState.SetFrameBuffer(internals.Target);
       sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+      // the particle targets take each fragment as it is: every shader writes alpha 1 there, so
+      // blending (which VTK keeps on for opaque geometry, too) would only add a read-modify-write
+      // of two 16-bit float targets per fragment
+      for (unsigned int a = 1; a < NumberOfAttachments; ++a)
+      {
+        glDisablei(GL_BLEND, a);
+      }
       this->PreRender(&sampleState);
       this->DelegatePass->Render(&sampleState);
       this->PostRender(&sampleState);
+      // back to what draw buffer 0 has
+      if (glIsEnabledi(GL_BLEND, 0))
+      {
+        for (unsigned int a = 1; a < NumberOfAttachments; ++a)
+        {
+          glEnablei(GL_BLEND, a);
+        }
+      }
       this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     }
     ostate->PopFramebufferBindings();
