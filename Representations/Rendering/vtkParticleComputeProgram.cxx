@@ -345,6 +345,18 @@ bool vtkParticleComputeProgram::SetUniformMatrix4x4(const char* name, const floa
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleComputeProgram::SetUniformMatrix3x3(const char* name, const float* matrix)
+{
+  const GLint location = this->GetUniformLocation(name);
+  if (location < 0 || !matrix)
+  {
+    return false;
+  }
+  glUniformMatrix3fv(location, 1, GL_FALSE, matrix);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleComputeProgram::Dispatch(unsigned int x, unsigned int y, unsigned int z)
 {
   if (this->Handle == 0)

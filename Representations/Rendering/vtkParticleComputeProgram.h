@@ -151,6 +151,8 @@ public:
   bool SetUniform4f(const char* name, float x, float y, float z, float w);
   /** A column-major 4x4 matrix (OpenGL order, as vtkMatrix4x4's transposed data). */
   bool SetUniformMatrix4x4(const char* name, const float* matrix);
+  /** A column-major 3x3 matrix. */
+  bool SetUniformMatrix3x3(const char* name, const float* matrix);
   ///@}
 
   /** Location of a uniform (cached), -1 when there is none. */

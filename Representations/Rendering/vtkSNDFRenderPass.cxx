@@ -33,18 +33,23 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkSNDFTileCache.h"
+#include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVoxelConeAOPass.h"
 #include "vtkWeakPointer.h"
 
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -118,6 +123,85 @@ bool UsesScalarColours(vtkMapper* mapper)
   return !input ||
     vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
       mapper->GetArrayId(), mapper->GetArrayName(), cellFlag) != nullptr;
+}
+
+// The colours the samples of a particle actor hold, as far as a colour map makes them: its
+// mapper's mapped scalars (vtkMapper::MapScalars, as vtkParticleSphereMapper colours), null for
+// the property's colour.
+vtkUnsignedCharArray* MappedColours(vtkActor* actor)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  return UsesScalarColours(mapper) ? mapper->MapScalars(1.0) : nullptr;
+}
+
+// The 3 x 3 matrix M with M o = n for each pair (o, n) of `pairs` (old and new colour, three
+// values each): least squares through the pseudo-inverse of sum o o^T (minimum norm where the
+// old colours span fewer than three dimensions). False unless every pair is met within
+// `tolerance` and no entry of M exceeds 16 in magnitude (the bins' 16-bit mean colours are
+// multiplied by it: at most 16 * 3 * 2 / 65535 = 0.37 / 255 of quantisation error).
+bool FitColourMatrix(const std::vector<std::array<double, 6>>& pairs, double m[3][3], double tolerance)
+{
+  double g[3][3] = { { 0.0 } };
+  double b[3][3] = { { 0.0 } };
+  for (const auto& pair : pairs)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        g[i][j] += pair[i] * pair[j];
+        b[i][j] += pair[i] * pair[3 + j];
+      }
+    }
+  }
+  double eigenvalues[3];
+  double vectors[3][3];
+  double* gRows[3] = { g[0], g[1], g[2] };
+  double* vRows[3] = { vectors[0], vectors[1], vectors[2] };
+  vtkMath::Jacobi(gRows, eigenvalues, vRows); // (eigenvalues decreasing, vectors in columns)
+  double inverse[3][3] = { { 0.0 } };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (eigenvalues[k] <= 1e-10 * std::max(eigenvalues[0], 1e-300))
+    {
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        inverse[i][j] += vectors[i][k] * vectors[j][k] / eigenvalues[k];
+      }
+    }
+  }
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      // M^T = G^+ B
+      m[row][column] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        m[row][column] += inverse[column][k] * b[k][row];
+      }
+      if (!(std::abs(m[row][column]) <= 16.0))
+      {
+        return false;
+      }
+    }
+  }
+  for (const auto& pair : pairs)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      const double mapped = m[row][0] * pair[0] + m[row][1] * pair[1] + m[row][2] * pair[2];
+      if (!(std::abs(mapped - pair[3 + row]) <= tolerance))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 }
 
@@ -196,6 +280,126 @@ public:
   };
   std::map<vtkAbstractMapper*, ColourSource> ColourSources;
   int RawMaterial = 0;
+  // Colour-map changes (class description, "Colour"): per particle actor (in the order of the
+  // view's props) the mapped scalar colours its samples hold (null: the property's colour) and
+  // the array's modification time then; the colour key, the lookup tables' modification times.
+  struct SampledColours
+  {
+    vtkSmartPointer<vtkUnsignedCharArray> Colours;
+    vtkMTimeType Time = 0;
+  };
+  std::vector<SampledColours> Colours;
+  std::vector<double> ColourKey;
+
+  // The colours the particle actors' samples are taken with from now on (a restart).
+  void KeepColours(const std::vector<vtkActor*>& particles)
+  {
+    this->Colours.clear();
+    for (vtkActor* actor : particles)
+    {
+      SampledColours kept;
+      kept.Colours = MappedColours(actor);
+      kept.Time = kept.Colours ? kept.Colours->GetMTime() : 0;
+      this->Colours.push_back(kept);
+    }
+  }
+
+  // A new colour map (class description, "Colour"): 0 where the mapped colours did not change, 1
+  // where their new values are a linear function of the old ones, c' = M c for every particle,
+  // and the cached tiles' bin colours were multiplied by M, -1 where the samples must be taken
+  // again. `coloured`: an object-space ambient light in the chain that
+  // carries the particles' colours (the voxel-cone pass), drawn into the colour target.
+  int Recolour(const std::vector<vtkActor*>& particles, bool coloured, double matrix[3][3])
+  {
+    if (particles.size() != this->Colours.size())
+    {
+      return -1;
+    }
+    // the distinct (old, new) colour pairs in the units of the stored diffuse colour
+    std::vector<std::array<double, 6>> pairs;
+    bool changed = false;
+    for (std::size_t a = 0; a < particles.size(); ++a)
+    {
+      vtkUnsignedCharArray* now = MappedColours(particles[a]);
+      const SampledColours& then = this->Colours[a];
+      if (!now && !then.Colours)
+      {
+        continue; // the property's colour (its changes are in the state)
+      }
+      if (!now || !then.Colours || now->GetNumberOfComponents() != 4 ||
+        then.Colours->GetNumberOfComponents() != 4 ||
+        now->GetNumberOfTuples() != then.Colours->GetNumberOfTuples())
+      {
+        return -1;
+      }
+      if (now == then.Colours)
+      {
+        if (now->GetMTime() != then.Time)
+        {
+          return -1; // mapped anew into the same array: the old colours are gone
+        }
+        continue;
+      }
+      changed = true;
+      vtkProperty* p = particles[a]->GetProperty();
+      if (p->GetAmbient() != 0.0 || coloured)
+      {
+        return -1; // colour-dependent light in the colour target, which keeps no bins
+      }
+      // (RawMaterial 1 stores the mapped colour, 0 the colour times the diffuse coefficient)
+      const double scale = (this->RawMaterial == 1 ? 1.0 : p->GetDiffuse()) / 255.0;
+      std::unordered_map<std::uint32_t, std::uint32_t> seen;
+      const unsigned char* o = then.Colours->GetPointer(0);
+      const unsigned char* n = now->GetPointer(0);
+      const vtkIdType count = now->GetNumberOfTuples();
+      for (vtkIdType i = 0; i < count; ++i, o += 4, n += 4)
+      {
+        if (o[3] != n[3])
+        {
+          return -1; // the opacity changed too
+        }
+        const std::uint32_t key = o[0] | (o[1] << 8) | (o[2] << 16);
+        const std::uint32_t value = n[0] | (n[1] << 8) | (n[2] << 16);
+        const auto found = seen.emplace(key, value);
+        if (!found.second && found.first->second != value)
+        {
+          return -1; // one old colour, two new ones: not a function of the colour
+        }
+        if (found.second && seen.size() > 4096)
+        {
+          return -1; // a continuous map: not worth the fit
+        }
+      }
+      for (const auto& pair : seen)
+      {
+        std::array<double, 6> entry;
+        for (int c = 0; c < 3; ++c)
+        {
+          entry[c] = scale * ((pair.first >> (8 * c)) & 0xFFu);
+          entry[3 + c] = scale * ((pair.second >> (8 * c)) & 0xFFu);
+        }
+        pairs.push_back(entry);
+      }
+    }
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int column = 0; column < 3; ++column)
+      {
+        matrix[row][column] = row == column ? 1.0 : 0.0;
+      }
+    }
+    if (changed && !FitColourMatrix(pairs, matrix, 0.05 / 255.0))
+    {
+      return -1;
+    }
+    if (changed)
+    {
+      this->Cache->Recolour(matrix);
+      this->ResolveKey.clear();
+      this->KeepColours(particles);
+    }
+    return changed ? 1 : 0;
+  }
 
   // GPU times of the last timed Render() per stage (sample, accumulate, shade)
   vtkParticleStageTimer Timer{ 3 };
@@ -515,6 +719,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   std::vector<vtkActor*> particles;
   std::string unsupported;
   std::vector<double> state;
+  std::vector<double> colourKey;
   // The renderer's props, not those of the render state: the renderer leaves out the props
   // outside the view, and a pan to empty space and back keeps the S-MIP.
   std::vector<vtkProp*> props;
@@ -577,7 +782,17 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
     if (mapper)
     {
-      state.push_back(static_cast<double>(mapper->GetMTime()));
+      // a particle mapper's lookup table goes into the colour key: a new colour map keeps the
+      // samples where it can (vtkInternals::Recolour)
+      if (vtkParticleSphereMapper::SafeDownCast(mapper))
+      {
+        state.push_back(static_cast<double>(mapper->vtkAbstractMapper::GetMTime()));
+        colourKey.push_back(static_cast<double>(mapper->GetLookupTable()->GetMTime()));
+      }
+      else
+      {
+        state.push_back(static_cast<double>(mapper->GetMTime()));
+      }
       vtkDataObject* input = mapper->GetInputDataObject(0, 0);
       state.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
     }
@@ -817,9 +1032,29 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
 
   // the same frame (a pan or zoom by levels of the S-MIP keeps the samples), or a restart
   vtkSNDFTileCache::Placement placement;
-  const bool sameFrame = internals.FrameValid && state == internals.FixedState &&
+  bool sameFrame = internals.FrameValid && state == internals.FixedState &&
     internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
     internals.PlaceView(camera, width, height, placement);
+  // a new colour map: the samples are recoloured where the new colours are a linear function of
+  // the old ones, else taken again
+  if (sameFrame && colourKey != internals.ColourKey)
+  {
+    bool coloured = false; // an ambient light that carries the particles' colours
+    for (vtkRenderPass* inner = this->DelegatePass; inner;)
+    {
+      coloured = coloured || vtkVoxelConeAOPass::SafeDownCast(inner) != nullptr;
+      auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
+      inner = wrapping ? wrapping->GetDelegatePass() : nullptr;
+    }
+    double matrix[3][3];
+    const int recoloured = internals.Recolour(particles, coloured, matrix);
+    sameFrame = recoloured >= 0;
+    if (sameFrame)
+    {
+      internals.ColourKey = colourKey;
+      this->NumberOfRecolours += recoloured;
+    }
+  }
   if (!sameFrame)
   {
     if (width != internals.Width || height != internals.Height ||
@@ -889,6 +1124,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Cache->Clear();
     internals.StartFrame(camera, width, height);
     internals.FixedState = state;
+    internals.ColourKey = colourKey;
+    internals.KeepColours(particles);
     internals.Placed = false;
     internals.Sequence = 0;
     internals.ResolveKey.clear();
@@ -1474,4 +1711,7 @@ void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorTarget: " << this->ErrorTarget << "\n";
   os << indent << "EstimatedError: " << this->EstimatedError << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+  os << indent << "NumberOfSamplePasses: " << this->NumberOfSamplePasses << "\n";
+  os << indent << "NumberOfRestarts: " << this->NumberOfRestarts << "\n";
+  os << indent << "NumberOfRecolours: " << this->NumberOfRecolours << "\n";
 }

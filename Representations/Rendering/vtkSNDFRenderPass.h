@@ -265,8 +265,8 @@ public:
   ///@{
   /**
    * Counters for tests and benchmarks: delegate renders into the G-buffer (sample passes), S-NDF
-   * restarts, lighting-table builds, re-shades, pans and zooms that kept the S-MIP since the pass
-   * was created.
+   * restarts, lighting-table builds, re-shades, pans and zooms that kept the S-MIP, colour-map
+   * changes that recoloured the samples since the pass was created.
    */
   vtkGetMacro(NumberOfSamplePasses, vtkIdType);
   vtkGetMacro(NumberOfRestarts, vtkIdType);
@@ -274,6 +274,7 @@ public:
   vtkGetMacro(NumberOfResolves, vtkIdType);
   vtkGetMacro(NumberOfPans, vtkIdType);
   vtkGetMacro(NumberOfZooms, vtkIdType);
+  vtkGetMacro(NumberOfRecolours, vtkIdType);
   ///@}
 
   /**
@@ -343,6 +344,7 @@ protected:
   vtkIdType NumberOfResolves = 0;
   vtkIdType NumberOfPans = 0;
   vtkIdType NumberOfZooms = 0;
+  vtkIdType NumberOfRecolours = 0;
   bool CollectTimings = false;
   bool ConvergeOnRender = false;
   double ErrorTarget = 0.0;

@@ -85,6 +85,7 @@ public:
   std::size_t ScratchBytes = 0;
   vtkNew<vtkParticleComputeProgram> Downsample;
   vtkNew<vtkParticleComputeProgram> Rebake;
+  vtkNew<vtkParticleComputeProgram> Recolour;
   vtkNew<vtkParticleComputeProgram> MinSamples;
 
   std::vector<Slot> Slots;
@@ -211,6 +212,28 @@ public:
     std::sort(parts.begin(), parts.end());
     parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
     return parts;
+  }
+
+  // One dispatch of `program` (in use; SNDFRebake.glsl's layout: group z works on the tile in
+  // slot prPageTable[z]) per part of the pool over the given slots.
+  void DispatchOverSlots(vtkParticleComputeProgram* program, const std::vector<int>& slots)
+  {
+    for (const auto& part : this->PartsOf(slots))
+    {
+      std::vector<int> inPart;
+      for (int slot : slots)
+      {
+        if (slot / this->SlotsPerBinBuffer == part.first &&
+          slot / this->SlotsPerSumBuffer == part.second)
+        {
+          inPart.push_back(slot);
+        }
+      }
+      Upload(this->Scratch, this->ScratchBytes, inPart);
+      vtkParticleComputeProgram::BindStorage(PageBinding, this->Scratch);
+      this->BindPart(program, part);
+      program->Dispatch(TileSize / 16, TileSize / 16, static_cast<unsigned int>(inPart.size()));
+    }
   }
 
   // The storage declarations and accessors of SNDFTiles.glsl: one part of the pool bound (one
@@ -421,9 +444,10 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   {
     internals.Downsample->SetSource(this->GetShaderSource("SNDFDownsample"));
     internals.Rebake->SetSource(this->GetShaderSource("SNDFRebake"));
+    internals.Recolour->SetSource(this->GetShaderSource("SNDFRecolour"));
     internals.MinSamples->SetSource(this->GetShaderSource("SNDFMinSamples"));
     if (!internals.Downsample->Build(context) || !internals.Rebake->Build(context) ||
-      !internals.MinSamples->Build(context))
+      !internals.Recolour->Build(context) || !internals.MinSamples->Build(context))
     {
       vtkErrorMacro(<< "The S-MIP shaders did not build.");
       this->NumberOfSlots = 0;
@@ -437,6 +461,7 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   this->NumberOfClearedTiles = 0;
   this->NumberOfEvictedTiles = 0;
   this->NumberOfRebakedTiles = 0;
+  this->NumberOfRecolouredTiles = 0;
   this->Modified();
   return true;
 }
@@ -451,6 +476,45 @@ void vtkSNDFTileCache::Clear()
   {
     slot = Slot();
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::Recolour(const double m[3][3])
+{
+  vtkInternals& internals = *this->Internals;
+  std::vector<int> slots;
+  for (const auto& entry : internals.Table)
+  {
+    slots.push_back(entry.second);
+  }
+  if (slots.empty() || !internals.Recolour->IsBuilt())
+  {
+    return 0;
+  }
+  vtkParticleComputeProgram* program = internals.Recolour;
+  program->Use();
+  // (GLSL's mat3 is column-major)
+  float columns[9];
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      columns[3 * column + row] = static_cast<float>(m[row][column]);
+    }
+  }
+  program->SetUniformMatrix3x3("prColourMatrix", columns);
+  program->SetUniformi("prBins", this->Bins);
+  internals.DispatchOverSlots(program, slots);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  vtkParticleComputeProgram::UseNone();
+  // their shaded sums are formed again before they are shown or averaged
+  for (int slot : slots)
+  {
+    internals.Slots[slot].Version = -1;
+  }
+  internals.Mapped = false;
+  this->NumberOfRecolouredTiles += static_cast<long long>(slots.size());
+  return static_cast<int>(slots.size());
 }
 
 //------------------------------------------------------------------------------
@@ -501,23 +565,7 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
     table->Activate();
     program->SetUniformi("prTable", table->GetTextureUnit());
     program->SetUniformi("prBins", this->Bins);
-    // part by part, the part's slots
-    for (const auto& part : internals.PartsOf(stale))
-    {
-      std::vector<int> slots;
-      for (int slot : stale)
-      {
-        if (slot / internals.SlotsPerBinBuffer == part.first &&
-          slot / internals.SlotsPerSumBuffer == part.second)
-        {
-          slots.push_back(slot);
-        }
-      }
-      vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, slots);
-      vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
-      internals.BindPart(program, part);
-      program->Dispatch(TileSize / 16, TileSize / 16, static_cast<unsigned int>(slots.size()));
-    }
+    internals.DispatchOverSlots(program, stale);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     table->Deactivate();
     vtkParticleComputeProgram::UseNone();
@@ -738,6 +786,7 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   vtkInternals& internals = *this->Internals;
   internals.Downsample->ReleaseGraphicsResources(w);
   internals.Rebake->ReleaseGraphicsResources(w);
+  internals.Recolour->ReleaseGraphicsResources(w);
   internals.MinSamples->ReleaseGraphicsResources(w);
   const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
   for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum, &internals.TileList,
@@ -776,4 +825,5 @@ void vtkSNDFTileCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfClearedTiles: " << this->NumberOfClearedTiles << "\n";
   os << indent << "NumberOfEvictedTiles: " << this->NumberOfEvictedTiles << "\n";
   os << indent << "NumberOfRebakedTiles: " << this->NumberOfRebakedTiles << "\n";
+  os << indent << "NumberOfRecolouredTiles: " << this->NumberOfRecolouredTiles << "\n";
 }

@@ -149,6 +149,14 @@ public:
     long long tableVersion);
 
   /**
+   * Apply the 3 x 3 colour matrix `m` (row-major) to the mean colour of every occupied bin of
+   * every tile in the cache (Shaders/SNDFRecolour.glsl) and mark the tiles for rebaking with the
+   * next MapView(): a colour-map change whose new particle colours are the old ones times `m`
+   * (vtkSNDFRenderPass) re-shades without sampling. Returns the number of tiles recoloured.
+   */
+  int Recolour(const double m[3][3]);
+
+  /**
    * How many tiles of a view the cache has, or could average from a finer level (no GPU work).
    */
   int CountAvailable(const Placement& view, int width, int height);
@@ -172,12 +180,14 @@ public:
   ///@{
   /**
    * Counters since the pool was allocated: tiles averaged from a finer level, tiles that came
-   * empty, tiles evicted (least recently used), tiles rebaked after a table change.
+   * empty, tiles evicted (least recently used), tiles rebaked after a table change or a
+   * recolouring, tiles recoloured.
    */
   vtkGetMacro(NumberOfDownsampledTiles, long long);
   vtkGetMacro(NumberOfClearedTiles, long long);
   vtkGetMacro(NumberOfEvictedTiles, long long);
   vtkGetMacro(NumberOfRebakedTiles, long long);
+  vtkGetMacro(NumberOfRecolouredTiles, long long);
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* w);
@@ -192,6 +202,7 @@ protected:
   long long NumberOfClearedTiles = 0;
   long long NumberOfEvictedTiles = 0;
   long long NumberOfRebakedTiles = 0;
+  long long NumberOfRecolouredTiles = 0;
 
 private:
   vtkSNDFTileCache(const vtkSNDFTileCache&) = delete;

@@ -11,6 +11,10 @@ from plain VTK Python. Checked:
   again from the bins;
 - re-lighting: another light re-shades the converged S-NDFs without a sample pass and matches
   the super-sampled image under the new light; a camera move restarts;
+- material and colour map: a new material re-shades (one particle actor); a new colour map
+  whose colours are a linear function of the old ones (three types, two types with a new range)
+  recolours the samples without a sample pass, equal to sampling under it, and refinement goes
+  on with the new colours; four types, a continuous map or an ambient term sample again;
 - other geometry: an opaque box through part of the crystal and the crystal's outline (lines)
   converge to the super-sampled core like the crystal alone, the box's colour where it hides
   particles; translucent geometry: one warning and the plain image;
@@ -325,6 +329,89 @@ mactor.GetProperty().SetDiffuse(0.4)
 image(mwindow)
 check(msndf.GetNumberOfRestarts() == restarts + 1,
       "two particle actors: a new diffuse coefficient samples again")
+
+# --- colour-map changes re-shade where the new colours are linear in the old ones -----------
+def converged_types(types, points, ambient=0.0):
+    """A pass converged to 64 samples on the crystal coloured by the scalar "type" (`types`, one
+    value per atom) through a colour transfer function with the given (value, r, g, b) points."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
+    type_sndf = pr.vtkSNDFRenderPass()
+    type_sndf.SetSamplesPerFrame(64)
+    type_sndf.SetTargetSamples(64)
+    type_renderer, type_window, type_actor = scene(xyz, rgb, (W, H), type_sndf)
+    data = type_actor.GetMapper().GetInput()
+    array = numpy_to_vtk(np.asarray(types, dtype=np.float32), deep=True)
+    array.SetName("type")
+    data.GetPointData().AddArray(array)
+    ctf = vtkColorTransferFunction()
+    set_points(ctf, points)
+    mapper = type_actor.GetMapper()
+    mapper.SetLookupTable(ctf)
+    mapper.SetColorModeToMapScalars()
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("type")
+    mapper.SetScalarRange(0.0, 1.0)
+    type_actor.GetProperty().SetAmbient(ambient)
+    image(type_window)
+    converge(type_sndf, type_window)
+    return type_sndf, type_window, ctf
+
+
+def set_points(ctf, points):
+    ctf.RemoveAllPoints()
+    for point in points:
+        ctf.AddRGBPoint(*point)
+
+
+index = np.arange(len(xyz))
+three_types = (index % 3) * 0.5  # 0, 0.5, 1
+old_map = [(0.0, 0.23, 0.30, 0.75), (0.5, 0.87, 0.87, 0.87), (1.0, 0.71, 0.02, 0.15)]
+new_map = [(0.0, 0.95, 0.80, 0.20), (0.5, 0.20, 0.60, 0.35), (1.0, 0.45, 0.25, 0.85)]
+for what, types, before, after in (
+        ("three types", three_types, old_map, new_map),
+        ("two types, range narrowed", (index % 2).astype(float), old_map,
+         [(-0.5, 0.23, 0.30, 0.75), (0.25, 0.87, 0.87, 0.87), (0.75, 0.71, 0.02, 0.15)])):
+    tsndf, twindow, tctf = converged_types(types, before)
+    start = image(twindow)
+    passes, restarts = tsndf.GetNumberOfSamplePasses(), tsndf.GetNumberOfRestarts()
+    recoloured = tsndf.GetTileCache().GetNumberOfRecolouredTiles()
+    set_points(tctf, after)
+    changed = image(twindow)
+    fresh_sndf, fresh_window, _ = converged_types(types, after)
+    fresh = image(fresh_window)
+    d = np.abs(changed - fresh)
+    print("%s: colour map changed after convergence vs converged under it: mean %.3f max %.1f "
+          "/255 (the change moved the picture by %.1f; %d tiles recoloured)"
+          % (what, d.mean(), d.max(), np.abs(changed - start).mean(),
+             tsndf.GetTileCache().GetNumberOfRecolouredTiles() - recoloured))
+    check(tsndf.GetNumberOfSamplePasses() == passes and tsndf.GetNumberOfRestarts() == restarts
+          and tsndf.GetNumberOfRecolours() == 1 and tsndf.GetNumberOfSamples() == 64
+          and d.max() <= 1.0 and np.abs(changed - start).mean() > 3.0,
+          "%s: a new colour map re-shades without a sample pass, equal to sampling under it "
+          "(max %.1f /255)" % (what, d.max()))
+    # and refinement after it goes on with the new colours (a larger target)
+    tsndf.SetTargetSamples(128)
+    fresh_sndf.SetTargetSamples(128)
+    converge(tsndf, twindow)
+    converge(fresh_sndf, fresh_window)
+    d = np.abs(image(twindow) - image(fresh_window))
+    check(d.max() <= 1.0, "%s: refined on to 128 samples after the recolouring, equal to a pass "
+          "sampled under the new map throughout (max %.1f /255)" % (what, d.max()))
+# colour maps that are not linear in the old colours sample again: four types of unrelated
+# colours, a continuous map; so does a new map where the ambient term carries the colours
+rng = np.random.default_rng(5)
+for what, types, before, after, ambient in (
+        ("four types", (index % 4) / 3.0, old_map + [(1.0 / 3.0, 0.2, 0.8, 0.2)],
+         new_map + [(1.0 / 3.0, 0.9, 0.1, 0.6)], 0.0),
+        ("a continuous map", rng.random(len(xyz)), old_map, new_map, 0.0),
+        ("three types with ambient 0.2", three_types, old_map, new_map, 0.2)):
+    tsndf, twindow, tctf = converged_types(types, before, ambient)
+    restarts = tsndf.GetNumberOfRestarts()
+    set_points(tctf, after)
+    image(twindow)
+    check(tsndf.GetNumberOfRestarts() == restarts + 1 and tsndf.GetNumberOfRecolours() == 0,
+          "%s: a new colour map samples again" % what)
 
 # --- other geometry: an opaque box through part of the crystal and the outline (lines) -------
 ref_box = reference(xyz, rgb, box=True)
