@@ -10,7 +10,8 @@ at 200x150, about two pixels per atom, where one ray per pixel aliases. Checked:
   image is far off; and against the baseline (same platform);
 - Converge Still Renders: after a camera change one Render() gives the converged image, equal
   to the progressively refined one; with Use FXAA on the same picture (FXAA is off under S-NDF);
-- re-lighting: a light change re-shades without taking samples again;
+- re-lighting: a light change re-shades without taking samples again; so do new colours of
+  the two atom types, and the old colours back give the picture before;
 - the view's ambient occlusion is sampled with the particles (Density Volume: darker, nowhere
   brighter);
 - translucent particles: the plain image and one warning.
@@ -167,6 +168,27 @@ if not args.must_fail:
     view.KeyLightIntensity = 0.75
     view.KeyLightElevation = 50.0
     view.KeyLightAzimuth = 10.0
+
+    # --- a new colour map re-shades the samples (two types: linear in the old colours) --------
+    simple.Render(view)
+    samples = view_info(view, "SNDFNumberOfSamples")
+    recoloured = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_before_map.png")))
+    lut = display.LookupTable
+    old_colours = list(lut.IndexedColors)
+    lut.IndexedColors = [0.95, 0.80, 0.20, 0.30, 0.70, 0.40]
+    simple.Render(view)
+    kept = view_info(view, "SNDFNumberOfSamples")
+    remapped = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_new_map.png")))
+    print("new colour map: %d samples before, %d after, mean change %.2f /255"
+          % (samples, kept, numpy.abs(remapped - recoloured).mean()))
+    check(samples == 256 and kept == 256 and numpy.abs(remapped - recoloured).mean() > 2.0,
+          "new type colours re-shade the 256 samples without taking new ones")
+    lut.IndexedColors = old_colours
+    back_map = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_old_map.png")))
+    check(view_info(view, "SNDFNumberOfSamples") == 256
+          and numpy.abs(back_map - recoloured).max() <= 1.0,
+          "the old colour map back: the picture before (max %.1f /255), no sample taken"
+          % numpy.abs(back_map - recoloured).max())
 
     # --- the view's ambient occlusion is sampled -------------------------------------------------
     view.SNDFConvergeStillRenders = 1
