@@ -287,9 +287,28 @@ public:
   {
     vtkSmartPointer<vtkUnsignedCharArray> Colours;
     vtkMTimeType Time = 0;
+    // the diffuse colour stored is Scale * the mapped colour (Scale: the diffuse coefficient,
+    // or 1 where the shade applies it, RawMaterial 1), or Solid where there are no scalars
+    double Scale = 1.0;
+    double Solid[3] = { 0.0, 0.0, 0.0 };
   };
   std::vector<SampledColours> Colours;
   std::vector<double> ColourKey;
+
+  // What the diffuse colour of an actor's samples is (see SampledColours), in modes 0 and 1.
+  SampledColours StoredColours(vtkActor* actor) const
+  {
+    SampledColours stored;
+    stored.Colours = MappedColours(actor);
+    stored.Time = stored.Colours ? stored.Colours->GetMTime() : 0;
+    vtkProperty* p = actor->GetProperty();
+    stored.Scale = this->RawMaterial == 1 ? 1.0 : p->GetDiffuse();
+    for (int c = 0; c < 3; ++c)
+    {
+      stored.Solid[c] = stored.Scale * p->GetDiffuseColor()[c];
+    }
+    return stored;
+  }
 
   // The colours the particle actors' samples are taken with from now on (a restart).
   void KeepColours(const std::vector<vtkActor*>& particles)
@@ -297,10 +316,7 @@ public:
     this->Colours.clear();
     for (vtkActor* actor : particles)
     {
-      SampledColours kept;
-      kept.Colours = MappedColours(actor);
-      kept.Time = kept.Colours ? kept.Colours->GetMTime() : 0;
-      this->Colours.push_back(kept);
+      this->Colours.push_back(this->StoredColours(actor));
     }
   }
 
@@ -320,38 +336,47 @@ public:
     bool changed = false;
     for (std::size_t a = 0; a < particles.size(); ++a)
     {
-      vtkUnsignedCharArray* now = MappedColours(particles[a]);
+      const SampledColours now = this->StoredColours(particles[a]);
       const SampledColours& then = this->Colours[a];
-      if (!now && !then.Colours)
+      vtkProperty* p = particles[a]->GetProperty();
+      // (every actor's colours make pairs, the unchanged ones too: M must keep them)
+      if (!now.Colours && !then.Colours)
       {
-        continue; // the property's colour (its changes are in the state)
+        // the property's colour: one pair (its ambient term is the ambient colour's)
+        if (!std::equal(now.Solid, now.Solid + 3, then.Solid))
+        {
+          if (coloured)
+          {
+            return -1;
+          }
+          changed = true;
+        }
+        pairs.push_back({ then.Solid[0], then.Solid[1], then.Solid[2], now.Solid[0], now.Solid[1],
+          now.Solid[2] });
+        continue;
       }
-      if (!now || !then.Colours || now->GetNumberOfComponents() != 4 ||
+      if (!now.Colours || !then.Colours || now.Colours->GetNumberOfComponents() != 4 ||
         then.Colours->GetNumberOfComponents() != 4 ||
-        now->GetNumberOfTuples() != then.Colours->GetNumberOfTuples())
+        now.Colours->GetNumberOfTuples() != then.Colours->GetNumberOfTuples())
       {
         return -1;
       }
-      if (now == then.Colours)
+      if (now.Colours == then.Colours && now.Time != then.Time)
       {
-        if (now->GetMTime() != then.Time)
+        return -1; // mapped anew into the same array: the old colours are gone
+      }
+      if (now.Colours != then.Colours || now.Scale != then.Scale)
+      {
+        if (p->GetAmbient() != 0.0 || coloured)
         {
-          return -1; // mapped anew into the same array: the old colours are gone
+          return -1; // colour-dependent light in the colour target, which keeps no bins
         }
-        continue;
+        changed = true;
       }
-      changed = true;
-      vtkProperty* p = particles[a]->GetProperty();
-      if (p->GetAmbient() != 0.0 || coloured)
-      {
-        return -1; // colour-dependent light in the colour target, which keeps no bins
-      }
-      // (RawMaterial 1 stores the mapped colour, 0 the colour times the diffuse coefficient)
-      const double scale = (this->RawMaterial == 1 ? 1.0 : p->GetDiffuse()) / 255.0;
       std::unordered_map<std::uint32_t, std::uint32_t> seen;
       const unsigned char* o = then.Colours->GetPointer(0);
-      const unsigned char* n = now->GetPointer(0);
-      const vtkIdType count = now->GetNumberOfTuples();
+      const unsigned char* n = now.Colours->GetPointer(0);
+      const vtkIdType count = now.Colours->GetNumberOfTuples();
       for (vtkIdType i = 0; i < count; ++i, o += 4, n += 4)
       {
         if (o[3] != n[3])
@@ -375,8 +400,8 @@ public:
         std::array<double, 6> entry;
         for (int c = 0; c < 3; ++c)
         {
-          entry[c] = scale * ((pair.first >> (8 * c)) & 0xFFu);
-          entry[3 + c] = scale * ((pair.second >> (8 * c)) & 0xFFu);
+          entry[c] = then.Scale / 255.0 * ((pair.first >> (8 * c)) & 0xFFu);
+          entry[3 + c] = now.Scale / 255.0 * ((pair.second >> (8 * c)) & 0xFFu);
         }
         pairs.push_back(entry);
       }
@@ -833,16 +858,21 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       }
       continue;
     }
+    // the ambient term is drawn into the colour target (sampled); the diffuse colour the samples
+    // hold goes into the colour key (vtkInternals::Recolour)
     state.push_back(p->GetAmbient());
-    state.insert(state.end(), p->GetAmbientColor(), p->GetAmbientColor() + 3);
-    state.insert(state.end(), p->GetDiffuseColor(), p->GetDiffuseColor() + 3);
+    if (p->GetAmbient() != 0.0)
+    {
+      state.insert(state.end(), p->GetAmbientColor(), p->GetAmbientColor() + 3);
+    }
+    colourKey.insert(colourKey.end(), p->GetDiffuseColor(), p->GetDiffuseColor() + 3);
     if (internals.RawMaterial == 1)
     {
       diffuseScale[0] = diffuseScale[1] = diffuseScale[2] = p->GetDiffuse();
     }
     else
     {
-      state.push_back(p->GetDiffuse());
+      colourKey.push_back(p->GetDiffuse());
     }
   }
   auto renderPlain = [&]() {

@@ -82,11 +82,27 @@
  *   ambient coefficient * ambient colour * the pixel's sum of AO). Which of the two comes
  *   from VTK's colour code (vtkOpenGLPolyDataMapper::ReplaceShaderColor: diffuseColor =
  *   diffuseIntensity * vertex, texture or property colour), checked against the mapper's
- *   scalar settings. With more than one particle actor every ambient and diffuse change
- *   samples again. A new colour map, new scalars or new geometry sample again: the samples
- *   store colours, and mapping is not linear in the data, so a bin's mean colour cannot be
- *   re-mapped (the paper's "transfer function" is a colour over the normals, which a lighting
- *   table could carry; a colour over data values would need each bin's distribution of values).
+ *   scalar settings. With more than one particle actor the samples hold the diffuse colours
+ *   as drawn (coefficient times colour); an ambient change samples again, diffuse changes are
+ *   colour changes (next item).
+ * - Colour (the colour map, the diffuse colours). A bin keeps the mean of its samples'
+ *   AO * colour, which is linear in the colours: where the particles' new stored colours are a
+ *   linear function of the old ones, c' = M c for every particle of every particle actor, the
+ *   bins' means become M m exactly and the pass re-shades without sampling
+ *   (Shaders/SNDFRecolour.glsl over every cached tile, then the tiles are rebaked). M is fitted
+ *   by least squares (pseudo-inverse) to the distinct (old, new) colour pairs of the mapped
+ *   scalars (vtkMapper::MapScalars, held from the restart) and the property colours, and used
+ *   only when it meets every pair within 0.05/255 with entries within +-16 (quantisation of the
+ *   16-bit means: < 0.4/255). That holds for any new colours of up to three linearly
+ *   independent colours -- colour by type with up to three types (LAMMPS films, binary and
+ *   ternary alloys, water), a new range of such a map, solid colours of up to three actors, a
+ *   diffuse coefficient -- measured: equal to sampling under the new map within 1/255. Other
+ *   changes sample again: four or more distinct colours that do not map linearly (a
+ *   continuous map, colour by speed: re-mapping a bin's mean colour would need each bin's
+ *   distribution of data values, not kept: the paper's "transfer function" is a colour over
+ *   the normals), a scalar actor with an ambient coefficient (the ambient term is drawn with
+ *   the scalar colours into the colour target, which keeps no bins), a voxel-cone ambient light
+ *   (it carries the particles' colours), new opacities, new scalars or new geometry.
  * - Memory. An S-NDF texel takes 12 BinsPerAxis^2 + 4 max(1, BinsPerAxis^2 / 32) + 64 bytes (a
  *   16-bit count, three 16-bit mean colour channels and two 16-bit mean bin coordinates per
  *   bin, the occupancy bits, four float sums; 8 x 8 bins: 840 bytes, 3.3 MB per 64^2 tile). The
@@ -124,12 +140,14 @@
  * What invalidates the samples: the viewport size, the camera (but for the pans and zooms
  * above: view up, view direction, view angle, projection, clipping range, window centre, in
  * perspective also position, focal point), the bins, the cache size, and any
- * prop's or mapper's or input's modification time (props outside the view count too: panning
+ * prop's or mapper's (a particle mapper's without its lookup table) or input's modification
+ * time (props outside the view count too: panning
  * them out of the view and back keeps the S-MIP), the background, the passes inside this one
  * (their objects and modification times: an AO pass put into the chain or changed). What does
  * not: lights (the table is rebuilt when a light's colour or its direction or position in view
  * coordinates changes; each cached tile is rebaked when it is next shown or averaged), the
- * particle actors' specular colour and power.
+ * particle actors' specular colour and power, and colour changes linear in the colours
+ * ("Colour" above).
  *
  * Other geometry. Opaque polygonal props (surfaces, lines, points: any vtkActor whose mapper takes
  * render-pass shader replacements) are sampled with the particles: their colour goes into the

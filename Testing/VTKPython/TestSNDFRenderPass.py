@@ -316,19 +316,44 @@ for solid in (False, True):
           "%s: a new material re-shades without a sample pass, equal to sampling under it "
           "(max %.1f /255)" % (what, d.max()))
 # colour by scalars: the ambient term is drawn with the scalar colours into the samples, so the
-# ambient coefficient samples again; so does any material change with two particle actors
+# ambient coefficient samples again
 msndf, mwindow, mactor = converged_material(False, *before_material[0])
 restarts = msndf.GetNumberOfRestarts()
 mactor.GetProperty().SetAmbient(0.2)
 image(mwindow)
 check(msndf.GetNumberOfRestarts() == restarts + 1,
       "colour by scalars: a new ambient coefficient samples again")
-msndf, mwindow, mactor = converged_material(True, *before_material[1], second=True)
+# two particle actors (a solid colour and two scalar colours): the samples hold the diffuse
+# colours as drawn; a new diffuse coefficient or colour of one of them maps the three stored
+# colours linearly (vtkSNDFRenderPass "Colour"): recoloured, equal to sampling under it; a new
+# ambient coefficient samples again
+for what, change in (("diffuse coefficient", lambda p: p.SetDiffuse(0.4)),
+                     ("diffuse colour", lambda p: p.SetDiffuseColor(0.2, 0.8, 0.5))):
+    msndf, mwindow, mactor = converged_material(True, *before_material[1], second=True)
+    start = image(mwindow)
+    passes, restarts = msndf.GetNumberOfSamplePasses(), msndf.GetNumberOfRestarts()
+    change(mactor.GetProperty())
+    changed = image(mwindow)
+    fresh_sndf, fresh_window, fresh_actor = converged_material(True, *before_material[1],
+                                                               second=True)
+    change(fresh_actor.GetProperty())
+    fresh_sndf.Restart()
+    image(fresh_window)
+    converge(fresh_sndf, fresh_window)
+    fresh = image(fresh_window)
+    d = np.abs(changed - fresh)
+    print("two particle actors, new %s vs sampled under it: mean %.3f max %.1f /255 (moved by %.1f)"
+          % (what, d.mean(), d.max(), np.abs(changed - start).mean()))
+    check(msndf.GetNumberOfSamplePasses() == passes and msndf.GetNumberOfRestarts() == restarts
+          and msndf.GetNumberOfRecolours() == 1 and d.max() <= 1.0
+          and np.abs(changed - start).mean() > 1.0,
+          "two particle actors: a new %s re-shades without a sample pass, equal to sampling "
+          "under it (max %.1f /255, moved by %.1f)" % (what, d.max(), np.abs(changed - start).mean()))
 restarts = msndf.GetNumberOfRestarts()
-mactor.GetProperty().SetDiffuse(0.4)
+mactor.GetProperty().SetAmbient(0.3)
 image(mwindow)
 check(msndf.GetNumberOfRestarts() == restarts + 1,
-      "two particle actors: a new diffuse coefficient samples again")
+      "two particle actors: a new ambient coefficient samples again")
 
 # --- colour-map changes re-shade where the new colours are linear in the old ones -----------
 def converged_types(types, points, ambient=0.0):
