@@ -2,9 +2,10 @@
 
 Scene: an fcc crystal of two species seen whole (CELLS^3 unit cells, 4 atoms each), radius 0.36
 lattice constants, headlight, at WIDTHxHEIGHT. Measured in the same run:
-- plain: a frame of the core (vtkCameraPass -> vtkRenderStepsPass), mean of 5;
+- plain: a frame of the core (vtkCameraPass -> vtkRenderStepsPass), median;
 - sample pass: a refinement frame with SamplesPerFrame 1 (delegate into the G-buffer,
-  accumulation, re-shade, composite), mean over the first SAMPLES frames;
+  accumulation, re-shade, composite), median over SAMPLES - 1 frames, interleaved with the
+  plain frames (one of each in turn);
 - re-light: a frame after a light change once refinement stopped (table + re-shade, no sample);
 - re-sample to the same quality: SAMPLES sample passes (what plain super-sampling costs after the
   same light change);
@@ -47,18 +48,25 @@ def timed(window):
     return time.perf_counter() - t
 
 
-renderer, window = view(None)
-timed(window)
-plain = np.mean([timed(window) for _ in range(5)])
-
+# plain and refinement frames interleaved (one of each in turn, medians): llvmpipe's frame times
+# drift by up to 30 % between runs and within one, which a plain mean measured first and a
+# sample mean measured after it turned into the ratio
+_, plain_window = view(None)
+timed(plain_window)
 sndf = pr.vtkSNDFRenderPass()
 sndf.SetSamplesPerFrame(1)
 sndf.SetTargetSamples(samples)
 renderer, window = view(sndf)
 timed(window)  # the frame of the change
-sample_times = [timed(window) for _ in range(samples)]
-assert sndf.GetConverged()
-sample = np.mean(sample_times[1:])  # (the first builds the programs)
+timed(window)  # (the first sample pass builds the programs)
+plain_times = []
+sample_times = []
+while not sndf.GetConverged():
+    plain_times.append(timed(plain_window))
+    sample_times.append(timed(window))
+plain = float(np.median(plain_times))
+sample = float(np.median(sample_times))
+del plain_window
 light = vtkLight()
 light.SetLightTypeToCameraLight()
 light.SetPosition(1, 0.5, 0.4)
