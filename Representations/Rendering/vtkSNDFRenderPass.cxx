@@ -254,7 +254,22 @@ public:
   double Along = 0.0;
   double TexelSize = 1.0;
   double Plane[2] = { 0.0, 0.0 };
-  // the view of the last MapView(), and the view of the last frame (mapped or plain)
+  // A view between two levels of the S-MIP (PlaceView()): its pixels are Scale texels of the
+  // placed level wide, the window's lower-left corner lies at Offset in the rectangle of Size
+  // texels that is sampled and shaded (SNDFBoxFilter.glsl makes the window's pixels).
+  struct Between
+  {
+    bool Active = false;
+    double Scale = 1.0;
+    double Offset[2] = { 0.0, 0.0 };
+    int Size[2] = { 0, 0 };
+  };
+  vtkSmartPointer<vtkTextureObject> DisplayImage;
+  vtkSmartPointer<vtkTextureObject> DisplayDepth;
+  vtkNew<vtkParticleComputeProgram> BoxFilter;
+  // the view of the last MapView() and its size in texels, and the view of the last frame
+  // (mapped or plain)
+  int PlacedSize[2] = { 0, 0 };
   vtkSNDFTileCache::Placement Placement;
   bool Placed = false;
   vtkSNDFTileCache::Placement ShownView;
@@ -472,8 +487,18 @@ public:
   // Where a parallel view of the frame lies in the S-MIP: false unless its pixels are the
   // texels of a level (pixel size 2^L level-0 texels; the camera moved in the view plane only,
   // the direction kept). Its grid is placed to 1/256 level-0 texel.
-  bool PlaceView(vtkCamera* camera, int width, int height, vtkSNDFTileCache::Placement& placed) const
+  //
+  // A parallel view whose pixel size is not a power of two times the level-0 texel lies between
+  // two levels (ZoomBetweenLevels; otherwise false): it is placed at the finer of the two, L
+  // (its pixels 1 to 2 texels of L wide: the coarser level, magnified, measured mean 5.9 /255
+  // from the super-sampled view on the test crystal, where the plain image is 9.6), on the
+  // phase-0 grid of that level, with a rectangle of texels that covers the window and a texel
+  // more on each side; the samples go into those texels and the window shows their box filter
+  // (`between`). False where the rectangle needs more than `slots` tiles.
+  bool PlaceView(vtkCamera* camera, int width, int height, int slots, bool allowBetween,
+    vtkSNDFTileCache::Placement& placed, Between& between) const
   {
+    between = Between();
     if (!camera->GetParallelProjection())
     {
       placed = vtkSNDFTileCache::Placement();
@@ -485,9 +510,14 @@ public:
     {
       return false;
     }
-    const long level = std::lround(lod);
-    if (std::abs(lod - level) > 1e-6 || level < vtkSNDFTileCache::MinimumLevel ||
-      level > vtkSNDFTileCache::MaximumLevel)
+    between.Active = std::abs(lod - std::round(lod)) > 1e-6;
+    if (between.Active && !allowBetween)
+    {
+      return false;
+    }
+    // (between two levels: the finer one, its texels at most a pixel wide)
+    const long level = between.Active ? static_cast<long>(std::floor(lod)) : std::lround(lod);
+    if (level < vtkSNDFTileCache::MinimumLevel || level > vtkSNDFTileCache::MaximumLevel)
     {
       return false;
     }
@@ -522,12 +552,52 @@ public:
       {
         return false;
       }
+      if (between.Active)
+      {
+        const double at = position / static_cast<double>(texel); // in texels of the level
+        placed.Phase[a] = 0;
+        placed.Origin[a] = static_cast<long long>(std::floor(at)) - 1;
+        between.Offset[a] = at - static_cast<double>(placed.Origin[a]);
+        continue;
+      }
       // (a grid of 1/256 pixel: the texels lie within 1/512 level-0 pixel of the view's pixels)
       const long long whole = std::llround(position);
       placed.Phase[a] = ((whole % texel) + texel) % texel;
       placed.Origin[a] = (whole - placed.Phase[a]) / texel;
     }
+    if (between.Active)
+    {
+      between.Scale = pixel / (this->TexelSize * std::ldexp(1.0, static_cast<int>(level)));
+      between.Size[0] = static_cast<int>(std::ceil(between.Offset[0] + width * between.Scale)) + 1;
+      between.Size[1] = static_cast<int>(std::ceil(between.Offset[1] + height * between.Scale)) + 1;
+      if (vtkSNDFTileCache::GetTilesForView(between.Size[0], between.Size[1]) > slots)
+      {
+        return false;
+      }
+    }
     return true;
+  }
+
+  // The parallel scale and window centre of a camera whose texelsX x texelsY pixels are the
+  // texels of the rectangle of a view between two levels (`placed`: on the level's phase-0 grid,
+  // its lower-left texel at Origin); the aspect ratio is texelsX / texelsY.
+  void SamplingWindow(vtkCamera* camera, const vtkSNDFTileCache::Placement& placed, int texelsX,
+    int texelsY, double& scale, double centre[2]) const
+  {
+    const double texel = this->TexelSize * std::ldexp(1.0, placed.Level);
+    scale = 0.5 * texelsY * texel;
+    const double aspect = static_cast<double>(texelsX) / texelsY;
+    const double* focal = camera->GetFocalPoint();
+    for (int a = 0; a < 2; ++a)
+    {
+      double plane = 0.0; // the focal point in the frame's rotation
+      for (int k = 0; k < 3; ++k)
+      {
+        plane += this->Rotation[a][k] * focal[k];
+      }
+      const double corner = this->Plane[a] + static_cast<double>(placed.Origin[a]) * texel;
+      centre[a] = (corner - plane) / (scale * (a == 0 ? aspect : 1.0)) + 1.0;
+    }
   }
 
   // true the first time `what` is reported
@@ -547,7 +617,8 @@ public:
       }
       attachment = nullptr;
     }
-    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth, &this->Checkpoint })
+    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth, &this->Checkpoint,
+           &this->DisplayImage, &this->DisplayDepth })
     {
       if (*texture)
       {
@@ -571,6 +642,79 @@ public:
     this->Image = vtkSmartPointer<vtkTextureObject>::New();
     this->ImageDepth = vtkSmartPointer<vtkTextureObject>::New();
     this->Checkpoint = vtkSmartPointer<vtkTextureObject>::New();
+  }
+
+  // The G-buffer and the shaded texels for a width x height rectangle of texels (the window's
+  // pixels, or the rectangle of a view between two levels).
+  void AllocateTargets(vtkOpenGLRenderWindow* context, int width, int height)
+  {
+    this->ReleaseTextures(context);
+    this->NewTextures();
+    this->Target->SetContext(context);
+    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+    {
+      vtkTextureObject* t = this->Attachments[a];
+      t->SetContext(context);
+      if (a > 0)
+      {
+        t->SetInternalFormat(GL_RGBA16F);
+        t->SetFormat(GL_RGBA);
+        t->SetDataType(GL_FLOAT);
+        t->Allocate2D(width, height, 4, VTK_FLOAT);
+      }
+      else
+      {
+        // 8 bits, as the window: the background and other geometry come out exactly as drawn
+        // without the pass (a particle's ambient term is quantised per sample, < 0.5/255)
+        t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+      }
+    }
+    this->Depth->SetContext(context);
+    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    for (auto* image : { &this->Image, &this->Checkpoint, &this->ImageDepth })
+    {
+      const bool depth = image == &this->ImageDepth;
+      (*image)->SetContext(context);
+      (*image)->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
+      (*image)->SetFormat(depth ? GL_RED : GL_RGBA);
+      (*image)->SetDataType(GL_FLOAT);
+      (*image)->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
+    }
+    vtkOpenGLState* ostate = context->GetState();
+    ostate->PushFramebufferBindings();
+    this->Target->Bind();
+    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+    {
+      this->Target->AddColorAttachment(a, this->Attachments[a]);
+    }
+    this->Target->AddDepthAttachment(this->Depth);
+    ostate->PopFramebufferBindings();
+    this->Width = width;
+    this->Height = height;
+  }
+
+  // The window's picture of a view between two levels (SNDFBoxFilter.glsl).
+  void AllocateDisplay(vtkOpenGLRenderWindow* context, int width, int height)
+  {
+    for (auto* image : { &this->DisplayImage, &this->DisplayDepth })
+    {
+      if (*image && (*image)->GetHandle() && static_cast<int>((*image)->GetWidth()) == width &&
+        static_cast<int>((*image)->GetHeight()) == height)
+      {
+        continue;
+      }
+      if (*image)
+      {
+        (*image)->ReleaseGraphicsResources(context);
+      }
+      *image = vtkSmartPointer<vtkTextureObject>::New();
+      const bool depth = image == &this->DisplayDepth;
+      (*image)->SetContext(context);
+      (*image)->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
+      (*image)->SetFormat(depth ? GL_RED : GL_RGBA);
+      (*image)->SetDataType(GL_FLOAT);
+      (*image)->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
+    }
   }
 };
 
@@ -1062,9 +1206,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
 
   // the same frame (a pan or zoom by levels of the S-MIP keeps the samples), or a restart
   vtkSNDFTileCache::Placement placement;
+  vtkInternals::Between between;
   bool sameFrame = internals.FrameValid && state == internals.FixedState &&
     internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
-    internals.PlaceView(camera, width, height, placement);
+    internals.PlaceView(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
   // a new colour map: the samples are recoloured where the new colours are a linear function of
   // the old ones, else taken again
   if (sameFrame && colourKey != internals.ColourKey)
@@ -1087,58 +1232,6 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
   if (!sameFrame)
   {
-    if (width != internals.Width || height != internals.Height ||
-      !internals.Depth || !internals.Depth->GetHandle())
-    {
-      internals.ReleaseTextures(context);
-      internals.NewTextures();
-      internals.Target->SetContext(context);
-      for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-      {
-        vtkTextureObject* t = internals.Attachments[a];
-        t->SetContext(context);
-        if (a > 0)
-        {
-          t->SetInternalFormat(GL_RGBA16F);
-          t->SetFormat(GL_RGBA);
-          t->SetDataType(GL_FLOAT);
-          t->Allocate2D(width, height, 4, VTK_FLOAT);
-        }
-        else
-        {
-          // 8 bits, as the window: the background and other geometry come out exactly as drawn
-          // without the pass (a particle's ambient term is quantised per sample, < 0.5/255)
-          t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-        }
-      }
-      internals.Depth->SetContext(context);
-      internals.Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-      internals.Image->SetContext(context);
-      internals.Image->SetInternalFormat(GL_RGBA32F);
-      internals.Image->SetFormat(GL_RGBA);
-      internals.Image->SetDataType(GL_FLOAT);
-      internals.Image->Allocate2D(width, height, 4, VTK_FLOAT);
-      internals.ImageDepth->SetContext(context);
-      internals.ImageDepth->SetInternalFormat(GL_R32F);
-      internals.ImageDepth->SetFormat(GL_RED);
-      internals.ImageDepth->SetDataType(GL_FLOAT);
-      internals.ImageDepth->Allocate2D(width, height, 1, VTK_FLOAT);
-      internals.Checkpoint->SetContext(context);
-      internals.Checkpoint->SetInternalFormat(GL_RGBA32F);
-      internals.Checkpoint->SetFormat(GL_RGBA);
-      internals.Checkpoint->SetDataType(GL_FLOAT);
-      internals.Checkpoint->Allocate2D(width, height, 4, VTK_FLOAT);
-      ostate->PushFramebufferBindings();
-      internals.Target->Bind();
-      for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-      {
-        internals.Target->AddColorAttachment(a, internals.Attachments[a]);
-      }
-      internals.Target->AddDepthAttachment(internals.Depth);
-      ostate->PopFramebufferBindings();
-      internals.Width = width;
-      internals.Height = height;
-    }
     if (internals.Cache->GetNumberOfSlots() != slots || internals.Cache->GetBins() != bins)
     {
       if (!internals.Cache->Allocate(context, bins, slots))
@@ -1160,12 +1253,17 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     internals.Sequence = 0;
     internals.ResolveKey.clear();
     placement = internals.Placement;
+    between = vtkInternals::Between();
     this->NumberOfSamples = 0;
     internals.CheckedSamples = 0;
     this->ErrorTargetReached = false;
     this->EstimatedError = -1.0;
     ++this->NumberOfRestarts;
   }
+  // the texels sampled and shaded: the window's pixels, or the rectangle of a view between two
+  // levels (its window pixels are their box filter)
+  const int texelsX = between.Active ? between.Size[0] : width;
+  const int texelsY = between.Active ? between.Size[1] : height;
   // The frame of a change (e.g. each frame of an interaction: a restart, a pan off the grids in
   // the cache) is the plain image: one S-NDF sample would shade with bin means, coarser than the
   // exact normal. Sampling starts with the next frame -- unless this render is to converge
@@ -1174,7 +1272,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   internals.ShownView = placement;
   internals.Shown = true;
   if (changed && !this->ConvergeOnRender &&
-    internals.Cache->CountAvailable(placement, width, height) == 0)
+    internals.Cache->CountAvailable(placement, texelsX, texelsY) == 0)
   {
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
@@ -1189,11 +1287,22 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   {
     internals.Accumulate->SetSource(internals.Cache->GetShaderSource("SNDFAccumulate"));
     internals.Resolve->SetSource(internals.Cache->GetShaderSource("SNDFResolve"));
-    if (!internals.Accumulate->Build(context) || !internals.Resolve->Build(context))
+    internals.BoxFilter->SetSource(vtkParticleShaders::Get("SNDFBoxFilter"));
+    if (!internals.Accumulate->Build(context) || !internals.Resolve->Build(context) ||
+      !internals.BoxFilter->Build(context))
     {
       renderPlain();
       return;
     }
+  }
+  if (texelsX != internals.Width || texelsY != internals.Height || !internals.Depth ||
+    !internals.Depth->GetHandle())
+  {
+    internals.AllocateTargets(context, texelsX, texelsY);
+  }
+  if (between.Active)
+  {
+    internals.AllocateDisplay(context, width, height);
   }
 
   // the lighting table (Eqs. 12-14) for the renderer's lights and the first particle actor's
@@ -1398,7 +1507,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // rebaked where shaded with an older table (re-lighting)
   const long long changes =
     internals.Cache->GetNumberOfDownsampledTiles() + internals.Cache->GetNumberOfClearedTiles();
-  if (!internals.Cache->MapView(placement, width, height, internals.Table,
+  if (!internals.Cache->MapView(placement, texelsX, texelsY, internals.Table,
         static_cast<long long>(this->NumberOfTableBuilds)))
   {
     internals.Timer.End();
@@ -1406,7 +1515,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     renderPlain();
     return;
   }
-  const bool moved = !internals.Placed || !(placement == internals.Placement);
+  const bool moved = !internals.Placed || !(placement == internals.Placement) ||
+    internals.PlacedSize[0] != texelsX || internals.PlacedSize[1] != texelsY;
   if (moved && internals.Placed)
   {
     ++(placement.Level == internals.Placement.Level ? this->NumberOfPans : this->NumberOfZooms);
@@ -1416,12 +1526,14 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   {
     // a pan or zoom brought other texels into the view: count the fewest samples a pixel holds
     this->NumberOfSamples = static_cast<int>(std::min<unsigned int>(
-      internals.Cache->CountMinimumSamples(width, height), static_cast<unsigned int>(this->TargetSamples)));
+      internals.Cache->CountMinimumSamples(texelsX, texelsY), static_cast<unsigned int>(this->TargetSamples)));
     internals.CheckedSamples = 0;
     this->ErrorTargetReached = false;
     this->EstimatedError = -1.0;
   }
   internals.Placement = placement;
+  internals.PlacedSize[0] = texelsX;
+  internals.PlacedSize[1] = texelsY;
   internals.Placed = true;
   internals.Timer.End();
 
@@ -1432,13 +1544,14 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   {
     c *= material->GetSpecular();
   }
-  const unsigned int groupsX = static_cast<unsigned int>((width + 15) / 16);
-  const unsigned int groupsY = static_cast<unsigned int>((height + 15) / 16);
+  const unsigned int groupsX = static_cast<unsigned int>((texelsX + 15) / 16);
+  const unsigned int groupsY = static_cast<unsigned int>((texelsY + 15) / 16);
   auto resolveNow = [&]() {
     std::vector<double> resolveKey = { static_cast<double>(this->NumberOfSamplePasses),
       static_cast<double>(placement.Level), static_cast<double>(placement.Origin[0]),
       static_cast<double>(placement.Origin[1]), static_cast<double>(placement.Phase[0]),
-      static_cast<double>(placement.Phase[1]),
+      static_cast<double>(placement.Phase[1]), static_cast<double>(texelsX),
+      static_cast<double>(texelsY),
       static_cast<double>(internals.Cache->GetNumberOfDownsampledTiles()),
       static_cast<double>(internals.Cache->GetNumberOfClearedTiles()),
       static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2],
@@ -1450,7 +1563,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
     vtkParticleComputeProgram* resolve = internals.Resolve;
     resolve->Use();
-    resolve->SetUniform2i("prSize", width, height);
+    resolve->SetUniform2i("prSize", texelsX, texelsY);
     resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
       static_cast<float>(specular[1]), static_cast<float>(specular[2]));
     resolve->SetUniform3f("prDiffuseScale", static_cast<float>(diffuseScale[0]),
@@ -1498,7 +1611,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       vtkParticleComputeProgram::UploadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
       vtkParticleComputeProgram* difference = internals.Difference;
       difference->Use();
-      difference->SetUniform2i("prSize", width, height);
+      difference->SetUniform2i("prSize", texelsX, texelsY);
       glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
       glBindImageTexture(1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
       vtkParticleComputeProgram::BindStorage(1, internals.Totals);
@@ -1514,12 +1627,12 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
         total += t;
       }
       // mean over pixels and channels, in 1/255
-      const double mean = total / (64.0 * 3.0 * width * height);
+      const double mean = total / (64.0 * 3.0 * texelsX * texelsY);
       this->EstimatedError = mean * std::sqrt(static_cast<double>(m) / (n - m));
       this->ErrorTargetReached = this->EstimatedError <= this->ErrorTarget;
     }
     glCopyImageSubData(internals.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
-      internals.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+      internals.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
     internals.CheckedSamples = n;
   };
 
@@ -1535,13 +1648,27 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     double fraction = 0.0;
     this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
   }
+  // the camera of the sample passes: the view's, or one whose pixels are the texels of a view
+  // between two levels (restored after them)
+  double viewCentre[2];
+  camera->GetWindowCenter(viewCentre);
+  const double viewScale = camera->GetParallelScale();
+  const bool viewExplicit = camera->GetUseExplicitAspectRatio();
+  const double viewAspect = camera->GetExplicitAspectRatio();
+  double centre[2] = { viewCentre[0], viewCentre[1] };
+  if (between.Active && samples > 0)
+  {
+    double scale = viewScale;
+    internals.SamplingWindow(camera, placement, texelsX, texelsY, scale, centre);
+    camera->SetParallelScale(scale);
+    camera->SetExplicitAspectRatio(static_cast<double>(texelsX) / texelsY);
+    camera->UseExplicitAspectRatioOn();
+  }
   for (int k = 0; k < samples; ++k)
   {
-    double centre[2];
-    camera->GetWindowCenter(centre);
     double offset[2];
     JitterOffset(internals.Sequence++, offset);
-    camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / width, centre[1] + 2.0 * offset[1] / height);
+    camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / texelsX, centre[1] + 2.0 * offset[1] / texelsY);
 
     internals.Timer.Begin(0);
     ostate->PushFramebufferBindings();
@@ -1550,8 +1677,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     {
       vtkOpenGLState::ScopedglViewport viewport(ostate);
       vtkOpenGLState::ScopedglScissor scissor(ostate);
-      ostate->vtkglViewport(0, 0, width, height);
-      ostate->vtkglScissor(0, 0, width, height);
+      ostate->vtkglViewport(0, 0, texelsX, texelsY);
+      ostate->vtkglScissor(0, 0, texelsX, texelsY);
       ren->Clear();
       const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
       for (unsigned int a = 1; a < NumberOfAttachments; ++a)
@@ -1583,7 +1710,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
     ostate->PopFramebufferBindings();
     internals.Timer.End();
-    camera->SetWindowCenter(centre[0], centre[1]);
+    camera->SetWindowCenter(viewCentre[0], viewCentre[1]);
     ++this->NumberOfSamplePasses;
 
     // into the S-NDFs
@@ -1600,7 +1727,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     accumulate->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
     internals.Table->Activate();
     accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
-    accumulate->SetUniform2i("prSize", width, height);
+    accumulate->SetUniform2i("prSize", texelsX, texelsY);
     accumulate->SetUniformi("prBins", bins);
     accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
     internals.Cache->BindView(accumulate);
@@ -1629,10 +1756,42 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       break;
     }
   }
+  if (between.Active && samples > 0)
+  {
+    camera->SetParallelScale(viewScale);
+    camera->SetExplicitAspectRatio(viewAspect);
+    camera->SetUseExplicitAspectRatio(viewExplicit);
+  }
 
   // shade when samples, table or specular colour changed
   internals.Timer.Begin(2);
   resolveNow();
+  // a view between two levels: each window pixel the box filter of the shaded texels under it
+  vtkTextureObject* shown = internals.Image;
+  vtkTextureObject* shownDepth = internals.ImageDepth;
+  if (between.Active)
+  {
+    vtkParticleComputeProgram* filter = internals.BoxFilter;
+    filter->Use();
+    filter->SetUniform2i("prSize", width, height);
+    filter->SetUniform2i("prTexelSize", texelsX, texelsY);
+    filter->SetUniformf("prScale", static_cast<float>(between.Scale));
+    filter->SetUniform2f("prOffset", static_cast<float>(between.Offset[0]),
+      static_cast<float>(between.Offset[1]));
+    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(2, internals.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(3, internals.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    filter->Dispatch(static_cast<unsigned int>((width + 15) / 16), static_cast<unsigned int>((height + 15) / 16));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    for (GLuint unit = 0; unit < 4; ++unit)
+    {
+      glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    }
+    vtkParticleComputeProgram::UseNone();
+    shown = internals.DisplayImage;
+    shownDepth = internals.DisplayDepth;
+  }
 
   // the composite: colour and depth into the render state's target, over the whole viewport
   if (!internals.CompositeQuad)
@@ -1649,10 +1808,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   if (composite->Program)
   {
     context->GetShaderCache()->ReadyShaderProgram(composite->Program);
-    internals.Image->Activate();
-    internals.ImageDepth->Activate();
-    composite->Program->SetUniformi("prImage", internals.Image->GetTextureUnit());
-    composite->Program->SetUniformi("prImageDepth", internals.ImageDepth->GetTextureUnit());
+    shown->Activate();
+    shownDepth->Activate();
+    composite->Program->SetUniformi("prImage", shown->GetTextureUnit());
+    composite->Program->SetUniformi("prImageDepth", shownDepth->GetTextureUnit());
     vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
@@ -1662,8 +1821,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     ostate->vtkglDepthMask(GL_TRUE);
     ostate->vtkglDisable(GL_BLEND);
     composite->Render();
-    internals.Image->Deactivate();
-    internals.ImageDepth->Deactivate();
+    shown->Deactivate();
+    shownDepth->Deactivate();
   }
   internals.Timer.End();
 }
@@ -1710,6 +1869,7 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   internals.Accumulate->ReleaseGraphicsResources(w);
   internals.Resolve->ReleaseGraphicsResources(w);
+  internals.BoxFilter->ReleaseGraphicsResources(w);
   internals.Difference->ReleaseGraphicsResources(w);
   vtkParticleComputeProgram::ReleaseStorage(
     internals.Totals, vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
@@ -1738,6 +1898,7 @@ void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ActiveBinsPerAxis: " << this->ActiveBinsPerAxis << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";
   os << indent << "ConvergeOnRender: " << this->ConvergeOnRender << "\n";
+  os << indent << "ZoomBetweenLevels: " << this->ZoomBetweenLevels << "\n";
   os << indent << "ErrorTarget: " << this->ErrorTarget << "\n";
   os << indent << "EstimatedError: " << this->EstimatedError << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";

@@ -12,6 +12,8 @@ at 200x150, about two pixels per atom, where one ray per pixel aliases. Checked:
   to the progressively refined one; with Use FXAA on the same picture (FXAA is off under S-NDF);
 - re-lighting: a light change re-shades without taking samples again; so do new colours of
   the two atom types, and the old colours back give the picture before;
+- parallel projection: a pan and back keeps the samples; a zoom by 1.25 samples anew, and keeps
+  them with S-NDF Zoom Between Levels;
 - the view's ambient occlusion is sampled with the particles (Density Volume: darker, nowhere
   brighter);
 - translucent particles: the plain image and one warning.
@@ -230,6 +232,23 @@ if not args.must_fail:
           and view_info(view, "SNDFNumberOfSamples") == 256
           and numpy.abs(back - before_pan).max() <= 1.0,
           "a pan in parallel projection samples only the uncovered texels; back: the cached tiles")
+    # a zoom by 1.25 samples anew; with S-NDF Zoom Between Levels it keeps the samples
+    view.CameraParallelScale = 20.0
+    simple.Render(view)
+    anew = view_info(view, "SNDFNumberOfSamples")
+    view.CameraParallelScale = 16.0
+    for _ in range(6):
+        simple.Render(view)
+    view.SNDFZoomBetweenLevels = 1
+    view.CameraParallelScale = 20.0
+    simple.Render(view)
+    kept = view_info(view, "SNDFNumberOfSamples")
+    print("parallel zoom by 1.25: %d samples after it, %d with S-NDF Zoom Between Levels"
+          % (anew, kept))
+    check(anew == 0 and kept == 64, "a zoom by 1.25 samples anew; with S-NDF Zoom Between "
+          "Levels the frame after it shows the kept samples and samples the new texels")
+    view.SNDFZoomBetweenLevels = 0
+    view.CameraParallelScale = 16.0
     view.CameraParallelProjection = 0
 
     # --- an error target stops refinement early ------------------------------------------------

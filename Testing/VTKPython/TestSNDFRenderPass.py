@@ -611,6 +611,86 @@ check(np.array_equal(image(window), level0) and sndf.GetNumberOfSamplePasses() =
       and sndf.GetNumberOfZooms() == 2,
       "zoom back in: the level-0 tiles from the cache, no sample")
 
+# zoom between levels: off by default, a zoom by 1.25 samples anew; with ZoomBetweenLevels the
+# view is the box filter of the nearest level's texels (the converged level-0 picture's pixels)
+def box_filter_of(texels, factor):
+    """What a parallel zoom by `factor` (parallel scale times it, about the view's centre) shows
+    with ZoomBetweenLevels: each pixel the area-weighted mean of the level-0 texels under its
+    footprint. Returns the picture and where the footprint lies within the level-0 view."""
+    def weights(n):
+        m = np.zeros((n, n))
+        inside = np.ones(n, bool)
+        for i in range(n):
+            lo = n / 2 + (i - n / 2) * factor
+            hi = lo + factor
+            if lo < 0 or hi > n:
+                inside[i] = False
+                continue
+            for j in range(int(np.floor(lo)), int(np.ceil(hi))):
+                m[i, j] = min(hi, j + 1) - max(lo, j)
+        return m / np.maximum(m.sum(axis=1, keepdims=True), 1e-30), inside
+    wy, iy = weights(H)
+    wx, ix = weights(W)
+    return np.einsum("ij,jkc,lk->ilc", wy, texels, wx), np.outer(iy, ix)
+
+
+def parallel_reference(scale):
+    """The 16x16 super-sampled core of parallel_view() at another parallel scale."""
+    ref_renderer, ref_window, _ = scene(xyz, rgb, (W * S, H * S))
+    ref_renderer.GetActiveCamera().ParallelProjectionOn()
+    ref_renderer.GetActiveCamera().SetParallelScale(scale)
+    ref_renderer.ResetCameraClippingRange()
+    return image(ref_window, W * S, H * S).reshape(H, S, W, S, 3).mean(axis=(1, 3))
+
+
+sndf, renderer, window = converged_parallel_view()
+restarts = sndf.GetNumberOfRestarts()
+renderer.GetActiveCamera().SetParallelScale(20.0)
+image(window)
+check(sndf.GetNumberOfRestarts() == restarts + 1 and sndf.GetNumberOfSamples() == 0,
+      "ZoomBetweenLevels off: a zoom by 1.25 samples anew (the plain image first)")
+for factor in (1.25, 1.9, 0.84):
+    sndf = pr.vtkSNDFRenderPass()
+    sndf.SetSamplesPerFrame(64)
+    sndf.ZoomBetweenLevelsOn()
+    renderer, window = parallel_view(sndf)
+    image(window)
+    converge(sndf, window)
+    level0 = image(window)
+    restarts, zooms = sndf.GetNumberOfRestarts(), sndf.GetNumberOfZooms()
+    renderer.GetActiveCamera().SetParallelScale(16.0 * factor)
+    shown = image(window)
+    if factor > 1.0:
+        expected, inside = box_filter_of(level0, factor)
+        d = np.abs(shown - expected)[inside]
+        print("zoom out by %.2f between levels: the first frame vs the box filter of the level-0 "
+              "picture: mean %.3f max %.1f /255 over %d pixels" % (factor, d.mean(), d.max(),
+                                                                   inside.sum()))
+        check(sndf.GetNumberOfRestarts() == restarts and d.max() <= 1.5,
+              "zoom out by %.2f with ZoomBetweenLevels: no restart, where level 0 was sampled the "
+              "box filter of its texels at once (max %.1f /255)" % (factor, d.max()))
+    else:
+        # (zoom in: the finer level -1 has no tile yet, the frame of the change is plain)
+        check(sndf.GetNumberOfRestarts() == restarts and sndf.GetNumberOfSamples() == 0,
+              "zoom in by %.2f with ZoomBetweenLevels: no restart, level -1 sampled from the "
+              "next frame on" % (1.0 / factor))
+    converge(sndf, window)
+    zoomed = image(window)
+    plain_renderer, plain_window = parallel_view(None)
+    plain_renderer.GetActiveCamera().SetParallelScale(16.0 * factor)
+    zoom_ref = parallel_reference(16.0 * factor)
+    between = error(zoomed, zoom_ref)
+    plain_error = error(image(plain_window), zoom_ref)
+    print("  converged, against the 16x16 super-sampled view: mean %.2f p99 %.1f max %.1f /255 "
+          "(the plain image: mean %.2f p99 %.1f)" % (between + plain_error[:2]))
+    check(sndf.GetNumberOfRestarts() == restarts and sndf.GetConverged()
+          and between[0] < 0.5 * plain_error[0] and between[1] < 0.5 * plain_error[1],
+          "zoom by %.2f between levels, converged: no restart, nearer the super-sampled view "
+          "than the plain image" % factor)
+    renderer.GetActiveCamera().SetParallelScale(16.0)
+    check(np.array_equal(image(window), level0) and sndf.GetNumberOfRestarts() == restarts,
+          "and back at level 0: the picture before, no restart")
+
 # re-light while tiles are out of view: they are rebaked when they come back, never stale
 sndf, renderer, window = converged_parallel_view()
 # (a pan by 150 pixels leaves the crystal out of the view: no tile of the first view is seen)
