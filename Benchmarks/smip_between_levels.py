@@ -22,7 +22,7 @@ import numpy as np
 
 import particlerendering as pr
 import smip_benchmark as sb
-from prVTKTesting import image_error, window_pixels
+from prVTKTesting import append_csv, image_error, window_pixels
 
 args = sys.argv[1:6] + ["63", "1280", "720", "64", "1.25"][len(sys.argv[1:6]):]
 cells, sb.width, sb.height, samples = (int(a) for a in args[:4])
@@ -72,9 +72,4 @@ row = [len(scene[0]), width, height, samples, factor, first_frame, len(kept_time
 header = ("particles,width,height,samples,factor,kept_first_frame_s,kept_frames,kept_total_s,"
           "anew_frames,anew_total_s,kept_mean,kept_p99,kept_max,anew_mean,anew_p99,anew_max\n")
 path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "smip_between_levels.csv")
-new = not os.path.exists(path)
-with open(path, "a") as f:
-    if new:
-        f.write(header)
-    f.write(",".join("%.6g" % v if isinstance(v, float) else str(v) for v in row) + "\n")
-print(header + ",".join(str(v) for v in row))
+append_csv(path, header, row)

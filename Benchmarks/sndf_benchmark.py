@@ -27,7 +27,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import crystal_view, fcc_crystal, pan_camera
+from prVTKTesting import append_csv, crystal_view, fcc_crystal, pan_camera
 from vtkmodules.vtkRenderingCore import vtkLight
 
 cells, width, height, samples = (int(a) for a in (sys.argv[1:5] + ["40", "1280", "720", "64"][len(sys.argv[1:5]):]))
@@ -126,16 +126,8 @@ path = os.path.join(os.path.dirname(__file__), "results", "sndf_timings.csv")
 header = ("particles,width,height,samples,bins,plain_s,sample_pass_s,sample_over_plain,"
           "relight_s,resample_s,resample_over_relight,memory_MB,gpu_sample_s,gpu_accumulate_s,"
           "gpu_shade_s,gpu_relight_shade_s\n")
-new = not os.path.exists(path)
-with open(path, "a") as f:
-    if new:
-        f.write(header)
-    f.write(",".join("%.6g" % v if isinstance(v, float) else str(v) for v in row) + "\n")
-print(header + ",".join(str(v) for v in row))
+append_csv(path, header, row)
 pan_path = os.path.join(os.path.dirname(__file__), "results", "sndf_pan.csv")
-new = not os.path.exists(pan_path)
-with open(pan_path, "a") as f:
-    if new:
-        f.write("particles,width,height,samples,pan_frame_s,restart_frame_s\n")
-    f.write("%d,%d,%d,%d,%.6g,%.6g\n" % (len(xyz), width, height, samples, pan, restart))
+append_csv(pan_path, "particles,width,height,samples,pan_frame_s,restart_frame_s",
+           [len(xyz), width, height, samples, pan, restart])
 print("pan frame %.3f s, restart frame %.3f s" % (pan, restart))

@@ -22,7 +22,7 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import crystal_view, fcc_crystal
+from prVTKTesting import append_csv, crystal_view, fcc_crystal
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 
@@ -82,9 +82,4 @@ resample = samples * sample
 row = [len(xyz), width, height, samples, sample, recolour, resample, resample / recolour, tiles]
 path = os.path.join(os.path.dirname(__file__), "results", "sndf_recolour.csv")
 header = "particles,width,height,samples,sample_pass_s,recolour_s,resample_s,resample_over_recolour,tiles\n"
-new = not os.path.exists(path)
-with open(path, "a") as f:
-    if new:
-        f.write(header)
-    f.write(",".join("%.6g" % v if isinstance(v, float) else str(v) for v in row) + "\n")
-print(header + ",".join(str(v) for v in row))
+append_csv(path, header, row)

@@ -38,6 +38,12 @@ uint prSNDFMaskWord(int bins)
   return prSNDFWordsPerBin * uint(bins * bins);
 }
 
+// How many words mark the occupied bins (after prSNDFMaskWord(bins)).
+int prSNDFMaskWords(int bins)
+{
+  return max(1, bins * bins / 32);
+}
+
 // The bin square of a projected normal, in bin units: its cell and the position f of the normal.
 vec2 prSNDFCell(vec2 nxy, int bins, out vec2 f)
 {

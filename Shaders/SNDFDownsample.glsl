@@ -86,7 +86,7 @@ void main()
 {
   ivec2 d = ivec2(gl_GlobalInvocationID.xy);
   int binCount = prBins * prBins;
-  int maskWords = max(1, binCount / 32);
+  int maskWords = prSNDFMaskWords(prBins);
   uint maskVec4s = uint((maskWords + 3) / 4);
   uint record = uint(d.y * prTileSize + d.x) * (4u + maskVec4s + uint(binCount));
   uint entries = record + 4u + maskVec4s;
@@ -130,8 +130,7 @@ void main()
         uint mask = prBinWordAt(bins, binWords + uint(m));
         while (mask != 0u)
         {
-          int bit = findLSB(mask);
-          mask &= mask - 1u;
+          int bit = prSNDFTakeBit(mask);
           uint bin = uint(32 * m + bit);
           uint base = prSNDFWordsPerBin * bin;
           uint w0 = prBinWordAt(bins, base);
@@ -188,8 +187,7 @@ void main()
     uint occupied = 0u;
     while (mask != 0u)
     {
-      int bit = findLSB(mask);
-      mask &= mask - 1u;
+      int bit = prSNDFTakeBit(mask);
       uint bin = uint(32 * m + bit);
       float w;
       vec3 mean;

@@ -22,8 +22,7 @@ uniform int prBins;
 
 void main()
 {
-  uvec2 local = gl_GlobalInvocationID.xy;
-  uint texel = uint(prPageTable[gl_WorkGroupID.z]) * prTileTexels + local.y * 64u + local.x;
+  uint texel = prSNDFListedTexel();
   uint sums = prSumAddress(texel);
   vec4 s2 = prSumAt(sums, 2u);
   if (s2.a <= 0.0)
@@ -34,14 +33,13 @@ void main()
   vec3 specular = vec3(0.0);
   uint words = prBinWordAddress(texel);
   uint masks = prSNDFMaskWord(prBins);
-  int maskWords = max(1, prBins * prBins / 32);
+  int maskWords = prSNDFMaskWords(prBins);
   for (int m = 0; m < maskWords; ++m)
   {
     uint mask = prBinWordAt(words, masks + uint(m));
     while (mask != 0u)
     {
-      int bit = findLSB(mask);
-      mask &= mask - 1u;
+      int bit = prSNDFTakeBit(mask);
       int bin = 32 * m + bit;
       uint base = prSNDFWordsPerBin * uint(bin);
       vec3 d;

@@ -23,22 +23,20 @@ uniform int prBins;
 
 void main()
 {
-  uvec2 local = gl_GlobalInvocationID.xy;
-  uint texel = uint(prPageTable[gl_WorkGroupID.z]) * prTileTexels + local.y * 64u + local.x;
+  uint texel = prSNDFListedTexel();
   if (prSumAt(prSumAddress(texel), 2u).a <= 0.0)
   {
     return; // no particle sample: no occupied bin
   }
   uint words = prBinWordAddress(texel);
   uint masks = prSNDFMaskWord(prBins);
-  int maskWords = max(1, prBins * prBins / 32);
+  int maskWords = prSNDFMaskWords(prBins);
   for (int m = 0; m < maskWords; ++m)
   {
     uint mask = prBinWordAt(words, masks + uint(m));
     while (mask != 0u)
     {
-      int bit = findLSB(mask);
-      mask &= mask - 1u;
+      int bit = prSNDFTakeBit(mask);
       uint base = prSNDFWordsPerBin * uint(32 * m + bit);
       uint w0 = prBinWordAt(words, base);
       uint w1 = prBinWordAt(words, base + 1u);

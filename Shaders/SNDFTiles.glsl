@@ -49,6 +49,25 @@ bool prSNDFTileInvocation(ivec2 size, out ivec2 p, out uint texel)
   return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, size));
 }
 
+// Slot-list dispatches (rebake, recolour): (4, 4, n) groups of 16 x 16, group z working on the
+// tile in slot prPageTable[z] (the page table then holds the list of slots); this invocation's
+// texel in the pool.
+uint prSNDFListedTexel()
+{
+  uvec2 local = gl_GlobalInvocationID.xy;
+  return uint(prPageTable[gl_WorkGroupID.z]) * prTileTexels + local.y * uint(prTileSize) + local.x;
+}
+
+// The lowest set bit of a word of occupied bins (SNDFBins.glsl), cleared from it: the compute
+// shaders visit a texel's occupied bins with it (findLSB: GLSL 4.00, not in the lighting
+// table's fragment shader, which includes SNDFBins.glsl).
+int prSNDFTakeBit(inout uint mask)
+{
+  int bit = findLSB(mask);
+  mask &= mask - 1u;
+  return bit;
+}
+
 // The pool texel of position p (p + prTexelOffset >= 0); false where its tile is not mapped.
 bool prSNDFFindTexel(ivec2 p, out uint texel)
 {

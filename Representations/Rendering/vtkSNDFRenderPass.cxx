@@ -340,7 +340,7 @@ public:
   // and the cached tiles' bin colours were multiplied by M, -1 where the samples must be taken
   // again. `coloured`: an object-space ambient light in the chain that
   // carries the particles' colours (the voxel-cone pass), drawn into the colour target.
-  int Recolour(const std::vector<vtkActor*>& particles, bool coloured, double matrix[3][3])
+  int Recolour(const std::vector<vtkActor*>& particles, bool coloured)
   {
     if (particles.size() != this->Colours.size())
     {
@@ -421,24 +421,19 @@ public:
         pairs.push_back(entry);
       }
     }
-    for (int row = 0; row < 3; ++row)
+    if (!changed)
     {
-      for (int column = 0; column < 3; ++column)
-      {
-        matrix[row][column] = row == column ? 1.0 : 0.0;
-      }
+      return 0;
     }
-    if (changed && !FitColourMatrix(pairs, matrix, 0.05 / 255.0))
+    double matrix[3][3];
+    if (!FitColourMatrix(pairs, matrix, 0.05 / 255.0))
     {
       return -1;
     }
-    if (changed)
-    {
-      this->Cache->Recolour(matrix);
-      this->ResolveKey.clear();
-      this->KeepColours(particles);
-    }
-    return changed ? 1 : 0;
+    this->Cache->Recolour(matrix);
+    this->ResolveKey.clear();
+    this->KeepColours(particles);
+    return 1;
   }
 
   // GPU times of the last timed Render() per stage (sample, accumulate, shade)
@@ -1182,10 +1177,13 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   state.push_back(ren->GetTexturedBackground());
   state.push_back(ren->GetBackgroundAlpha());
   state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(context)));
-  // the passes inside this one (an AO pass put into the chain or changed samples anew)
+  // the passes inside this one (an AO pass put into the chain or changed samples anew), and
+  // whether one adds an ambient light that carries the particles' colours (vtkInternals::Recolour)
+  bool colouredLight = false;
   vtkRenderPass* inner = this->DelegatePass;
   for (int depth = 0; inner && depth < 16; ++depth)
   {
+    colouredLight = colouredLight || vtkVoxelConeAOPass::SafeDownCast(inner) != nullptr;
     state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(inner)));
     state.push_back(static_cast<double>(inner->GetMTime()));
     auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
@@ -1214,15 +1212,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // the old ones, else taken again
   if (sameFrame && colourKey != internals.ColourKey)
   {
-    bool coloured = false; // an ambient light that carries the particles' colours
-    for (vtkRenderPass* inner = this->DelegatePass; inner;)
-    {
-      coloured = coloured || vtkVoxelConeAOPass::SafeDownCast(inner) != nullptr;
-      auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
-      inner = wrapping ? wrapping->GetDelegatePass() : nullptr;
-    }
-    double matrix[3][3];
-    const int recoloured = internals.Recolour(particles, coloured, matrix);
+    const int recoloured = internals.Recolour(particles, colouredLight);
     sameFrame = recoloured >= 0;
     if (sameFrame)
     {
@@ -1698,7 +1688,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       this->PreRender(&sampleState);
       this->DelegatePass->Render(&sampleState);
       this->PostRender(&sampleState);
-      // back to what draw buffer 0 has
+      // back to what draw buffer 0 has (GL's state: VTK's state cache can be out of step with it)
       if (glIsEnabledi(GL_BLEND, 0))
       {
         for (unsigned int a = 1; a < NumberOfAttachments; ++a)

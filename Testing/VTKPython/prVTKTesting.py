@@ -199,6 +199,19 @@ def fcc_crystal(cells, fraction=0.3, seed=1):
     return xyz, rgb
 
 
+def append_csv(path, header, row):
+    """Append `row` (floats as %.6g) to the CSV at `path`, writing `header` (its column names,
+    one line) first when the file is new; prints the header and the row."""
+    import os
+    header = header.rstrip("\n") + "\n"
+    new = not os.path.exists(path)
+    with open(path, "a") as f:
+        if new:
+            f.write(header)
+        f.write(",".join("%.6g" % v if isinstance(v, float) else str(v) for v in row) + "\n")
+    print(header + ",".join(str(v) for v in row))
+
+
 def pan_camera(camera, pixels_right, pixels_up, height):
     """Move position and focal point of a parallel-projection camera together in the view
     plane by whole (or fractional) pixels of a view `height` pixels high."""
