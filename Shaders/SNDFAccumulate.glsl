@@ -38,7 +38,10 @@
 // kept per bin because colour and normal are correlated where about one
 // particle covers a pixel (two species split it along their silhouettes).
 // After the bins, prBins^2 / 32 words (at least one) mark the occupied bins,
-// so that re-lighting visits those only.
+// so that re-lighting visits those only. With prMoments, two words per bin
+// follow: the running means of AO * t^k (k = 0..3) of its samples, t the
+// particle's colour coordinate that the sample pass writes into prDiffuse.a
+// (SNDFBins.glsl; a new colour map re-shades from them).
 //=========================================================================
 layout(local_size_x = 16, local_size_y = 16) in;
 // (dispatch: (4, 4, tiles))
@@ -54,6 +57,7 @@ uniform sampler2D prTable;
 uniform ivec2 prSize;
 uniform int prBins;
 uniform float prTarget;
+uniform int prMoments;
 
 
 vec4 prFinite(vec4 v)
@@ -102,6 +106,19 @@ void main()
     prSetBinWordAt(bins, base, w0);
     prSetBinWordAt(bins, base + 1u, w1);
     prSetBinWordAt(bins, base + 2u, w2);
+    if (prMoments != 0)
+    {
+      float t = texelFetch(prDiffuse, p, 0).a;
+      t = isnan(t) ? 0.0 : clamp(t, 0.0, 1.0);
+      uint at = prSNDFMomentWord(prBins) + 2u * bin;
+      vec4 moments = prSNDFUnpackMoments(prBinWordAt(bins, at), prBinWordAt(bins, at + 1u));
+      moments += (ao * vec4(1.0, t, t * t, t * t * t) - moments) / float(count);
+      uint m0;
+      uint m1;
+      prSNDFPackMoments(moments, m0, m1);
+      prSetBinWordAt(bins, at, m0);
+      prSetBinWordAt(bins, at + 1u, m1);
+    }
     uint mask = prSNDFMaskWord(prBins) + (bin >> 5u);
     prSetBinWordAt(bins, mask, prBinWordAt(bins, mask) | (1u << (bin & 31u)));
     // the texel's shaded sums follow the bin's new contribution (SNDFBins.glsl), computed from

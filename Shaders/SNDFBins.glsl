@@ -14,6 +14,13 @@
 // After the bins, prSNDFMaskWord(bins) is the first of the words that mark the
 // occupied bins.
 //
+// Colour coordinates (vtkSNDFRenderPass, "Colour"). Where the pass keeps them
+// (prMoments), the words of the occupancy bits are followed by two words per
+// bin: the running means over its samples of AO * t^k, k = 0..3, where t in
+// [0, 1] is the sampled particle's scalar within its array's range (16-bit
+// fixed point: AO and AO t in word 0, AO t^2 and AO t^3 in word 1). A new
+// colour map re-shades from them (SNDFRecolour.glsl, prSNDFQuadrature).
+//
 // Shading a bin (prSNDFBinShade). The lighting table (vtkSNDFRenderPass,
 // SNDFLightingTable.glsl) has seven rows per bin b:
 //   0: D(b)  mean diffuse light sum over bin ∩ disk  (Eq. 13's L~(D_i))
@@ -42,6 +49,25 @@ uint prSNDFMaskWord(int bins)
 int prSNDFMaskWords(int bins)
 {
   return max(1, bins * bins / 32);
+}
+
+// The first word of the colour coordinates' moments (after the occupancy words).
+uint prSNDFMomentWord(int bins)
+{
+  return prSNDFMaskWord(bins) + uint(prSNDFMaskWords(bins));
+}
+
+vec4 prSNDFUnpackMoments(uint m0, uint m1)
+{
+  return vec4(float(m0 & 0xFFFFu), float(m0 >> 16u), float(m1 & 0xFFFFu), float(m1 >> 16u)) *
+    (1.0 / 65535.0);
+}
+
+void prSNDFPackMoments(vec4 moments, out uint m0, out uint m1)
+{
+  uvec4 q = uvec4(clamp(moments, 0.0, 1.0) * 65535.0 + 0.5);
+  m0 = q.x | (q.y << 16u);
+  m1 = q.z | (q.w << 16u);
 }
 
 // The bin square of a projected normal, in bin units: its cell and the position f of the normal.

@@ -30,7 +30,9 @@
 // then the occupancy bits of the record's bins (prMaskVec4s uvec4s), then
 // one uvec4 per bin: its weighted count (float bits) and the running
 // weighted means of its colour and of its bin coordinates, packed as a bin's
-// words are (SNDFBins.glsl). A bin's entry is written when the
+// words are (SNDFBins.glsl); with prMoments a second run of one uvec4 per
+// bin follows, its colour coordinates' moments (SNDFBins.glsl, in .xy)
+// averaged with the same weights. A bin's entry is written when the
 // record first meets it and only read where the occupancy bits say so: the
 // records are never cleared, and phase 1 visits the occupied bins only.
 //
@@ -46,6 +48,7 @@ uniform int prDestSlot;
 uniform int prFactor;
 uniform int prBins;
 uniform float prMaxSamples;
+uniform int prMoments;
 
 //PR::Include SNDFBins
 //PR::Include SNDFTiles
@@ -88,9 +91,12 @@ void main()
   int binCount = prBins * prBins;
   int maskWords = prSNDFMaskWords(prBins);
   uint maskVec4s = uint((maskWords + 3) / 4);
-  uint record = uint(d.y * prTileSize + d.x) * (4u + maskVec4s + uint(binCount));
+  uint runs = prMoments != 0 ? 2u : 1u;
+  uint record = uint(d.y * prTileSize + d.x) * (4u + maskVec4s + runs * uint(binCount));
   uint entries = record + 4u + maskVec4s;
+  uint momentEntries = entries + uint(binCount);
   uint binWords = prSNDFMaskWord(prBins);
+  uint momentWords = prSNDFMomentWord(prBins);
 
   if (prPhase == 0)
   {
@@ -137,6 +143,12 @@ void main()
           float share = weight * float(w0 & 0xFFFFu);
           vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, base + 1u));
           vec2 u = prSNDFUnpackOffset(prBinWordAt(bins, base + 2u));
+          vec4 moments = vec4(0.0);
+          if (prMoments != 0)
+          {
+            uint at = momentWords + 2u * bin;
+            moments = prSNDFUnpackMoments(prBinWordAt(bins, at), prBinWordAt(bins, at + 1u));
+          }
           if ((masks[m] & (1u << uint(bit))) != 0u)
           {
             float w;
@@ -146,10 +158,22 @@ void main()
             float t = share / max(w + share, 1.0e-30);
             mean = mix(c0, mean, t);
             u = mix(u0, u, t);
+            if (prMoments != 0)
+            {
+              uvec4 e = prPartial[momentEntries + bin];
+              moments = mix(prSNDFUnpackMoments(e.x, e.y), moments, t);
+            }
             share += w;
           }
           masks[m] |= 1u << uint(bit);
           prPartial[entries + bin] = prPackEntry(share, mean, u);
+          if (prMoments != 0)
+          {
+            uint m0;
+            uint m1;
+            prSNDFPackMoments(moments, m0, m1);
+            prPartial[momentEntries + bin] = uvec4(m0, m1, 0u, 0u);
+          }
         }
       }
     }
@@ -203,6 +227,12 @@ void main()
         prSetBinWordAt(destBins, base, w0);
         prSetBinWordAt(destBins, base + 1u, w1);
         prSetBinWordAt(destBins, base + 2u, prSNDFPackOffset(u));
+        if (prMoments != 0)
+        {
+          uvec4 e = prPartial[momentEntries + bin];
+          prSetBinWordAt(destBins, momentWords + 2u * bin, e.x);
+          prSetBinWordAt(destBins, momentWords + 2u * bin + 1u, e.y);
+        }
         occupied |= 1u << uint(bit);
       }
     }

@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
@@ -32,6 +33,7 @@
 #include "vtkParticleSphereMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkSMPTools.h"
 #include "vtkSNDFTileCache.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
@@ -46,6 +48,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -132,6 +135,56 @@ vtkUnsignedCharArray* MappedColours(vtkActor* actor)
 {
   vtkMapper* mapper = actor->GetMapper();
   return UsesScalarColours(mapper) ? mapper->MapScalars(1.0) : nullptr;
+}
+
+// Where a particle actor's colours come from a lookup table of one value per particle (as
+// vtkMapper::MapScalars maps them): the point array, the table and the component it maps (-1:
+// the magnitude). False for direct colours (unsigned char scalars in the default colour mode, the
+// direct mode), cell scalars, indexed (categorical) tables and the RGB vector mode.
+bool ColourCoordinateSource(
+  vtkActor* actor, vtkDataArray*& array, vtkScalarsToColors*& table, int& component)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  vtkDataSet* input = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!input || !UsesScalarColours(mapper))
+  {
+    return false;
+  }
+  table = mapper->GetLookupTable();
+  int cellFlag = 0;
+  array = vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  if (!table || table->GetIndexedLookup() || !array || cellFlag != 0 ||
+    array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return false;
+  }
+  const int mode = mapper->GetColorMode();
+  if (mode == VTK_COLOR_MODE_DIRECT_SCALARS ||
+    (mode == VTK_COLOR_MODE_DEFAULT && vtkUnsignedCharArray::SafeDownCast(array)))
+  {
+    return false;
+  }
+  const int n = array->GetNumberOfComponents();
+  component = 0;
+  if (n > 1)
+  {
+    if (table->GetVectorMode() == vtkScalarsToColors::COMPONENT)
+    {
+      component = std::min(std::max(table->GetVectorComponent(), 0), n - 1);
+    }
+    else if (table->GetVectorMode() == vtkScalarsToColors::MAGNITUDE &&
+      table->GetVectorComponent() == 0 &&
+      (table->GetVectorSize() == -1 || table->GetVectorSize() >= n))
+    {
+      component = -1;
+    }
+    else
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 // The 3 x 3 matrix M with M o = n for each pair (o, n) of `pairs` (old and new colour, three
@@ -309,6 +362,138 @@ public:
   };
   std::vector<SampledColours> Colours;
   std::vector<double> ColourKey;
+  // Colour coordinates (class description, "Colour"), for the one particle actor coloured through
+  // a lookup table: each particle's value (as the table sees it) in [0, 1] over the array's finite
+  // range, in a float texture buffer the sample pass reads by particle id into prDiffuse.a
+  // (MomentsInShader: the shader variant with it); what it was computed from; and the stored
+  // colour as a function of it (RampSize RGBA entries over [0, 1]) for the map the samples hold.
+  static constexpr int RampSize = 4096;
+  struct ColourCoordinates
+  {
+    bool Valid = false;
+    vtkWeakPointer<vtkDataArray> Array;
+    vtkMTimeType Time = 0;
+    int Component = 0;
+    double Range[2] = { 0.0, 0.0 };
+    vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+    vtkSmartPointer<vtkTextureObject> Texture;
+    std::vector<float> Ramp;
+  };
+  ColourCoordinates Coordinates;
+  vtkSmartPointer<vtkTextureObject> Ramps;
+  bool MomentsInShader = false;
+
+  // The colour coordinates of `actor` up to date (computed again only when its array, the array's
+  // modification time or the component changed); false where there are none: no lookup table
+  // source, non-finite values (NaN or Inf: the table's NaN and out-of-range colours are not a
+  // function of the clamped value), more particles than a texture buffer holds.
+  bool UpdateCoordinates(vtkActor* actor, vtkOpenGLRenderWindow* context, vtkObject* owner)
+  {
+    ColourCoordinates& c = this->Coordinates;
+    vtkDataArray* array = nullptr;
+    vtkScalarsToColors* table = nullptr;
+    int component = 0;
+    if (!ColourCoordinateSource(actor, array, table, component))
+    {
+      c.Valid = false;
+      return false;
+    }
+    if (c.Array == array && c.Time == array->GetMTime() && c.Component == component)
+    {
+      return c.Valid;
+    }
+    c.Valid = false;
+    c.Array = array;
+    c.Time = array->GetMTime();
+    c.Component = component;
+    const vtkIdType n = array->GetNumberOfTuples();
+    GLint limit = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
+    if (n < 1 || n > static_cast<vtkIdType>(limit))
+    {
+      if (n > 0 && this->FirstWarning("coordinates " + std::to_string(n)))
+      {
+        vtkWarningWithObjectMacro(owner, << n << " particles exceed the context's texture buffer "
+                                         << "size (" << limit << "): a new colour map samples "
+                                         << "again unless its colours are linear in the old ones.");
+      }
+      return false;
+    }
+    const int comps = array->GetNumberOfComponents();
+    std::vector<double> values(static_cast<std::size_t>(n));
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      std::vector<double> tuple(static_cast<std::size_t>(comps));
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (component >= 0)
+        {
+          values[i] = array->GetComponent(i, component);
+          continue;
+        }
+        array->GetTuple(i, tuple.data());
+        double sum = 0.0;
+        for (double v : tuple)
+        {
+          sum += v * v;
+        }
+        values[i] = std::sqrt(sum);
+      }
+    });
+    double lo = VTK_DOUBLE_MAX;
+    double hi = -VTK_DOUBLE_MAX;
+    for (double v : values)
+    {
+      if (!std::isfinite(v))
+      {
+        return false;
+      }
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    c.Range[0] = lo;
+    c.Range[1] = hi;
+    std::vector<float> t(values.size());
+    const double scale = hi > lo ? 1.0 / (hi - lo) : 0.0;
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        t[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - lo) * scale)));
+      }
+    });
+    if (!c.Buffer)
+    {
+      c.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    }
+    if (c.Texture)
+    {
+      c.Texture->ReleaseGraphicsResources(context);
+    }
+    c.Texture = vtkSmartPointer<vtkTextureObject>::New();
+    c.Texture->SetContext(context);
+    c.Valid = c.Buffer->Upload(t, vtkOpenGLBufferObject::TextureBuffer) &&
+      c.Texture->CreateTextureBuffer(static_cast<unsigned int>(n), 1, VTK_FLOAT, c.Buffer);
+    return c.Valid;
+  }
+
+  // The stored colour (`scale` times the table's colour) at RampSize values of the colour
+  // coordinate, through the actor's lookup table as it maps now; alpha the table's.
+  std::vector<float> MakeRamp(vtkActor* actor, double scale) const
+  {
+    const ColourCoordinates& c = this->Coordinates;
+    vtkScalarsToColors* table = actor->GetMapper()->GetLookupTable();
+    std::vector<float> ramp(4 * RampSize);
+    for (int i = 0; i < RampSize; ++i)
+    {
+      const double v = c.Range[0] + (c.Range[1] - c.Range[0]) * i / (RampSize - 1.0);
+      const unsigned char* rgba = table->MapValue(v);
+      for (int k = 0; k < 3; ++k)
+      {
+        ramp[4 * i + k] = static_cast<float>(scale * rgba[k] / 255.0);
+      }
+      ramp[4 * i + 3] = static_cast<float>(rgba[3] / 255.0);
+    }
+    return ramp;
+  }
 
   // What the diffuse colour of an actor's samples is (see SampledColours), in modes 0 and 1.
   SampledColours StoredColours(vtkActor* actor) const
@@ -325,7 +510,8 @@ public:
     return stored;
   }
 
-  // The colours the particle actors' samples are taken with from now on (a restart).
+  // The colours the particle actors' samples are taken with from now on (a restart, a recolour);
+  // the ramp of the colour coordinates with them.
   void KeepColours(const std::vector<vtkActor*>& particles)
   {
     this->Colours.clear();
@@ -333,14 +519,103 @@ public:
     {
       this->Colours.push_back(this->StoredColours(actor));
     }
+    this->Coordinates.Ramp.clear();
+    if (particles.size() == 1 && this->Coordinates.Valid)
+    {
+      this->Coordinates.Ramp = this->MakeRamp(particles[0], this->Colours[0].Scale);
+    }
   }
 
-  // A new colour map (class description, "Colour"): 0 where the mapped colours did not change, 1
-  // where their new values are a linear function of the old ones, c' = M c for every particle,
-  // and the cached tiles' bin colours were multiplied by M, -1 where the samples must be taken
-  // again. `coloured`: an object-space ambient light in the chain that
-  // carries the particles' colours (the voxel-cone pass), drawn into the colour target.
+  // A new colour map (class description, "Colour"): 0 where the mapped colours did not change,
+  // 1 where the cached bins were recoloured (RecolourLinear, else RecolourMap), -1 where the
+  // samples must be taken again.
   int Recolour(const std::vector<vtkActor*>& particles, bool coloured)
+  {
+    const int linear = this->RecolourLinear(particles, coloured);
+    return linear >= 0 ? linear : this->RecolourMap(particles, coloured);
+  }
+
+  // Any new colour map of the one particle actor's colour coordinate where the cache keeps its
+  // moments: the old and the new ramp to SNDFRecolour.glsl (mode 1). -1 where the coordinate
+  // itself changed (another array, component or values), the opacities changed, the ambient
+  // term or a voxel-cone light carries the colours (`coloured`), or there are no moments.
+  int RecolourMap(const std::vector<vtkActor*>& particles, bool coloured)
+  {
+    ColourCoordinates& c = this->Coordinates;
+    if (particles.size() != 1 || !this->Cache->GetMoments() || !this->MomentsInShader ||
+      !c.Valid || c.Ramp.empty() || coloured || particles[0]->GetProperty()->GetAmbient() != 0.0)
+    {
+      return -1;
+    }
+    vtkDataArray* array = nullptr;
+    vtkScalarsToColors* table = nullptr;
+    int component = 0;
+    if (!ColourCoordinateSource(particles[0], array, table, component) || array != c.Array ||
+      array->GetMTime() != c.Time || component != c.Component)
+    {
+      return -1;
+    }
+    const SampledColours now = this->StoredColours(particles[0]); // (maps: the table's range)
+    if (!now.Colours)
+    {
+      return -1;
+    }
+    std::vector<float> ramps = c.Ramp;
+    const std::vector<float> ramp = this->MakeRamp(particles[0], now.Scale);
+    for (int i = 0; i < RampSize; ++i)
+    {
+      if (ramp[4 * i + 3] != c.Ramp[4 * i + 3])
+      {
+        return -1; // the opacities changed
+      }
+    }
+    ramps.insert(ramps.end(), ramp.begin(), ramp.end());
+    // the old map's quadrature error of a bin carried into the new map through the least-squares
+    // linear map from the old ramp's colours to the new one's (both centred; 0 where that has
+    // entries beyond +-16)
+    double centre[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+    for (int i = 0; i < RampSize; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centre[k] += c.Ramp[4 * i + k] / RampSize;
+        centre[3 + k] += ramp[4 * i + k] / RampSize;
+      }
+    }
+    std::vector<std::array<double, 6>> pairs(RampSize);
+    for (int i = 0; i < RampSize; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        pairs[i][k] = c.Ramp[4 * i + k] - centre[k];
+        pairs[i][3 + k] = ramp[4 * i + k] - centre[3 + k];
+      }
+    }
+    double residual[3][3];
+    if (!FitColourMatrix(pairs, residual, std::numeric_limits<double>::infinity()))
+    {
+      std::fill(&residual[0][0], &residual[0][0] + 9, 0.0);
+    }
+    if (!this->Ramps)
+    {
+      this->Ramps = vtkSmartPointer<vtkTextureObject>::New();
+    }
+    this->Ramps->SetContext(this->Context);
+    if (!this->Ramps->Create2DFromRaw(RampSize, 2, 4, VTK_FLOAT, ramps.data()) ||
+      this->Cache->RecolourMap(this->Ramps, RampSize, residual) <= 0)
+    {
+      return -1;
+    }
+    this->ResolveKey.clear();
+    this->KeepColours(particles);
+    return 1;
+  }
+
+  // A new colour map whose new colours are a linear function of the old ones, c' = M c for every
+  // particle: the cached tiles' bin colours multiplied by M (1); 0 where the mapped colours did
+  // not change, -1 where M does not exist. `coloured`: an object-space ambient light in the chain
+  // that carries the particles' colours (the voxel-cone pass), drawn into the colour target.
+  int RecolourLinear(const std::vector<vtkActor*>& particles, bool coloured)
   {
     if (particles.size() != this->Colours.size())
     {
@@ -844,12 +1119,20 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
       "      prSampleAmbient = prAmbientLight;\n"
       "    }\n"
     : "";
-  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec", "uniform int prRawMaterial;");
+  // with the colour coordinates' moments kept (class description, "Colour") the particle's
+  // coordinate goes into the diffuse target's alpha (blending is off there during the sample pass)
+  const bool coordinates = this->Internals->MomentsInShader;
+  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec",
+    coordinates ? "uniform int prRawMaterial;\nuniform samplerBuffer prColourCoordinates;"
+                : "uniform int prRawMaterial;");
+  const std::string coordinate = coordinates
+    ? "texelFetch(prColourCoordinates, particleIdVSOutput * particleIdStride).r"
+    : "1.0";
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
     "vec3 prSampleDiffuse = diffuseColor;\n"
     "    vec3 prSampleAmbient = prAmbientOcclusion * ambientColor + prAmbientLight;\n" + raw +
       "    gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), 1.0);\n"
-      "    gl_FragData[2] = vec4(prSampleDiffuse, 1.0);\n"
+      "    gl_FragData[2] = vec4(prSampleDiffuse, " + coordinate + ");\n"
       "    gl_FragData[0] = vec4(prSampleAmbient, 1.0);");
   return true;
 }
@@ -861,6 +1144,14 @@ bool vtkSNDFRenderPass::SetShaderParameters(
   if (IsSampledParticleMapper(mapper) && program->IsUniformUsed("prRawMaterial"))
   {
     program->SetUniformi("prRawMaterial", this->Internals->RawMaterial);
+  }
+  vtkTextureObject* coordinates = this->Internals->Coordinates.Texture;
+  if (IsSampledParticleMapper(mapper) && program->IsUniformUsed("prColourCoordinates") &&
+    coordinates)
+  {
+    // (active until the sample pass ends)
+    coordinates->Activate();
+    program->SetUniformi("prColourCoordinates", coordinates->GetTextureUnit());
   }
   return true;
 }
@@ -1102,12 +1393,30 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up
   // to eight views' worth of tiles where the limit allows (a zoom out by one level over a view
   // sampled whole needs five: four of the finer level, one of the coarser)
+  // With one particle actor coloured through a lookup table the bins keep the moments of its
+  // colour coordinate (KeepColourCoordinates) where the memory holds them with the bins asked for.
   const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
+  vtkDataArray* coordinateArray = nullptr;
+  vtkScalarsToColors* coordinateTable = nullptr;
+  int coordinateComponent = 0;
+  bool moments = this->KeepColourCoordinates && particles.size() == 1 &&
+    ColourCoordinateSource(particles[0], coordinateArray, coordinateTable, coordinateComponent);
   auto slotsFor = [&](int b) {
     return static_cast<int>(std::min({ 8.0 * viewTiles,
-      std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b)),
-      static_cast<double>(internals.Cache->GetMaximumSlots(context, b)) }));
+      std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b, moments)),
+      static_cast<double>(internals.Cache->GetMaximumSlots(context, b, moments)) }));
   };
+  if (moments && slotsFor(this->BinsPerAxis) < viewTiles)
+  {
+    moments = false;
+    if (internals.FirstWarning("moments " + std::to_string(width) + "x" + std::to_string(height)))
+    {
+      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) does not hold the "
+                      << "colour coordinates' moments for this " << width << " x " << height
+                      << " view: a new colour map samples again unless its colours are linear "
+                         "in the old ones (KeepColourCoordinates).");
+    }
+  }
   int bins = this->BinsPerAxis;
   while (bins >= 4 && slotsFor(bins) < viewTiles)
   {
@@ -1171,6 +1480,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   state.push_back(y0);
   state.push_back(bins);
   state.push_back(slots);
+  state.push_back(moments);
   state.insert(state.end(), ren->GetBackground(), ren->GetBackground() + 3);
   state.insert(state.end(), ren->GetBackground2(), ren->GetBackground2() + 3);
   state.push_back(ren->GetGradientBackground());
@@ -1199,6 +1509,14 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     }
     internals.Context = context;
   }
+  // the colour coordinates (computed again when their array changed) and the shader variant
+  // that writes them
+  const bool coordinates = moments && internals.UpdateCoordinates(particles[0], context, this);
+  if (coordinates != internals.MomentsInShader)
+  {
+    internals.MomentsInShader = coordinates;
+    internals.ShaderTime.Modified();
+  }
   const bool timing = this->CollectTimings;
   internals.Timer.StartFrame(timing);
 
@@ -1207,6 +1525,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   vtkInternals::Between between;
   bool sameFrame = internals.FrameValid && state == internals.FixedState &&
     internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
+    internals.Cache->GetMoments() == moments &&
     internals.PlaceView(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
   // a new colour map: the samples are recoloured where the new colours are a linear function of
   // the old ones, else taken again
@@ -1222,11 +1541,13 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
   if (!sameFrame)
   {
-    if (internals.Cache->GetNumberOfSlots() != slots || internals.Cache->GetBins() != bins)
+    if (internals.Cache->GetNumberOfSlots() != slots || internals.Cache->GetBins() != bins ||
+      internals.Cache->GetMoments() != moments)
     {
-      if (!internals.Cache->Allocate(context, bins, slots))
+      if (!internals.Cache->Allocate(context, bins, slots, moments))
       {
-        vtkErrorMacro(<< "Could not allocate " << slots * vtkSNDFTileCache::GetTileBytes(bins) / 1048576.0
+        vtkErrorMacro(<< "Could not allocate "
+                      << slots * vtkSNDFTileCache::GetTileBytes(bins, moments) / 1048576.0
                       << " MB for the S-MIP cache: the view is rendered as without S-NDFs.");
         internals.ReleaseTextures(context);
         renderPlain();
@@ -1688,6 +2009,10 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       this->PreRender(&sampleState);
       this->DelegatePass->Render(&sampleState);
       this->PostRender(&sampleState);
+      if (internals.Coordinates.Texture)
+      {
+        internals.Coordinates.Texture->Deactivate(); // (SetShaderParameters activated it)
+      }
       // back to what draw buffer 0 has (GL's state: VTK's state cache can be out of step with it)
       if (glIsEnabledi(GL_BLEND, 0))
       {
@@ -1720,6 +2045,8 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
     accumulate->SetUniform2i("prSize", texelsX, texelsY);
     accumulate->SetUniformi("prBins", bins);
     accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
+    accumulate->SetUniformi(
+      "prMoments", internals.MomentsInShader && internals.Cache->GetMoments() ? 1 : 0);
     internals.Cache->BindView(accumulate);
     for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
     {
@@ -1865,6 +2192,21 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
     internals.Totals, vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
   internals.CheckedSamples = 0;
   internals.Cache->ReleaseGraphicsResources(w);
+  // the colour coordinates are uploaded again when next needed
+  vtkInternals::ColourCoordinates& coordinates = internals.Coordinates;
+  if (coordinates.Texture)
+  {
+    coordinates.Texture->ReleaseGraphicsResources(w);
+  }
+  if (coordinates.Buffer)
+  {
+    coordinates.Buffer->ReleaseGraphicsResources();
+  }
+  coordinates = vtkInternals::ColourCoordinates();
+  if (internals.Ramps)
+  {
+    internals.Ramps->ReleaseGraphicsResources(w);
+  }
   internals.FrameValid = false;
   internals.Placed = false;
   internals.FixedState.clear();
@@ -1895,4 +2237,5 @@ void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamplePasses: " << this->NumberOfSamplePasses << "\n";
   os << indent << "NumberOfRestarts: " << this->NumberOfRestarts << "\n";
   os << indent << "NumberOfRecolours: " << this->NumberOfRecolours << "\n";
+  os << indent << "KeepColourCoordinates: " << this->KeepColourCoordinates << "\n";
 }

@@ -96,16 +96,38 @@
  *   16-bit means: < 0.4/255). That holds for any new colours of up to three linearly
  *   independent colours -- colour by type with up to three types (LAMMPS films, binary and
  *   ternary alloys, water), a new range of such a map, solid colours of up to three actors, a
- *   diffuse coefficient -- measured: equal to sampling under the new map within 1/255. Other
- *   changes sample again: four or more distinct colours that do not map linearly (a
- *   continuous map, colour by speed: re-mapping a bin's mean colour would need each bin's
- *   distribution of data values, not kept: the paper's "transfer function" is a colour over
- *   the normals), a scalar actor with an ambient coefficient (the ambient term is drawn with
- *   the scalar colours into the colour target, which keeps no bins), a voxel-cone ambient light
- *   (it carries the particles' colours), new opacities, new scalars or new geometry.
+ *   diffuse coefficient -- measured: equal to sampling under the new map within 1/255.
+ *   Any other new map of the scalar (another preset, a new range, colour by speed, four or
+ *   more types) re-shades from the bins' moments of a colour coordinate (KeepColourCoordinates,
+ *   on by default), where one particle actor is coloured through a lookup table that is not
+ *   indexed: t in [0, 1] is each particle's value as the table sees it (the component or the
+ *   magnitude) over the array's finite range, read by particle id from a texture buffer into
+ *   the sample; each bin keeps the running means of AO t^k, k = 0..3 (16 bits each, two more
+ *   words per bin). A new map c' of the value moves a bin's mean colour m to
+ *   A Q(c') + R (m - A Q(c)): Q the two-node Gauss quadrature of the map under the bin's
+ *   distribution of t (from the moments: exact where a bin's samples show at most two distinct
+ *   values, a pixel split between two atoms; equal-weight nodes at mu -/+ sigma where the
+ *   variance is below 1e-3, one node below 2.5e-5), A the bin's mean AO, R the least-squares
+ *   linear map from the old map's colours to the new one's over t, which carries the old map's
+ *   known quadrature error m - A Q(c) into the new one (identity for a map that is a linear
+ *   function of the old one, 0 for an unrelated one). Both maps are tabulated at 4096 values of
+ *   t (Shaders/SNDFRecolour.glsl). Measured on the test crystal (about 2 pixels per atom)
+ *   against sampling under the new map: four types, or a speed drawn at random per atom to
+ *   another diverging map, mean 0.02-0.03, max 1 /255; to a five-point rainbow mean 0.04, max 7;
+ *   at about one pixel per atom up to 17/255 in 0.15 % of the pixels (bins of three or more
+ *   atoms, where two nodes do not suffice); after a zoom out by 2 (bins and moments averaged
+ *   from the finer level, Shaders/SNDFDownsample.glsl) mean 0.1, p99 3, max 28. Still sampling again:
+ *   NaN or Inf values (the table's NaN and out-of-range colours are not functions of t), more
+ *   particles than a texture buffer holds, several particle actors with non-linear changes, a
+ *   scalar actor with an ambient coefficient (the ambient term is drawn with the scalar
+ *   colours into the colour target, which keeps no bins), a voxel-cone ambient light (it
+ *   carries the particles' colours), new opacities, another array or component, new scalars or
+ *   new geometry.
  * - Memory. An S-NDF texel takes 12 BinsPerAxis^2 + 4 max(1, BinsPerAxis^2 / 32) + 64 bytes (a
  *   16-bit count, three 16-bit mean colour channels and two 16-bit mean bin coordinates per
- *   bin, the occupancy bits, four float sums; 8 x 8 bins: 840 bytes, 3.3 MB per 64^2 tile). The
+ *   bin, the occupancy bits, four float sums; 8 x 8 bins: 840 bytes, 3.3 MB per 64^2 tile), and
+ *   8 BinsPerAxis^2 bytes more with the colour coordinates' moments (8 x 8 bins: 1352 bytes,
+ *   5.3 MB per tile; dropped with a warning where MaximumMemory does not hold them). The
  *   S-MIP cache (below) takes MaximumMemory MB (MiB; default 1536), at most eight views' worth
  *   of tiles; a view needs up to (ceil(W / 64) + 1) (ceil(H / 64) + 1) tiles (273 at 1280 x 720:
  *   896 MB with 8 x 8 bins). Where MaximumMemory
@@ -239,6 +261,21 @@ public:
   vtkSetMacro(ZoomBetweenLevels, bool);
   vtkGetMacro(ZoomBetweenLevels, bool);
   vtkBooleanMacro(ZoomBetweenLevels, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With one particle actor coloured through a lookup table (colour by speed, by type, ...),
+   * keep each bin's moments of the particles' scalar (class description, "Colour"), so that
+   * any new colour map of that scalar -- another preset, a new range, continuous or not --
+   * re-shades without sampling. On by default; costs two 32-bit words per bin (8 x 8 bins:
+   * 512 more bytes per texel, 1352 instead of 840; the accumulation took no measurable longer on
+   * llvmpipe, Benchmarks/results/sndf_recolour.csv).
+   * Off: only colour maps whose new colours are linear in the old ones re-shade.
+   */
+  vtkSetMacro(KeepColourCoordinates, bool);
+  vtkGetMacro(KeepColourCoordinates, bool);
+  vtkBooleanMacro(KeepColourCoordinates, bool);
   ///@}
 
   ///@{
@@ -382,6 +419,7 @@ protected:
   int TargetSamples = 256;
   int BinsPerAxis = 8;
   double MaximumMemory = 1536.0;
+  bool KeepColourCoordinates = true;
   int NumberOfSamples = 0;
   int ActiveBinsPerAxis = 0;
   double MemoryBytes = 0.0;

@@ -264,6 +264,40 @@ public:
     return code;
   }
 
+  // prColourMatrix of the recolour program (in use) from a row-major matrix
+  static void SetColourMatrix(vtkParticleComputeProgram* program, const double m[3][3])
+  {
+    // (GLSL's mat3 is column-major)
+    float columns[9];
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int column = 0; column < 3; ++column)
+      {
+        columns[3 * column + row] = static_cast<float>(m[row][column]);
+      }
+    }
+    program->SetUniformMatrix3x3("prColourMatrix", columns);
+  }
+
+  // The recolour dispatch (its mode's uniforms set, the program in use) over `slots`; marks them
+  // for rebaking and counts them.
+  int RecolourSlots(vtkSNDFTileCache* self, const std::vector<int>& slots)
+  {
+    vtkParticleComputeProgram* program = this->Recolour;
+    program->SetUniformi("prBins", self->Bins);
+    this->DispatchOverSlots(program, slots);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    vtkParticleComputeProgram::UseNone();
+    // their shaded sums are formed again before they are shown or averaged
+    for (int slot : slots)
+    {
+      this->Slots[slot].Version = -1;
+    }
+    this->Mapped = false;
+    self->NumberOfRecolouredTiles += static_cast<long long>(slots.size());
+    return static_cast<int>(slots.size());
+  }
+
   // a slot for a new tile: a free one, else the least recently used one the view does not show;
   // -1 when every slot is shown
   int TakeSlot(long long& evictions)
@@ -306,16 +340,17 @@ vtkSNDFTileCache::~vtkSNDFTileCache()
 }
 
 //------------------------------------------------------------------------------
-int vtkSNDFTileCache::GetWordsPerTexel(int bins)
+int vtkSNDFTileCache::GetWordsPerTexel(int bins, bool moments)
 {
-  // (three words per bin, SNDFBins.glsl, then the occupancy bits)
-  return 3 * bins * bins + std::max(1, bins * bins / 32);
+  // (three words per bin, SNDFBins.glsl, then the occupancy bits, then two words of moments per
+  // bin)
+  return (moments ? 5 : 3) * bins * bins + std::max(1, bins * bins / 32);
 }
 
 //------------------------------------------------------------------------------
-double vtkSNDFTileCache::GetTileBytes(int bins)
+double vtkSNDFTileCache::GetTileBytes(int bins, bool moments)
 {
-  return static_cast<double>(TileTexels) * (4.0 * GetWordsPerTexel(bins) + SumBytesPerTexel);
+  return static_cast<double>(TileTexels) * (4.0 * GetWordsPerTexel(bins, moments) + SumBytesPerTexel);
 }
 
 //------------------------------------------------------------------------------
@@ -327,7 +362,7 @@ int vtkSNDFTileCache::GetTilesForView(int width, int height)
 //------------------------------------------------------------------------------
 double vtkSNDFTileCache::GetBytes() const
 {
-  return this->NumberOfSlots * GetTileBytes(this->Bins);
+  return this->NumberOfSlots * GetTileBytes(this->Bins, this->Moments);
 }
 
 //------------------------------------------------------------------------------
@@ -358,11 +393,11 @@ void vtkSNDFTileCache::QueryLimits(vtkOpenGLRenderWindow* context)
 }
 
 //------------------------------------------------------------------------------
-int vtkSNDFTileCache::GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins)
+int vtkSNDFTileCache::GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins, bool moments)
 {
   this->QueryLimits(context);
   const vtkInternals& internals = *this->Internals;
-  const double binTile = static_cast<double>(TileTexels) * 4.0 * GetWordsPerTexel(bins);
+  const double binTile = static_cast<double>(TileTexels) * 4.0 * GetWordsPerTexel(bins, moments);
   const double sumTile = static_cast<double>(TileTexels) * SumBytesPerTexel;
   return static_cast<int>(std::min(MaximumBinBuffers * std::floor(internals.BlockBytes / binTile),
     MaximumSumBuffers * std::floor(internals.BlockBytes / sumTile)));
@@ -388,11 +423,11 @@ std::string vtkSNDFTileCache::GetShaderSource(const std::string& name)
 }
 
 //------------------------------------------------------------------------------
-bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int slots)
+bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int slots, bool moments)
 {
   vtkInternals& internals = *this->Internals;
   this->QueryLimits(context);
-  internals.WordsPerTexel = GetWordsPerTexel(bins);
+  internals.WordsPerTexel = GetWordsPerTexel(bins, moments);
   this->Clear();
   const std::size_t binTile = TileTexels * internals.WordsPerTexel * 4;
   const std::size_t sumTile = TileTexels * static_cast<std::size_t>(SumBytesPerTexel);
@@ -457,6 +492,7 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   internals.Slots.assign(static_cast<std::size_t>(slots), Slot());
   this->NumberOfSlots = slots;
   this->Bins = bins;
+  this->Moments = moments;
   this->NumberOfDownsampledTiles = 0;
   this->NumberOfClearedTiles = 0;
   this->NumberOfEvictedTiles = 0;
@@ -493,28 +529,34 @@ int vtkSNDFTileCache::Recolour(const double m[3][3])
   }
   vtkParticleComputeProgram* program = internals.Recolour;
   program->Use();
-  // (GLSL's mat3 is column-major)
-  float columns[9];
-  for (int row = 0; row < 3; ++row)
+  internals.SetColourMatrix(program, m);
+  program->SetUniformi("prMode", 0);
+  return internals.RecolourSlots(this, slots);
+}
+
+//------------------------------------------------------------------------------
+int vtkSNDFTileCache::RecolourMap(vtkTextureObject* ramps, int size, const double residual[3][3])
+{
+  vtkInternals& internals = *this->Internals;
+  std::vector<int> slots;
+  for (const auto& entry : internals.Table)
   {
-    for (int column = 0; column < 3; ++column)
-    {
-      columns[3 * column + row] = static_cast<float>(m[row][column]);
-    }
+    slots.push_back(entry.second);
   }
-  program->SetUniformMatrix3x3("prColourMatrix", columns);
-  program->SetUniformi("prBins", this->Bins);
-  internals.DispatchOverSlots(program, slots);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  vtkParticleComputeProgram::UseNone();
-  // their shaded sums are formed again before they are shown or averaged
-  for (int slot : slots)
+  if (slots.empty() || !this->Moments || !ramps || size < 2 || !internals.Recolour->IsBuilt())
   {
-    internals.Slots[slot].Version = -1;
+    return 0;
   }
-  internals.Mapped = false;
-  this->NumberOfRecolouredTiles += static_cast<long long>(slots.size());
-  return static_cast<int>(slots.size());
+  vtkParticleComputeProgram* program = internals.Recolour;
+  program->Use();
+  program->SetUniformi("prMode", 1);
+  internals.SetColourMatrix(program, residual);
+  ramps->Activate();
+  program->SetUniformi("prRamps", ramps->GetTextureUnit());
+  program->SetUniformi("prRampSize", size);
+  const int count = internals.RecolourSlots(this, slots);
+  ramps->Deactivate();
+  return count;
 }
 
 //------------------------------------------------------------------------------
@@ -633,7 +675,7 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         // destination (SNDFDownsample.glsl)
         const int maskVec4s = (std::max(1, this->Bins * this->Bins / 32) + 3) / 4;
         const std::size_t partialBytes =
-          TileTexels * (4 + maskVec4s + this->Bins * this->Bins) * 16;
+          TileTexels * (4 + maskVec4s + (this->Moments ? 2 : 1) * this->Bins * this->Bins) * 16;
         if (internals.PartialBytes < partialBytes)
         {
           vtkParticleComputeProgram::AllocateStorage(internals.Partial, partialBytes);
@@ -644,6 +686,7 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
         program->SetUniformi("prDestSlot", slot);
         program->SetUniformi("prFactor", 1 << down);
         program->SetUniformi("prBins", this->Bins);
+        program->SetUniformi("prMoments", this->Moments ? 1 : 0);
         program->SetUniformf("prMaxSamples", MaxDownsampledSamples);
         program->SetUniform2i("prTexelOffset", children.TexelOffset[0], children.TexelOffset[1]);
         program->SetUniformi("prTilesX", children.TilesX);
@@ -826,4 +869,5 @@ void vtkSNDFTileCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfEvictedTiles: " << this->NumberOfEvictedTiles << "\n";
   os << indent << "NumberOfRebakedTiles: " << this->NumberOfRebakedTiles << "\n";
   os << indent << "NumberOfRecolouredTiles: " << this->NumberOfRecolouredTiles << "\n";
+  os << indent << "Moments: " << this->Moments << "\n";
 }

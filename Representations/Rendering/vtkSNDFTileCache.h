@@ -72,10 +72,12 @@ public:
   static constexpr int MaximumLevel = 24;
 
   /**
-   * 32-bit words per texel for the bins (two per bin and the occupancy bits), and bytes per tile.
+   * 32-bit words per texel for the bins (three per bin and the occupancy bits, and two more per
+   * bin with `moments`: the colour coordinates' moments of Shaders/SNDFBins.glsl), and bytes per
+   * tile.
    */
-  static int GetWordsPerTexel(int bins);
-  static double GetTileBytes(int bins);
+  static int GetWordsPerTexel(int bins, bool moments = false);
+  static double GetTileBytes(int bins, bool moments = false);
 
   /**
    * The most tiles a width x height view can touch.
@@ -88,7 +90,7 @@ public:
    * context's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (GetBlockBytes(); at most 2^31 - 1 bytes), up to
    * 64 buffers of bins and 16 of sums. llvmpipe: 128 MB blocks, 4032 tiles of 8 x 8 bins.
    */
-  int GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins);
+  int GetMaximumSlots(vtkOpenGLRenderWindow* context, int bins, bool moments = false);
   double GetBlockBytes() const;
 
   /**
@@ -100,10 +102,11 @@ public:
   std::string GetShaderSource(const std::string& name);
 
   /**
-   * (Re)allocate a pool of `slots` tiles for `bins` x `bins` bins, dropping every tile. False
-   * (with the pool released) when the GPU refuses the memory.
+   * (Re)allocate a pool of `slots` tiles for `bins` x `bins` bins, with the colour coordinates'
+   * moments per bin or without, dropping every tile. False (with the pool released) when the GPU
+   * refuses the memory.
    */
-  bool Allocate(vtkOpenGLRenderWindow* context, int bins, int slots);
+  bool Allocate(vtkOpenGLRenderWindow* context, int bins, int slots, bool moments = false);
 
   /**
    * Drop every tile (a restart: the view direction, the data or the size changed).
@@ -116,6 +119,7 @@ public:
    */
   vtkGetMacro(NumberOfSlots, int);
   vtkGetMacro(Bins, int);
+  vtkGetMacro(Moments, bool);
   double GetBytes() const;
   int GetNumberOfTiles() const;
   ///@}
@@ -155,6 +159,17 @@ public:
    * (vtkSNDFRenderPass) re-shades without sampling. Returns the number of tiles recoloured.
    */
   int Recolour(const double m[3][3]);
+
+  /**
+   * A new colour map of the colour coordinate t in [0, 1] (a pool with moments): `ramps` is a
+   * `size` x 2 RGBA float texture of the stored colour as a function of t at size equally spaced
+   * values, for the old map (row 0) and the new one (row 1). Every occupied bin's mean colour m
+   * becomes A Q_new + R (m - A Q_old), Q the Gauss quadrature of the ramp under the bin's moments
+   * of t and R = `residual` (row-major; carries the old map's quadrature error into the new
+   * one, Shaders/SNDFRecolour.glsl); the tiles are marked for rebaking. Returns the number of
+   * tiles recoloured (0 without moments).
+   */
+  int RecolourMap(vtkTextureObject* ramps, int size, const double residual[3][3]);
 
   /**
    * How many tiles of a view the cache has, or could average from a finer level (no GPU work).
@@ -198,6 +213,7 @@ protected:
 
   int NumberOfSlots = 0;
   int Bins = 0;
+  bool Moments = false;
   long long NumberOfDownsampledTiles = 0;
   long long NumberOfClearedTiles = 0;
   long long NumberOfEvictedTiles = 0;

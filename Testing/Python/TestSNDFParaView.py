@@ -11,7 +11,8 @@ at 200x150, about two pixels per atom, where one ray per pixel aliases. Checked:
 - Converge Still Renders: after a camera change one Render() gives the converged image, equal
   to the progressively refined one; with Use FXAA on the same picture (FXAA is off under S-NDF);
 - re-lighting: a light change re-shades without taking samples again; so do new colours of
-  the two atom types, and the old colours back give the picture before;
+  the two atom types, and the old colours back give the picture before; colour by speed, a
+  new preset (Cool to Warm to Viridis) re-shades from the bins' moments, near sampling under it;
 - parallel projection: a pan and back keeps the samples; a zoom by 1.25 samples anew, and keeps
   them with S-NDF Zoom Between Levels;
 - the view's ambient occlusion is sampled with the particles (Density Volume: darker, nowhere
@@ -53,6 +54,9 @@ out.SetPoints(points)
 types = numpy_to_vtk(kind, deep=True)
 types.SetName("type")
 out.GetPointData().AddArray(types)
+speed = numpy_to_vtk(np.random.default_rng(2).random(len(xyz)).astype(np.float32), deep=True)
+speed.SetName("speed")
+out.GetPointData().AddArray(speed)
 """
 
 
@@ -191,6 +195,37 @@ if not args.must_fail:
           and numpy.abs(back_map - recoloured).max() <= 1.0,
           "the old colour map back: the picture before (max %.1f /255), no sample taken"
           % numpy.abs(back_map - recoloured).max())
+
+    # --- colour by speed: another preset re-shades from the bins' moments of the speed ----------
+    view.SNDFConvergeStillRenders = 1
+    simple.ColorBy(display, ("POINTS", "speed"))
+    speed_lut = simple.GetColorTransferFunction("speed")
+    speed_lut.ApplyPreset("Cool to Warm", True)
+    by_speed = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_speed.png")))
+    view.SNDFConvergeStillRenders = 0
+    simple.Render(view)
+    samples = view_info(view, "SNDFNumberOfSamples")
+    speed_lut.ApplyPreset("Viridis (matplotlib)", True)
+    simple.Render(view)
+    kept = view_info(view, "SNDFNumberOfSamples")
+    viridis = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_viridis.png")))
+    # sampled under the new preset: a camera change and back restarts, Converge Still Renders
+    view.SNDFConvergeStillRenders = 1
+    view.CameraPosition = [41.0, 30.0, 55.0]
+    simple.Render(view)
+    view.CameraPosition = [40.0, 30.0, 55.0]
+    fresh = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_viridis_fresh.png")))
+    d = numpy.abs(viridis - fresh)
+    print("colour by speed, Cool to Warm -> Viridis: %d samples before, %d after, against sampling "
+          "under Viridis mean %.3f p99 %.1f max %.1f /255 (the preset moved the picture by %.1f)"
+          % (samples, kept, d.mean(), numpy.percentile(d, 99), d.max(),
+             numpy.abs(viridis - by_speed).mean()))
+    check(samples == 256 and kept == 256 and numpy.abs(viridis - by_speed).mean() > 2.0
+          and d.mean() <= 0.1 and numpy.percentile(d, 99) <= 2.0,
+          "a new preset for a continuous map re-shades the 256 samples without taking new ones, "
+          "near sampling under it (mean %.3f <= 0.1, p99 %.1f <= 2 /255)"
+          % (d.mean(), numpy.percentile(d, 99)))
+    simple.ColorBy(display, ("POINTS", "type"))
 
     # --- the view's ambient occlusion is sampled -------------------------------------------------
     view.SNDFConvergeStillRenders = 1

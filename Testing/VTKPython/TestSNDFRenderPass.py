@@ -14,7 +14,9 @@ from plain VTK Python. Checked:
 - material and colour map: a new material re-shades (one particle actor); a new colour map
   whose colours are a linear function of the old ones (three types, two types with a new range)
   recolours the samples without a sample pass, equal to sampling under it, and refinement goes
-  on with the new colours; four types, a continuous map or an ambient term sample again;
+  on with the new colours; four types and continuous maps re-shade from the bins' moments of the
+  scalar, near sampling under the new map; without the moments, or with an ambient term, they
+  sample again;
 - other geometry: an opaque box through part of the crystal and the crystal's outline (lines)
   converge to the super-sampled core like the crystal alone, the box's colour where it hides
   particles; translucent geometry: one warning and the plain image;
@@ -356,7 +358,7 @@ check(msndf.GetNumberOfRestarts() == restarts + 1,
       "two particle actors: a new ambient coefficient samples again")
 
 # --- colour-map changes re-shade where the new colours are linear in the old ones -----------
-def converged_types(types, points, ambient=0.0):
+def converged_types(types, points, ambient=0.0, keep=True, parallel=False):
     """A pass converged to 64 samples on the crystal coloured by the scalar "type" (`types`, one
     value per atom) through a colour transfer function with the given (value, r, g, b) points."""
     from vtkmodules.util.numpy_support import numpy_to_vtk
@@ -364,6 +366,7 @@ def converged_types(types, points, ambient=0.0):
     type_sndf = pr.vtkSNDFRenderPass()
     type_sndf.SetSamplesPerFrame(64)
     type_sndf.SetTargetSamples(64)
+    type_sndf.SetKeepColourCoordinates(keep)
     type_renderer, type_window, type_actor = scene(xyz, rgb, (W, H), type_sndf)
     data = type_actor.GetMapper().GetInput()
     array = numpy_to_vtk(np.asarray(types, dtype=np.float32), deep=True)
@@ -378,6 +381,10 @@ def converged_types(types, points, ambient=0.0):
     mapper.SelectColorArray("type")
     mapper.SetScalarRange(0.0, 1.0)
     type_actor.GetProperty().SetAmbient(ambient)
+    if parallel:
+        type_renderer.GetActiveCamera().ParallelProjectionOn()
+        type_renderer.GetActiveCamera().SetParallelScale(16.0)
+        type_renderer.ResetCameraClippingRange()
     image(type_window)
     converge(type_sndf, type_window)
     return type_sndf, type_window, ctf
@@ -423,19 +430,65 @@ for what, types, before, after in (
     d = np.abs(image(twindow) - image(fresh_window))
     check(d.max() <= 1.0, "%s: refined on to 128 samples after the recolouring, equal to a pass "
           "sampled under the new map throughout (max %.1f /255)" % (what, d.max()))
-# colour maps that are not linear in the old colours sample again: four types of unrelated
-# colours, a continuous map; so does a new map where the ambient term carries the colours
+# colour maps that are not linear in the old colours re-shade from the bins' moments of the
+# colour coordinate (the scalar; vtkSNDFRenderPass "Colour", KeepColourCoordinates, on by
+# default): four types of unrelated colours, a continuous map (colour by speed) to another
+# diverging map and to a five-point rainbow; without the moments they sample again, and so does
+# a new map where the ambient term carries the colours
 rng = np.random.default_rng(5)
-for what, types, before, after, ambient in (
+speeds = rng.random(len(xyz))
+rainbow = [(0.0, 0.0, 0.0, 1.0), (0.25, 0.0, 1.0, 1.0), (0.5, 0.0, 1.0, 0.0), (0.75, 1.0, 1.0, 0.0),
+           (1.0, 1.0, 0.0, 0.0)]
+for what, types, before, after, limits in (
         ("four types", (index % 4) / 3.0, old_map + [(1.0 / 3.0, 0.2, 0.8, 0.2)],
-         new_map + [(1.0 / 3.0, 0.9, 0.1, 0.6)], 0.0),
-        ("a continuous map", rng.random(len(xyz)), old_map, new_map, 0.0),
-        ("three types with ambient 0.2", three_types, old_map, new_map, 0.2)):
-    tsndf, twindow, tctf = converged_types(types, before, ambient)
+         new_map + [(1.0 / 3.0, 0.9, 0.1, 0.6)], (0.1, 1.0, 2.0)),
+        ("a continuous map", speeds, old_map, new_map, (0.1, 1.0, 2.0)),
+        ("a continuous map to a rainbow", speeds, old_map, rainbow, (0.1, 2.0, 16.0))):
+    tsndf, twindow, tctf = converged_types(types, before)
+    start = image(twindow)
+    passes, restarts = tsndf.GetNumberOfSamplePasses(), tsndf.GetNumberOfRestarts()
+    set_points(tctf, after)
+    changed = image(twindow)
+    fresh_sndf, fresh_window, _ = converged_types(types, after)
+    d = np.abs(changed - image(fresh_window))
+    print("%s: colour map changed after convergence vs converged under it: mean %.3f p99 %.1f "
+          "max %.1f /255 (the change moved the picture by %.1f)"
+          % (what, d.mean(), np.percentile(d, 99), d.max(), np.abs(changed - start).mean()))
+    check(tsndf.GetTileCache().GetMoments() and tsndf.GetNumberOfSamplePasses() == passes
+          and tsndf.GetNumberOfRestarts() == restarts and tsndf.GetNumberOfRecolours() == 1
+          and d.mean() <= limits[0] and np.percentile(d, 99) <= limits[1] and d.max() <= limits[2]
+          and np.abs(changed - start).mean() > 3.0,
+          "%s: a new colour map re-shades from the moments without a sample pass, near sampling "
+          "under it (mean %.3f <= %.1f, p99 %.1f <= %.1f, max %.1f <= %.1f /255)"
+          % (what, d.mean(), limits[0], np.percentile(d, 99), limits[1], d.max(), limits[2]))
+# the moments are averaged with the bins when the S-MIP zooms out: zoomed out by 2 (level 1
+# averaged from level 0), then a new map, against the same zoom of a pass sampled under it
+tsndf, twindow, tctf = converged_types(speeds, old_map, parallel=True)
+tcamera = twindow.GetRenderers().GetFirstRenderer().GetActiveCamera()
+tcamera.SetParallelScale(32.0)
+image(twindow)
+downsampled = tsndf.GetTileCache().GetNumberOfDownsampledTiles()
+set_points(tctf, rainbow)
+changed = image(twindow)
+fresh_sndf, fresh_window, _ = converged_types(speeds, rainbow, parallel=True)
+fresh_window.GetRenderers().GetFirstRenderer().GetActiveCamera().SetParallelScale(32.0)
+d = np.abs(changed - image(fresh_window))
+print("zoomed out by 2, then a continuous map to a rainbow, vs the same zoom sampled under it: "
+      "mean %.3f p99 %.1f max %.1f /255 (%d tiles averaged)"
+      % (d.mean(), np.percentile(d, 99), d.max(), downsampled))
+check(downsampled > 0 and tsndf.GetNumberOfRecolours() == 1 and tsndf.GetNumberOfRestarts() == 1
+      and d.mean() <= 0.2 and np.percentile(d, 99) <= 4.0,
+      "zoomed out, a new map re-shades the averaged bins from their averaged moments (mean "
+      "%.3f <= 0.2, p99 %.1f <= 4 /255)" % (d.mean(), np.percentile(d, 99)))
+for what, types, before, after, ambient, keep in (
+        ("a continuous map without the moments", speeds, old_map, new_map, 0.0, False),
+        ("three types with ambient 0.2", three_types, old_map, new_map, 0.2, True)):
+    tsndf, twindow, tctf = converged_types(types, before, ambient, keep)
     restarts = tsndf.GetNumberOfRestarts()
     set_points(tctf, after)
     image(twindow)
-    check(tsndf.GetNumberOfRestarts() == restarts + 1 and tsndf.GetNumberOfRecolours() == 0,
+    check(tsndf.GetNumberOfRestarts() == restarts + 1 and tsndf.GetNumberOfRecolours() == 0
+          and tsndf.GetTileCache().GetMoments() == keep,
           "%s: a new colour map samples again" % what)
 
 # --- other geometry: an opaque box through part of the crystal and the outline (lines) -------
