@@ -140,7 +140,7 @@ vtkUnsignedCharArray* MappedColours(vtkActor* actor)
 // Where a particle actor's colours come from a lookup table of one value per particle (as
 // vtkMapper::MapScalars maps them): the point array, the table and the component it maps (-1:
 // the magnitude). False for direct colours (unsigned char scalars in the default colour mode, the
-// direct mode), cell scalars, indexed (categorical) tables and the RGB vector mode.
+// direct mode), cell scalars and the RGB vector mode.
 bool ColourCoordinateSource(
   vtkActor* actor, vtkDataArray*& array, vtkScalarsToColors*& table, int& component)
 {
@@ -154,7 +154,7 @@ bool ColourCoordinateSource(
   int cellFlag = 0;
   array = vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(),
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-  if (!table || table->GetIndexedLookup() || !array || cellFlag != 0 ||
+  if (!table || !array || cellFlag != 0 ||
     array->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
     return false;
@@ -375,6 +375,10 @@ public:
     vtkMTimeType Time = 0;
     int Component = 0;
     double Range[2] = { 0.0, 0.0 };
+    // the distinct values (an indexed table maps t to the nearest; found when first needed,
+    // empty beyond 4096 values)
+    bool HaveCategories = false;
+    std::vector<double> Categories;
     vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
     vtkSmartPointer<vtkTextureObject> Texture;
     std::vector<float> Ramp;
@@ -406,6 +410,8 @@ public:
     c.Array = array;
     c.Time = array->GetMTime();
     c.Component = component;
+    c.HaveCategories = false;
+    c.Categories.clear();
     const vtkIdType n = array->GetNumberOfTuples();
     GLint limit = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
@@ -475,16 +481,71 @@ public:
     return c.Valid;
   }
 
+  // The distinct values of the coordinates' array (at most 4096; false beyond).
+  bool FindCategories()
+  {
+    ColourCoordinates& c = this->Coordinates;
+    if (!c.HaveCategories && c.Array)
+    {
+      c.HaveCategories = true;
+      std::set<double> seen;
+      const int comps = c.Array->GetNumberOfComponents();
+      std::vector<double> tuple(static_cast<std::size_t>(comps));
+      for (vtkIdType i = 0; i < c.Array->GetNumberOfTuples() && seen.size() <= 4096; ++i)
+      {
+        double v = 0.0;
+        if (c.Component >= 0)
+        {
+          v = c.Array->GetComponent(i, c.Component);
+        }
+        else
+        {
+          c.Array->GetTuple(i, tuple.data());
+          for (double x : tuple)
+          {
+            v += x * x;
+          }
+          v = std::sqrt(v);
+        }
+        seen.insert(v);
+      }
+      if (seen.size() <= 4096)
+      {
+        c.Categories.assign(seen.begin(), seen.end());
+      }
+    }
+    return !c.Categories.empty();
+  }
+
   // The stored colour (`scale` times the table's colour) at RampSize values of the colour
-  // coordinate, through the actor's lookup table as it maps now; alpha the table's.
-  std::vector<float> MakeRamp(vtkActor* actor, double scale) const
+  // coordinate, through the actor's lookup table as it maps now; alpha the table's. An indexed
+  // (categorical) table maps each value to the colour of the nearest value the particles have:
+  // the quadrature's nodes (SNDFRecolour.glsl) fall near them, not on them. Empty where an
+  // indexed table meets more than 4096 distinct values.
+  std::vector<float> MakeRamp(vtkActor* actor, double scale)
   {
     const ColourCoordinates& c = this->Coordinates;
     vtkScalarsToColors* table = actor->GetMapper()->GetLookupTable();
+    const bool indexed = table->GetIndexedLookup() != 0;
+    if (indexed && !this->FindCategories())
+    {
+      return std::vector<float>();
+    }
+    const std::vector<double>& categories = c.Categories;
     std::vector<float> ramp(4 * RampSize);
     for (int i = 0; i < RampSize; ++i)
     {
-      const double v = c.Range[0] + (c.Range[1] - c.Range[0]) * i / (RampSize - 1.0);
+      double v = c.Range[0] + (c.Range[1] - c.Range[0]) * i / (RampSize - 1.0);
+      if (indexed)
+      {
+        auto above = std::lower_bound(categories.begin(), categories.end(), v);
+        if (above == categories.end() ||
+          (above != categories.begin() && v - *(above - 1) < *above - v))
+        {
+          --above;
+        }
+        v = *above;
+      }
       const unsigned char* rgba = table->MapValue(v);
       for (int k = 0; k < 3; ++k)
       {
@@ -562,6 +623,10 @@ public:
     }
     std::vector<float> ramps = c.Ramp;
     const std::vector<float> ramp = this->MakeRamp(particles[0], now.Scale);
+    if (ramp.empty())
+    {
+      return -1; // an indexed table with more than 4096 values
+    }
     for (int i = 0; i < RampSize; ++i)
     {
       if (ramp[4 * i + 3] != c.Ramp[4 * i + 3])

@@ -14,9 +14,10 @@ from plain VTK Python. Checked:
 - material and colour map: a new material re-shades (one particle actor); a new colour map
   whose colours are a linear function of the old ones (three types, two types with a new range)
   recolours the samples without a sample pass, equal to sampling under it, and refinement goes
-  on with the new colours; four types and continuous maps re-shade from the bins' moments of the
-  scalar, near sampling under the new map; without the moments, or with an ambient term, they
-  sample again;
+  on with the new colours; four types, five categorical types (an indexed table) and continuous
+  maps re-shade from the bins' moments of the scalar, near sampling under the new map, also after
+  a zoom out by 2 (averaged moments); without the moments, or with an ambient term, they sample
+  again;
 - other geometry: an opaque box through part of the crystal and the crystal's outline (lines)
   converge to the super-sampled core like the crystal alone, the box's colour where it hides
   particles; translucent geometry: one warning and the plain image;
@@ -372,8 +373,11 @@ def converged_types(types, points, ambient=0.0, keep=True, parallel=False):
     array = numpy_to_vtk(np.asarray(types, dtype=np.float32), deep=True)
     array.SetName("type")
     data.GetPointData().AddArray(array)
-    ctf = vtkColorTransferFunction()
-    set_points(ctf, points)
+    if isinstance(points, list):
+        ctf = vtkColorTransferFunction()
+        set_points(ctf, points)
+    else:
+        ctf = points  # a lookup table made by the caller
     mapper = type_actor.GetMapper()
     mapper.SetLookupTable(ctf)
     mapper.SetColorModeToMapScalars()
@@ -480,6 +484,40 @@ check(downsampled > 0 and tsndf.GetNumberOfRecolours() == 1 and tsndf.GetNumberO
       and d.mean() <= 0.2 and np.percentile(d, 99) <= 4.0,
       "zoomed out, a new map re-shades the averaged bins from their averaged moments (mean "
       "%.3f <= 0.2, p99 %.1f <= 4 /255)" % (d.mean(), np.percentile(d, 99)))
+# categorical colours (an indexed lookup table, ParaView's "Interpret Values As Categories"):
+# new colours for five atom types re-shade from the moments (the quadrature's nodes take the
+# colour of the nearest type)
+def categories(colours):
+    from vtkmodules.vtkCommonCore import vtkLookupTable, vtkVariant
+    table = vtkLookupTable()
+    table.IndexedLookupOn()
+    table.SetNumberOfTableValues(len(colours))
+    for k, colour in enumerate(colours):
+        table.SetTableValue(k, *colour, 1.0)
+        table.SetAnnotation(vtkVariant(float(k)), "type %d" % k)
+    return table
+
+
+five_old = [(0.23, 0.30, 0.75), (0.87, 0.87, 0.87), (0.71, 0.02, 0.15), (0.2, 0.8, 0.2),
+            (0.9, 0.6, 0.1)]
+five_new = [(0.95, 0.80, 0.20), (0.20, 0.60, 0.35), (0.45, 0.25, 0.85), (0.9, 0.1, 0.6),
+            (0.1, 0.9, 0.9)]
+five_types = (index % 5).astype(float)
+tsndf, twindow, ttable = converged_types(five_types, categories(five_old))
+start = image(twindow)
+passes = tsndf.GetNumberOfSamplePasses()
+for k, colour in enumerate(five_new):
+    ttable.SetTableValue(k, *colour, 1.0)
+changed = image(twindow)
+fresh_sndf, fresh_window, _ = converged_types(five_types, categories(five_new))
+d = np.abs(changed - image(fresh_window))
+print("five categorical types: new colours after convergence vs converged under them: mean %.3f "
+      "p99 %.1f max %.1f /255 (the change moved the picture by %.1f)"
+      % (d.mean(), np.percentile(d, 99), d.max(), np.abs(changed - start).mean()))
+check(tsndf.GetNumberOfSamplePasses() == passes and tsndf.GetNumberOfRecolours() == 1
+      and d.mean() <= 0.1 and np.percentile(d, 99) <= 2.0 and np.abs(changed - start).mean() > 3.0,
+      "five categorical types: new colours re-shade without a sample pass, near sampling under "
+      "them (mean %.3f <= 0.1, p99 %.1f <= 2 /255)" % (d.mean(), np.percentile(d, 99)))
 for what, types, before, after, ambient, keep in (
         ("a continuous map without the moments", speeds, old_map, new_map, 0.0, False),
         ("three types with ambient 0.2", three_types, old_map, new_map, 0.2, True)):
