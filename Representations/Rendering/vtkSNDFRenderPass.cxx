@@ -362,15 +362,20 @@ public:
   };
   std::vector<SampledColours> Colours;
   std::vector<double> ColourKey;
-  // Colour coordinates (class description, "Colour"), for the one particle actor coloured through
-  // a lookup table: each particle's value (as the table sees it) in [0, 1] over the array's finite
-  // range, in a float texture buffer the sample pass reads by particle id into prDiffuse.a
-  // (MomentsInShader: the shader variant with it); what it was computed from; and the stored
-  // colour as a function of it (RampSize RGBA entries over [0, 1]) for the map the samples hold.
-  static constexpr int RampSize = 4096;
+  // Colour coordinates (class description, "Colour"), for up to MaximumCoordinateActors particle
+  // actors each coloured through a lookup table or by its property's colour (at least one
+  // through a table): per actor, each particle's value (as the table sees it) in [0, 1] over the
+  // array's finite range, in a float texture buffer the sample pass reads by particle id; the
+  // sample holds t' = (a + Margin + (1 - 2 Margin) t) / K for actor a of K (CoordinateOffset,
+  // CoordinateScale; a solid actor t = 0) in prDiffuse.a (MomentsInShader: the shader variant
+  // with it). Ramp is the stored colour as a function of t' (RampPerActor RGBA entries per
+  // actor) for the maps the samples hold.
+  static constexpr int RampPerActor = 4096;
+  static constexpr int MaximumCoordinateActors = 4;
   struct ColourCoordinates
   {
     bool Valid = false;
+    bool Solid = false; // the property's colour: no texture, t = 0
     vtkWeakPointer<vtkDataArray> Array;
     vtkMTimeType Time = 0;
     int Component = 0;
@@ -381,31 +386,101 @@ public:
     std::vector<double> Categories;
     vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
     vtkSmartPointer<vtkTextureObject> Texture;
-    std::vector<float> Ramp;
   };
-  ColourCoordinates Coordinates;
+  std::vector<ColourCoordinates> Coordinates;
+  std::vector<vtkProp*> CoordinateProps;
+  std::vector<float> Ramp;
   vtkSmartPointer<vtkTextureObject> Ramps;
+  // a one-value buffer texture that solid actors' draws read
+  vtkSmartPointer<vtkOpenGLBufferObject> SolidBuffer;
+  vtkSmartPointer<vtkTextureObject> SolidTexture;
   bool MomentsInShader = false;
 
-  // The colour coordinates of `actor` up to date (computed again only when its array, the array's
-  // modification time or the component changed); false where there are none: no lookup table
-  // source, non-finite values (NaN or Inf: the table's NaN and out-of-range colours are not a
-  // function of the clamped value), more particles than a texture buffer holds.
-  bool UpdateCoordinates(vtkActor* actor, vtkOpenGLRenderWindow* context, vtkObject* owner)
+  double Margin() const { return this->Coordinates.size() > 1 ? 0.02 : 0.0; }
+
+  // Whether the particle actors can keep colour coordinates: 1 to MaximumCoordinateActors
+  // actors, each coloured through a lookup table (ColourCoordinateSource) or by its property's
+  // colour, at least one through a table.
+  static bool CoordinateActors(const std::vector<vtkActor*>& particles)
   {
-    ColourCoordinates& c = this->Coordinates;
+    if (particles.empty() || particles.size() > MaximumCoordinateActors)
+    {
+      return false;
+    }
+    bool table = false;
+    for (vtkActor* actor : particles)
+    {
+      vtkDataArray* array = nullptr;
+      vtkScalarsToColors* lut = nullptr;
+      int component = 0;
+      if (ColourCoordinateSource(actor, array, lut, component))
+      {
+        table = true;
+      }
+      else if (UsesScalarColours(actor->GetMapper()))
+      {
+        return false; // direct colours, cell scalars, RGB vector mode
+      }
+    }
+    return table;
+  }
+
+  // The colour coordinates of the particle actors up to date (an actor's computed again only when
+  // its array, the array's modification time or the component changed); false where they cannot
+  // be kept: CoordinateActors() false, non-finite values (NaN or Inf: the table's NaN and
+  // out-of-range colours are not a function of the clamped value), more particles than a texture
+  // buffer holds.
+  bool UpdateCoordinates(
+    const std::vector<vtkActor*>& particles, vtkOpenGLRenderWindow* context, vtkObject* owner)
+  {
+    if (!CoordinateActors(particles))
+    {
+      return false;
+    }
+    this->Coordinates.resize(particles.size());
+    this->CoordinateProps.assign(particles.begin(), particles.end());
+    bool solid = false;
+    for (std::size_t a = 0; a < particles.size(); ++a)
+    {
+      if (!this->UpdateActorCoordinates(this->Coordinates[a], particles[a], context, owner))
+      {
+        return false;
+      }
+      solid = solid || this->Coordinates[a].Solid;
+    }
+    if (solid && !this->SolidTexture)
+    {
+      this->SolidBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+      this->SolidTexture = vtkSmartPointer<vtkTextureObject>::New();
+      this->SolidTexture->SetContext(context);
+      const std::vector<float> zero(1, 0.0f);
+      if (!this->SolidBuffer->Upload(zero, vtkOpenGLBufferObject::TextureBuffer) ||
+        !this->SolidTexture->CreateTextureBuffer(1, 1, VTK_FLOAT, this->SolidBuffer))
+      {
+        this->SolidTexture = nullptr;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  bool UpdateActorCoordinates(
+    ColourCoordinates& c, vtkActor* actor, vtkOpenGLRenderWindow* context, vtkObject* owner)
+  {
     vtkDataArray* array = nullptr;
     vtkScalarsToColors* table = nullptr;
     int component = 0;
     if (!ColourCoordinateSource(actor, array, table, component))
     {
-      c.Valid = false;
-      return false;
+      c.Solid = true; // (CoordinateActors: the property's colour)
+      c.Valid = true;
+      return true;
     }
-    if (c.Array == array && c.Time == array->GetMTime() && c.Component == component)
+    if (!c.Solid && c.Array == array && c.Time == array->GetMTime() && c.Component == component)
     {
       return c.Valid;
     }
+    c.Solid = false;
     c.Valid = false;
     c.Array = array;
     c.Time = array->GetMTime();
@@ -481,10 +556,73 @@ public:
     return c.Valid;
   }
 
-  // The distinct values of the coordinates' array (at most 4096; false beyond).
-  bool FindCategories()
+  // Where the sample pass reads the coordinate of `prop`'s particles and how it places it in
+  // [0, 1] (t' = offset + scale t); null where `prop` keeps none.
+  vtkTextureObject* CoordinateSource(vtkProp* prop, float& offset, float& scale, int& solid) const
   {
-    ColourCoordinates& c = this->Coordinates;
+    const auto found = std::find(this->CoordinateProps.begin(), this->CoordinateProps.end(), prop);
+    if (found == this->CoordinateProps.end() ||
+      this->Coordinates.size() != this->CoordinateProps.size())
+    {
+      return nullptr;
+    }
+    const std::size_t a = static_cast<std::size_t>(found - this->CoordinateProps.begin());
+    const double k = static_cast<double>(this->Coordinates.size());
+    offset = static_cast<float>((a + this->Margin()) / k);
+    scale = static_cast<float>((1.0 - 2.0 * this->Margin()) / k);
+    solid = this->Coordinates[a].Solid ? 1 : 0;
+    return solid ? this->SolidTexture.Get() : this->Coordinates[a].Texture.Get();
+  }
+
+  void DeactivateCoordinates()
+  {
+    for (ColourCoordinates& c : this->Coordinates)
+    {
+      if (c.Texture)
+      {
+        c.Texture->Deactivate();
+      }
+    }
+    if (this->SolidTexture)
+    {
+      this->SolidTexture->Deactivate();
+    }
+  }
+
+  void ReleaseCoordinates(vtkWindow* w)
+  {
+    for (ColourCoordinates& c : this->Coordinates)
+    {
+      if (c.Texture)
+      {
+        c.Texture->ReleaseGraphicsResources(w);
+      }
+      if (c.Buffer)
+      {
+        c.Buffer->ReleaseGraphicsResources();
+      }
+    }
+    this->Coordinates.clear();
+    this->CoordinateProps.clear();
+    this->Ramp.clear();
+    for (auto* texture : { &this->Ramps, &this->SolidTexture })
+    {
+      if (*texture)
+      {
+        (*texture)->ReleaseGraphicsResources(w);
+      }
+      *texture = nullptr;
+    }
+    if (this->SolidBuffer)
+    {
+      this->SolidBuffer->ReleaseGraphicsResources();
+    }
+    this->SolidBuffer = nullptr;
+  }
+
+  // The distinct values of an actor's coordinate array (at most 4096; false beyond).
+  static bool FindCategories(ColourCoordinates& c)
+  {
     if (!c.HaveCategories && c.Array)
     {
       c.HaveCategories = true;
@@ -517,41 +655,66 @@ public:
     return !c.Categories.empty();
   }
 
-  // The stored colour (`scale` times the table's colour) at RampSize values of the colour
-  // coordinate, through the actor's lookup table as it maps now; alpha the table's. An indexed
+  // The stored colours (SampledColours `stored`: the scale times the table's colour, or the solid
+  // colour) at RampPerActor values of t per actor (the whole [0, 1] of t'), through the actors'
+  // lookup tables as they map now; alpha the table's (1 for a solid colour). An indexed
   // (categorical) table maps each value to the colour of the nearest value the particles have:
   // the quadrature's nodes (SNDFRecolour.glsl) fall near them, not on them. Empty where an
   // indexed table meets more than 4096 distinct values.
-  std::vector<float> MakeRamp(vtkActor* actor, double scale)
+  std::vector<float> MakeRamp(
+    const std::vector<vtkActor*>& particles, const std::vector<SampledColours>& stored)
   {
-    const ColourCoordinates& c = this->Coordinates;
-    vtkScalarsToColors* table = actor->GetMapper()->GetLookupTable();
-    const bool indexed = table->GetIndexedLookup() != 0;
-    if (indexed && !this->FindCategories())
+    const int k = static_cast<int>(this->Coordinates.size());
+    if (k < 1 || particles.size() != this->Coordinates.size() || stored.size() != particles.size())
     {
       return std::vector<float>();
     }
-    const std::vector<double>& categories = c.Categories;
-    std::vector<float> ramp(4 * RampSize);
-    for (int i = 0; i < RampSize; ++i)
+    for (int a = 0; a < k; ++a)
     {
-      double v = c.Range[0] + (c.Range[1] - c.Range[0]) * i / (RampSize - 1.0);
-      if (indexed)
+      if (!this->Coordinates[a].Solid &&
+        particles[a]->GetMapper()->GetLookupTable()->GetIndexedLookup() &&
+        !FindCategories(this->Coordinates[a]))
       {
-        auto above = std::lower_bound(categories.begin(), categories.end(), v);
-        if (above == categories.end() ||
-          (above != categories.begin() && v - *(above - 1) < *above - v))
+        return std::vector<float>();
+      }
+    }
+    const int size = RampPerActor * k;
+    const double margin = this->Margin();
+    std::vector<float> ramp(4 * static_cast<std::size_t>(size));
+    for (int i = 0; i < size; ++i)
+    {
+      const double global = k * (i / (size - 1.0));
+      const int a = std::min(k - 1, static_cast<int>(global));
+      const double local = std::min(1.0, std::max(0.0, (global - a - margin) / (1.0 - 2.0 * margin)));
+      const ColourCoordinates& c = this->Coordinates[a];
+      float* entry = &ramp[4 * static_cast<std::size_t>(i)];
+      if (c.Solid)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          entry[j] = static_cast<float>(stored[a].Solid[j]);
+        }
+        entry[3] = 1.0f;
+        continue;
+      }
+      vtkScalarsToColors* table = particles[a]->GetMapper()->GetLookupTable();
+      double v = c.Range[0] + (c.Range[1] - c.Range[0]) * local;
+      if (table->GetIndexedLookup())
+      {
+        auto above = std::lower_bound(c.Categories.begin(), c.Categories.end(), v);
+        if (above == c.Categories.end() ||
+          (above != c.Categories.begin() && v - *(above - 1) < *above - v))
         {
           --above;
         }
         v = *above;
       }
       const unsigned char* rgba = table->MapValue(v);
-      for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
       {
-        ramp[4 * i + k] = static_cast<float>(scale * rgba[k] / 255.0);
+        entry[j] = static_cast<float>(stored[a].Scale * rgba[j] / 255.0);
       }
-      ramp[4 * i + 3] = static_cast<float>(rgba[3] / 255.0);
+      entry[3] = static_cast<float>(rgba[3] / 255.0);
     }
     return ramp;
   }
@@ -580,10 +743,10 @@ public:
     {
       this->Colours.push_back(this->StoredColours(actor));
     }
-    this->Coordinates.Ramp.clear();
-    if (particles.size() == 1 && this->Coordinates.Valid)
+    this->Ramp.clear();
+    if (this->MomentsInShader)
     {
-      this->Coordinates.Ramp = this->MakeRamp(particles[0], this->Colours[0].Scale);
+      this->Ramp = this->MakeRamp(particles, this->Colours);
     }
   }
 
@@ -596,63 +759,76 @@ public:
     return linear >= 0 ? linear : this->RecolourMap(particles, coloured);
   }
 
-  // Any new colour map of the one particle actor's colour coordinate where the cache keeps its
-  // moments: the old and the new ramp to SNDFRecolour.glsl (mode 1). -1 where the coordinate
-  // itself changed (another array, component or values), the opacities changed, the ambient
-  // term or a voxel-cone light carries the colours (`coloured`), or there are no moments.
+  // Any new colour maps of the particle actors' colour coordinates where the cache keeps their
+  // moments: the old and the new ramp to SNDFRecolour.glsl (mode 1). -1 where a coordinate
+  // itself changed (another array, component or values, an actor now coloured otherwise), the
+  // opacities changed, the ambient term of a table-coloured actor or a voxel-cone light carries
+  // the colours (`coloured`), or there are no moments.
   int RecolourMap(const std::vector<vtkActor*>& particles, bool coloured)
   {
-    ColourCoordinates& c = this->Coordinates;
-    if (particles.size() != 1 || !this->Cache->GetMoments() || !this->MomentsInShader ||
-      !c.Valid || c.Ramp.empty() || coloured || particles[0]->GetProperty()->GetAmbient() != 0.0)
+    if (!this->Cache->GetMoments() || !this->MomentsInShader || this->Ramp.empty() || coloured ||
+      particles.size() != this->Coordinates.size() ||
+      !std::equal(particles.begin(), particles.end(), this->CoordinateProps.begin()))
     {
       return -1;
     }
-    vtkDataArray* array = nullptr;
-    vtkScalarsToColors* table = nullptr;
-    int component = 0;
-    if (!ColourCoordinateSource(particles[0], array, table, component) || array != c.Array ||
-      array->GetMTime() != c.Time || component != c.Component)
+    std::vector<SampledColours> now;
+    for (std::size_t a = 0; a < particles.size(); ++a)
     {
-      return -1;
+      const ColourCoordinates& c = this->Coordinates[a];
+      vtkDataArray* array = nullptr;
+      vtkScalarsToColors* table = nullptr;
+      int component = 0;
+      const bool source = ColourCoordinateSource(particles[a], array, table, component);
+      if (!c.Valid || source == c.Solid)
+      {
+        return -1;
+      }
+      if (!c.Solid &&
+        (array != c.Array || array->GetMTime() != c.Time || component != c.Component ||
+          particles[a]->GetProperty()->GetAmbient() != 0.0))
+      {
+        return -1;
+      }
+      now.push_back(this->StoredColours(particles[a])); // (maps: the table's range)
+      if (!c.Solid && !now.back().Colours)
+      {
+        return -1;
+      }
     }
-    const SampledColours now = this->StoredColours(particles[0]); // (maps: the table's range)
-    if (!now.Colours)
-    {
-      return -1;
-    }
-    std::vector<float> ramps = c.Ramp;
-    const std::vector<float> ramp = this->MakeRamp(particles[0], now.Scale);
-    if (ramp.empty())
+    const std::vector<float> ramp = this->MakeRamp(particles, now);
+    if (ramp.empty() || ramp.size() != this->Ramp.size())
     {
       return -1; // an indexed table with more than 4096 values
     }
-    for (int i = 0; i < RampSize; ++i)
+    const std::size_t size = ramp.size() / 4;
+    for (std::size_t i = 0; i < size; ++i)
     {
-      if (ramp[4 * i + 3] != c.Ramp[4 * i + 3])
+      if (ramp[4 * i + 3] != this->Ramp[4 * i + 3])
       {
         return -1; // the opacities changed
       }
     }
+    std::vector<float> ramps = this->Ramp;
     ramps.insert(ramps.end(), ramp.begin(), ramp.end());
-    // the old map's quadrature error of a bin carried into the new map through the least-squares
+    // the old maps' quadrature error of a bin carried into the new maps through the least-squares
     // linear map from the old ramp's colours to the new one's (both centred; 0 where that has
     // entries beyond +-16)
     double centre[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
-    for (int i = 0; i < RampSize; ++i)
+    for (std::size_t i = 0; i < size; ++i)
     {
       for (int k = 0; k < 3; ++k)
       {
-        centre[k] += c.Ramp[4 * i + k] / RampSize;
-        centre[3 + k] += ramp[4 * i + k] / RampSize;
+        centre[k] += this->Ramp[4 * i + k] / static_cast<double>(size);
+        centre[3 + k] += ramp[4 * i + k] / static_cast<double>(size);
       }
     }
-    std::vector<std::array<double, 6>> pairs(RampSize);
-    for (int i = 0; i < RampSize; ++i)
+    std::vector<std::array<double, 6>> pairs(size);
+    for (std::size_t i = 0; i < size; ++i)
     {
       for (int k = 0; k < 3; ++k)
       {
-        pairs[i][k] = c.Ramp[4 * i + k] - centre[k];
+        pairs[i][k] = this->Ramp[4 * i + k] - centre[k];
         pairs[i][3 + k] = ramp[4 * i + k] - centre[3 + k];
       }
     }
@@ -666,8 +842,9 @@ public:
       this->Ramps = vtkSmartPointer<vtkTextureObject>::New();
     }
     this->Ramps->SetContext(this->Context);
-    if (!this->Ramps->Create2DFromRaw(RampSize, 2, 4, VTK_FLOAT, ramps.data()) ||
-      this->Cache->RecolourMap(this->Ramps, RampSize, residual) <= 0)
+    const int width = static_cast<int>(size);
+    if (!this->Ramps->Create2DFromRaw(width, 2, 4, VTK_FLOAT, ramps.data()) ||
+      this->Cache->RecolourMap(this->Ramps, width, residual) <= 0)
     {
       return -1;
     }
@@ -1187,11 +1364,16 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
   // with the colour coordinates' moments kept (class description, "Colour") the particle's
   // coordinate goes into the diffuse target's alpha (blending is off there during the sample pass)
   const bool coordinates = this->Internals->MomentsInShader;
+  // (t' = offset + scale t, t read by particle id; a solid actor reads t = 0 from a one-value
+  // buffer: vtkInternals::CoordinateSource)
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec",
-    coordinates ? "uniform int prRawMaterial;\nuniform samplerBuffer prColourCoordinates;"
+    coordinates ? "uniform int prRawMaterial;\nuniform samplerBuffer prColourCoordinates;\n"
+                  "uniform float prCoordinateOffset;\nuniform float prCoordinateScale;\n"
+                  "uniform int prCoordinateSolid;"
                 : "uniform int prRawMaterial;");
   const std::string coordinate = coordinates
-    ? "texelFetch(prColourCoordinates, particleIdVSOutput * particleIdStride).r"
+    ? "prCoordinateOffset + prCoordinateScale * texelFetch(prColourCoordinates, "
+      "prCoordinateSolid != 0 ? 0 : particleIdVSOutput * particleIdStride).r"
     : "1.0";
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
     "vec3 prSampleDiffuse = diffuseColor;\n"
@@ -1204,19 +1386,26 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
 
 //------------------------------------------------------------------------------
 bool vtkSNDFRenderPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   if (IsSampledParticleMapper(mapper) && program->IsUniformUsed("prRawMaterial"))
   {
     program->SetUniformi("prRawMaterial", this->Internals->RawMaterial);
   }
-  vtkTextureObject* coordinates = this->Internals->Coordinates.Texture;
-  if (IsSampledParticleMapper(mapper) && program->IsUniformUsed("prColourCoordinates") &&
-    coordinates)
+  float offset = 0.0f;
+  float scale = 1.0f;
+  int solid = 0;
+  vtkTextureObject* coordinates = IsSampledParticleMapper(mapper)
+    ? this->Internals->CoordinateSource(prop, offset, scale, solid)
+    : nullptr;
+  if (coordinates && program->IsUniformUsed("prColourCoordinates"))
   {
-    // (active until the sample pass ends)
+    // (active until the sample pass ends: DeactivateCoordinates)
     coordinates->Activate();
     program->SetUniformi("prColourCoordinates", coordinates->GetTextureUnit());
+    program->SetUniformf("prCoordinateOffset", offset);
+    program->SetUniformf("prCoordinateScale", scale);
+    program->SetUniformi("prCoordinateSolid", solid);
   }
   return true;
 }
@@ -1458,14 +1647,11 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up
   // to eight views' worth of tiles where the limit allows (a zoom out by one level over a view
   // sampled whole needs five: four of the finer level, one of the coarser)
-  // With one particle actor coloured through a lookup table the bins keep the moments of its
-  // colour coordinate (KeepColourCoordinates) where the memory holds them with the bins asked for.
+  // With particle actors coloured through lookup tables (vtkInternals::CoordinateActors) the bins
+  // keep the moments of their colour coordinate (KeepColourCoordinates) where the memory holds
+  // them with the bins asked for.
   const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
-  vtkDataArray* coordinateArray = nullptr;
-  vtkScalarsToColors* coordinateTable = nullptr;
-  int coordinateComponent = 0;
-  bool moments = this->KeepColourCoordinates && particles.size() == 1 &&
-    ColourCoordinateSource(particles[0], coordinateArray, coordinateTable, coordinateComponent);
+  bool moments = this->KeepColourCoordinates && vtkInternals::CoordinateActors(particles);
   auto slotsFor = [&](int b) {
     return static_cast<int>(std::min({ 8.0 * viewTiles,
       std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b, moments)),
@@ -1576,7 +1762,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
   // the colour coordinates (computed again when their array changed) and the shader variant
   // that writes them
-  const bool coordinates = moments && internals.UpdateCoordinates(particles[0], context, this);
+  const bool coordinates = moments && internals.UpdateCoordinates(particles, context, this);
   if (coordinates != internals.MomentsInShader)
   {
     internals.MomentsInShader = coordinates;
@@ -2074,10 +2260,7 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       this->PreRender(&sampleState);
       this->DelegatePass->Render(&sampleState);
       this->PostRender(&sampleState);
-      if (internals.Coordinates.Texture)
-      {
-        internals.Coordinates.Texture->Deactivate(); // (SetShaderParameters activated it)
-      }
+      internals.DeactivateCoordinates(); // (SetShaderParameters activated them)
       // back to what draw buffer 0 has (GL's state: VTK's state cache can be out of step with it)
       if (glIsEnabledi(GL_BLEND, 0))
       {
@@ -2258,20 +2441,7 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.CheckedSamples = 0;
   internals.Cache->ReleaseGraphicsResources(w);
   // the colour coordinates are uploaded again when next needed
-  vtkInternals::ColourCoordinates& coordinates = internals.Coordinates;
-  if (coordinates.Texture)
-  {
-    coordinates.Texture->ReleaseGraphicsResources(w);
-  }
-  if (coordinates.Buffer)
-  {
-    coordinates.Buffer->ReleaseGraphicsResources();
-  }
-  coordinates = vtkInternals::ColourCoordinates();
-  if (internals.Ramps)
-  {
-    internals.Ramps->ReleaseGraphicsResources(w);
-  }
+  internals.ReleaseCoordinates(w);
   internals.FrameValid = false;
   internals.Placed = false;
   internals.FixedState.clear();

@@ -99,10 +99,12 @@
  *   diffuse coefficient -- measured: equal to sampling under the new map within 1/255.
  *   Any other new map of the scalar (another preset, a new range, colour by speed, four or
  *   more types) re-shades from the bins' moments of a colour coordinate (KeepColourCoordinates,
- *   on by default), where one particle actor is coloured through a lookup table: t in [0, 1]
- *   is each particle's value as the table sees it (the component or the magnitude) over the
- *   array's finite range, read by particle id from a texture buffer into
- *   the sample; each bin keeps the running means of AO t^k, k = 0..3 (16 bits each, two more
+ *   on by default), where up to four particle actors are each coloured through a lookup table
+ *   or by the property's colour, at least one through a table: t in [0, 1] is each particle's
+ *   value as its table sees it (the component or the magnitude) over the array's finite range
+ *   (0 for a solid colour), read by particle id from a texture buffer; the sample holds
+ *   t' = (a + m + (1 - 2 m) t) / K for actor a of K (m = 0.02 with several actors, 0 with one),
+ *   so that each actor's colours are a part of one function of t'; each bin keeps the running means of AO t^k, k = 0..3 (16 bits each, two more
  *   words per bin). A new map c' of the value moves a bin's mean colour m to
  *   A Q(c') + R (m - A Q(c)): Q the two-node Gauss quadrature of the map under the bin's
  *   distribution of t (from the moments: exact where a bin's samples show at most two distinct
@@ -111,17 +113,18 @@
  *   linear map from the old map's colours to the new one's over t, which carries the old map's
  *   known quadrature error m - A Q(c) into the new one (identity for a map that is a linear
  *   function of the old one, 0 for an unrelated one). Both maps are tabulated at 4096 values of
- *   t (Shaders/SNDFRecolour.glsl); an indexed (categorical) table is tabulated with the colour
+ *   t per actor (Shaders/SNDFRecolour.glsl); an indexed (categorical) table is tabulated with the colour
  *   of the nearest value the particles have (up to 4096 distinct values), as the nodes fall near
  *   the values, not on them. Measured on the test crystal (about 2 pixels per atom)
  *   against sampling under the new map: four types, or a speed drawn at random per atom to
  *   another diverging map, mean 0.02-0.03, max 1 /255; to a five-point rainbow mean 0.04, max 7;
- *   five categorical types mean 0.03, p99 1, max 11;
+ *   five categorical types mean 0.03, p99 1, max 11; two actors (the crystal's halves, the
+ *   other coloured through a table or solid), a rainbow for one: mean 0.03-0.04, max 6;
  *   at about one pixel per atom up to 17/255 in 0.15 % of the pixels (bins of three or more
  *   atoms, where two nodes do not suffice); after a zoom out by 2 (bins and moments averaged
  *   from the finer level, Shaders/SNDFDownsample.glsl) mean 0.1, p99 3, max 28. Still sampling again:
  *   NaN or Inf values (the table's NaN and out-of-range colours are not functions of t), more
- *   particles than a texture buffer holds, several particle actors with non-linear changes, a
+ *   particles than a texture buffer holds, more than four particle actors or direct colours, a
  *   scalar actor with an ambient coefficient (the ambient term is drawn with the scalar
  *   colours into the colour target, which keeps no bins), a voxel-cone ambient light (it
  *   carries the particles' colours), new opacities, another array or component, new scalars or
@@ -268,8 +271,8 @@ public:
 
   ///@{
   /**
-   * With one particle actor coloured through a lookup table (colour by speed, by type, ...),
-   * keep each bin's moments of the particles' scalar (class description, "Colour"), so that
+   * With up to four particle actors coloured through lookup tables (colour by speed, by type,
+   * ...) or by their property's colour, keep each bin's moments of the particles' scalar (class description, "Colour"), so that
    * any new colour map of that scalar -- another preset, a new range, continuous or not --
    * re-shades without sampling. On by default; costs two 32-bit words per bin (8 x 8 bins:
    * 512 more bytes per texel, 1352 instead of 840; the accumulation took no measurable longer on
