@@ -400,6 +400,22 @@ def set_points(ctf, points):
         ctf.AddRGBPoint(*point)
 
 
+def remapped(make, before, after, apply):
+    """A pass converged under the colour map `before` (make(map) -> (sndf, window, table)), then
+    apply(table, after): returns |that picture - a pass converged under `after`|, how far the
+    change moved the picture (mean) and whether the samples were kept (recoloured once from the
+    moments: no sample pass, no restart)."""
+    msndf, mwindow, table = make(before)
+    start = image(mwindow)
+    passes, restarts = msndf.GetNumberOfSamplePasses(), msndf.GetNumberOfRestarts()
+    apply(table, after)
+    changed = image(mwindow)
+    _, fresh_window, _ = make(after)
+    kept = (msndf.GetTileCache().GetMoments() and msndf.GetNumberOfSamplePasses() == passes
+            and msndf.GetNumberOfRestarts() == restarts and msndf.GetNumberOfRecolours() == 1)
+    return np.abs(changed - image(fresh_window)), np.abs(changed - start).mean(), kept
+
+
 index = np.arange(len(xyz))
 three_types = (index % 3) * 0.5  # 0, 0.5, 1
 old_map = [(0.0, 0.23, 0.30, 0.75), (0.5, 0.87, 0.87, 0.87), (1.0, 0.71, 0.02, 0.15)]
@@ -448,20 +464,12 @@ for what, types, before, after, limits in (
          new_map + [(1.0 / 3.0, 0.9, 0.1, 0.6)], (0.1, 1.0, 2.0)),
         ("a continuous map", speeds, old_map, new_map, (0.1, 1.0, 2.0)),
         ("a continuous map to a rainbow", speeds, old_map, rainbow, (0.1, 2.0, 16.0))):
-    tsndf, twindow, tctf = converged_types(types, before)
-    start = image(twindow)
-    passes, restarts = tsndf.GetNumberOfSamplePasses(), tsndf.GetNumberOfRestarts()
-    set_points(tctf, after)
-    changed = image(twindow)
-    fresh_sndf, fresh_window, _ = converged_types(types, after)
-    d = np.abs(changed - image(fresh_window))
+    d, moved, kept = remapped(lambda m: converged_types(types, m), before, after, set_points)
     print("%s: colour map changed after convergence vs converged under it: mean %.3f p99 %.1f "
           "max %.1f /255 (the change moved the picture by %.1f)"
-          % (what, d.mean(), np.percentile(d, 99), d.max(), np.abs(changed - start).mean()))
-    check(tsndf.GetTileCache().GetMoments() and tsndf.GetNumberOfSamplePasses() == passes
-          and tsndf.GetNumberOfRestarts() == restarts and tsndf.GetNumberOfRecolours() == 1
-          and d.mean() <= limits[0] and np.percentile(d, 99) <= limits[1] and d.max() <= limits[2]
-          and np.abs(changed - start).mean() > 3.0,
+          % (what, d.mean(), np.percentile(d, 99), d.max(), moved))
+    check(kept and d.mean() <= limits[0] and np.percentile(d, 99) <= limits[1]
+          and d.max() <= limits[2] and moved > 3.0,
           "%s: a new colour map re-shades from the moments without a sample pass, near sampling "
           "under it (mean %.3f <= %.1f, p99 %.1f <= %.1f, max %.1f <= %.1f /255)"
           % (what, d.mean(), limits[0], np.percentile(d, 99), limits[1], d.max(), limits[2]))
@@ -503,21 +511,23 @@ five_old = [(0.23, 0.30, 0.75), (0.87, 0.87, 0.87), (0.71, 0.02, 0.15), (0.2, 0.
 five_new = [(0.95, 0.80, 0.20), (0.20, 0.60, 0.35), (0.45, 0.25, 0.85), (0.9, 0.1, 0.6),
             (0.1, 0.9, 0.9)]
 five_types = (index % 5).astype(float)
-tsndf, twindow, ttable = converged_types(five_types, categories(five_old))
-start = image(twindow)
-passes = tsndf.GetNumberOfSamplePasses()
-for k, colour in enumerate(five_new):
-    ttable.SetTableValue(k, *colour, 1.0)
-changed = image(twindow)
-fresh_sndf, fresh_window, _ = converged_types(five_types, categories(five_new))
-d = np.abs(changed - image(fresh_window))
+
+
+def set_categories(table, colours):
+    for k, colour in enumerate(colours):
+        table.SetTableValue(k, *colour, 1.0)
+
+
+d, moved, kept = remapped(lambda c: converged_types(five_types, categories(c)), five_old, five_new,
+                          set_categories)
 print("five categorical types: new colours after convergence vs converged under them: mean %.3f "
       "p99 %.1f max %.1f /255 (the change moved the picture by %.1f)"
-      % (d.mean(), np.percentile(d, 99), d.max(), np.abs(changed - start).mean()))
-check(tsndf.GetNumberOfSamplePasses() == passes and tsndf.GetNumberOfRecolours() == 1
-      and d.mean() <= 0.1 and np.percentile(d, 99) <= 2.0 and np.abs(changed - start).mean() > 3.0,
+      % (d.mean(), np.percentile(d, 99), d.max(), moved))
+check(kept and d.mean() <= 0.1 and np.percentile(d, 99) <= 2.0 and moved > 3.0,
       "five categorical types: new colours re-shade without a sample pass, near sampling under "
       "them (mean %.3f <= 0.1, p99 %.1f <= 2 /255)" % (d.mean(), np.percentile(d, 99)))
+
+
 # two particle actors (the crystal's halves), the first coloured by the speed through its own
 # map, the second through another map or by its property's colour: a rainbow for the first
 # re-shades from the moments (each actor's coordinate in its own part of [0, 1])
@@ -562,19 +572,12 @@ def converged_halves(map_a, map_b):
 
 
 for what, other in (("two table-coloured actors", new_map), ("a table-coloured and a solid actor", None)):
-    hsndf, hwindow, htables = converged_halves(old_map, other)
-    start = image(hwindow)
-    passes = hsndf.GetNumberOfSamplePasses()
-    set_points(htables[0], rainbow)
-    changed = image(hwindow)
-    fresh_sndf, fresh_window, _ = converged_halves(rainbow, other)
-    d = np.abs(changed - image(fresh_window))
+    d, moved, kept = remapped(lambda m: converged_halves(m, other), old_map, rainbow,
+                              lambda tables, m: set_points(tables[0], m))
     print("%s: a rainbow for the first after convergence vs converged under it: mean %.3f p99 %.1f "
           "max %.1f /255 (the change moved the picture by %.1f)"
-          % (what, d.mean(), np.percentile(d, 99), d.max(), np.abs(changed - start).mean()))
-    check(hsndf.GetTileCache().GetMoments() and hsndf.GetNumberOfSamplePasses() == passes
-          and hsndf.GetNumberOfRecolours() == 1 and d.mean() <= 0.1
-          and np.percentile(d, 99) <= 2.0 and np.abs(changed - start).mean() > 3.0,
+          % (what, d.mean(), np.percentile(d, 99), d.max(), moved))
+    check(kept and d.mean() <= 0.1 and np.percentile(d, 99) <= 2.0 and moved > 3.0,
           "%s: a new map re-shades from the moments without a sample pass, near sampling under it "
           "(mean %.3f <= 0.1, p99 %.1f <= 2 /255)" % (what, d.mean(), np.percentile(d, 99)))
 for what, types, before, after, ambient, keep in (
