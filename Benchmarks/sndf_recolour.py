@@ -19,7 +19,7 @@ Measured in the same run:
 
 usage: Scripts/with_xvfb.sh python3 Benchmarks/sndf_recolour.py [CELLS WIDTH HEIGHT SAMPLES MODE KEEP]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
-Benchmarks/results/sndf_recolour.csv
+Benchmarks/results/sndf_recolour.csv and draws sndf_recolour.png from its rows.
 """
 import os
 import sys
@@ -110,3 +110,38 @@ path = os.path.join(os.path.dirname(__file__), "results", "sndf_recolour.csv")
 header = ("particles,width,height,samples,mode,keep_coordinates,sample_pass_s,accumulate_s,"
           "recolour_s,resample_s,resample_over_recolour,tiles,cache_mb\n")
 append_csv(path, header, row)
+
+
+def plot(path):
+    """sndf_recolour.png from every row of the CSV with a mode: recolour frame against re-sampling
+    to the same sample count, log scale."""
+    import csv
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(f) if r["mode"] and r["keep_coordinates"]]
+    labels = ["%s, moments %s\n%.2g atoms" % (r["mode"], "on" if r["keep_coordinates"] == "1" else "off",
+                                             float(r["particles"])) for r in rows]
+    x = np.arange(len(rows))
+    recolour = [float(r["recolour_s"]) for r in rows]
+    resample = [float(r["resample_s"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    ax.bar(x - 0.2, resample, 0.4, label="re-sampling (samples x sample pass)")
+    ax.bar(x + 0.2, [v if v == v else 0.0 for v in recolour], 0.4, label="recolour frame")
+    for i, v in enumerate(recolour):
+        ax.text(x[i] + 0.2, v * 1.1 if v == v else 0.15, "%.2f s" % v if v == v else "samples\nagain",
+                ha="center", fontsize=8)
+    ax.set_yscale("log")
+    ax.set_ylim(0.1, 100.0)
+    ax.set_xticks(x)
+    ax.set_xticklabels(labels, fontsize=8)
+    ax.set_ylabel("seconds (llvmpipe)")
+    ax.set_title("S-NDF: a new colour map after convergence (%s x %s, %s samples)"
+                 % (rows[-1]["width"], rows[-1]["height"], rows[-1]["samples"]))
+    ax.legend(fontsize=8, loc="upper center", ncol=2)
+    fig.tight_layout()
+    fig.savefig(os.path.splitext(path)[0] + ".png", dpi=100)
+
+
+plot(path)
