@@ -110,14 +110,9 @@ void main()
     {
       float t = texelFetch(prDiffuse, p, 0).a;
       t = isnan(t) ? 0.0 : clamp(t, 0.0, 1.0);
-      uint at = prSNDFMomentWord(prBins) + 2u * bin;
-      vec4 moments = prSNDFUnpackMoments(prBinWordAt(bins, at), prBinWordAt(bins, at + 1u));
+      vec4 moments = prSNDFLoadMoments(bins, prBins, bin);
       moments += (ao * vec4(1.0, t, t * t, t * t * t) - moments) / float(count);
-      uint m0;
-      uint m1;
-      prSNDFPackMoments(moments, m0, m1);
-      prSetBinWordAt(bins, at, m0);
-      prSetBinWordAt(bins, at + 1u, m1);
+      prSNDFStoreMoments(bins, prBins, bin, moments);
     }
     uint mask = prSNDFMaskWord(prBins) + (bin >> 5u);
     prSetBinWordAt(bins, mask, prBinWordAt(bins, mask) | (1u << (bin & 31u)));

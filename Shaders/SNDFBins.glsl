@@ -17,9 +17,11 @@
 // Colour coordinates (vtkSNDFRenderPass, "Colour"). Where the pass keeps them
 // (prMoments), the words of the occupancy bits are followed by two words per
 // bin: the running means over its samples of AO * t^k, k = 0..3, where t in
-// [0, 1] is the sampled particle's scalar within its array's range (16-bit
-// fixed point: AO and AO t in word 0, AO t^2 and AO t^3 in word 1). A new
-// colour map re-shades from them (SNDFRecolour.glsl, prSNDFQuadrature).
+// [0, 1] is the sampled particle's scalar within its array's range, placed in
+// its actor's part of [0, 1] where there are several particle actors (16-bit
+// fixed point: AO and AO t in word 0, AO t^2 and AO t^3 in word 1; accessors
+// prSNDFLoadMoments and prSNDFStoreMoments in SNDFTiles.glsl). A new colour
+// map re-shades from them (SNDFRecolour.glsl, prSNDFQuadrature).
 //
 // Shading a bin (prSNDFBinShade). The lighting table (vtkSNDFRenderPass,
 // SNDFLightingTable.glsl) has seven rows per bin b:

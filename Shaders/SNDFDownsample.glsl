@@ -96,7 +96,6 @@ void main()
   uint entries = record + 4u + maskVec4s;
   uint momentEntries = entries + uint(binCount);
   uint binWords = prSNDFMaskWord(prBins);
-  uint momentWords = prSNDFMomentWord(prBins);
 
   if (prPhase == 0)
   {
@@ -131,49 +130,43 @@ void main()
       head[2] += weight * prSumAt(sums, 2u);
       head[3] += vec4(weight * s3.x, s3.y, 1.0, 0.0);
       uint bins = prBinWordAddress(texel);
-      for (int m = 0; m < maskWords; ++m)
+      int m = -1;
+      uint mask = 0u;
+      int next;
+      while (prSNDFNextBin(bins, prBins, m, mask, next))
       {
-        uint mask = prBinWordAt(bins, binWords + uint(m));
-        while (mask != 0u)
+        uint bin = uint(next);
+        uint bit = 1u << (bin & 31u);
+        uint base = prSNDFWordsPerBin * bin;
+        uint w0 = prBinWordAt(bins, base);
+        float share = weight * float(w0 & 0xFFFFu);
+        vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, base + 1u));
+        vec2 u = prSNDFUnpackOffset(prBinWordAt(bins, base + 2u));
+        vec4 moments = prMoments != 0 ? prSNDFLoadMoments(bins, prBins, bin) : vec4(0.0);
+        if ((masks[m] & bit) != 0u)
         {
-          int bit = prSNDFTakeBit(mask);
-          uint bin = uint(32 * m + bit);
-          uint base = prSNDFWordsPerBin * bin;
-          uint w0 = prBinWordAt(bins, base);
-          float share = weight * float(w0 & 0xFFFFu);
-          vec3 mean = prSNDFUnpackMean(w0, prBinWordAt(bins, base + 1u));
-          vec2 u = prSNDFUnpackOffset(prBinWordAt(bins, base + 2u));
-          vec4 moments = vec4(0.0);
+          float w;
+          vec3 c0;
+          vec2 u0;
+          prUnpackEntry(prPartial[entries + bin], w, c0, u0);
+          float t = share / max(w + share, 1.0e-30);
+          mean = mix(c0, mean, t);
+          u = mix(u0, u, t);
           if (prMoments != 0)
           {
-            uint at = momentWords + 2u * bin;
-            moments = prSNDFUnpackMoments(prBinWordAt(bins, at), prBinWordAt(bins, at + 1u));
+            uvec4 e = prPartial[momentEntries + bin];
+            moments = mix(prSNDFUnpackMoments(e.x, e.y), moments, t);
           }
-          if ((masks[m] & (1u << uint(bit))) != 0u)
-          {
-            float w;
-            vec3 c0;
-            vec2 u0;
-            prUnpackEntry(prPartial[entries + bin], w, c0, u0);
-            float t = share / max(w + share, 1.0e-30);
-            mean = mix(c0, mean, t);
-            u = mix(u0, u, t);
-            if (prMoments != 0)
-            {
-              uvec4 e = prPartial[momentEntries + bin];
-              moments = mix(prSNDFUnpackMoments(e.x, e.y), moments, t);
-            }
-            share += w;
-          }
-          masks[m] |= 1u << uint(bit);
-          prPartial[entries + bin] = prPackEntry(share, mean, u);
-          if (prMoments != 0)
-          {
-            uint m0;
-            uint m1;
-            prSNDFPackMoments(moments, m0, m1);
-            prPartial[momentEntries + bin] = uvec4(m0, m1, 0u, 0u);
-          }
+          share += w;
+        }
+        masks[m] |= bit;
+        prPartial[entries + bin] = prPackEntry(share, mean, u);
+        if (prMoments != 0)
+        {
+          uint m0;
+          uint m1;
+          prSNDFPackMoments(moments, m0, m1);
+          prPartial[momentEntries + bin] = uvec4(m0, m1, 0u, 0u);
         }
       }
     }
@@ -230,8 +223,7 @@ void main()
         if (prMoments != 0)
         {
           uvec4 e = prPartial[momentEntries + bin];
-          prSetBinWordAt(destBins, momentWords + 2u * bin, e.x);
-          prSetBinWordAt(destBins, momentWords + 2u * bin + 1u, e.y);
+          prSNDFStoreMoments(destBins, prBins, bin, prSNDFUnpackMoments(e.x, e.y));
         }
         occupied |= 1u << uint(bit);
       }

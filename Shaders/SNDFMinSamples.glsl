@@ -10,6 +10,7 @@ layout(local_size_x = 16, local_size_y = 16) in;
 
 uniform ivec2 prSize;
 
+//PR::Include SNDFBins
 //PR::Include SNDFTiles
 
 layout(std430, binding = 1) buffer prMinimumBuffer

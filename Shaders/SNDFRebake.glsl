@@ -32,23 +32,18 @@ void main()
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
   uint words = prBinWordAddress(texel);
-  uint masks = prSNDFMaskWord(prBins);
-  int maskWords = prSNDFMaskWords(prBins);
-  for (int m = 0; m < maskWords; ++m)
+  int m = -1;
+  uint mask = 0u;
+  int bin;
+  while (prSNDFNextBin(words, prBins, m, mask, bin))
   {
-    uint mask = prBinWordAt(words, masks + uint(m));
-    while (mask != 0u)
-    {
-      int bit = prSNDFTakeBit(mask);
-      int bin = 32 * m + bit;
-      uint base = prSNDFWordsPerBin * uint(bin);
-      vec3 d;
-      vec3 s;
-      prSNDFBinShadeWords(prTable, bin, prBinWordAt(words, base), prBinWordAt(words, base + 1u),
-        prBinWordAt(words, base + 2u), d, s);
-      diffuse += d;
-      specular += s;
-    }
+    uint base = prSNDFWordsPerBin * uint(bin);
+    vec3 d;
+    vec3 s;
+    prSNDFBinShadeWords(prTable, bin, prBinWordAt(words, base), prBinWordAt(words, base + 1u),
+      prBinWordAt(words, base + 2u), d, s);
+    diffuse += d;
+    specular += s;
   }
   prSetSumAt(sums, 1u, vec4(diffuse, prSumAt(sums, 1u).w));
   prSetSumAt(sums, 2u, vec4(specular, s2.w));

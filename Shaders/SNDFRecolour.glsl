@@ -16,12 +16,14 @@
 // prRamps holds the stored colour as a function of t, prRampSize entries
 // over [0, 1], for the old map (row 0) and the new one (row 1). A bin's
 // samples have the AO-weighted moments A, A mu_1..3 of t; its mean colour
-// m = mean(AO c(t)) becomes m + A (Q_new - Q_old), Q the two-node Gauss
+// m = mean(AO c(t)) becomes A Q_new + R (m - A Q_old), Q the two-node Gauss
 // quadrature of the ramp under the bin's distribution of t
-// (prSNDFQuadrature). Exact where a bin's samples show at most two
+// (prSNDFQuadrature), R = prColourMatrix the least-squares linear map from
+// the old ramp's colours to the new one's (it carries the old map's known
+// quadrature error over). Exact where a bin's samples show at most two
 // distinct values of t (a pixel split between two particles) and for any
-// map quadratic in t; otherwise the quadrature errors of the two maps'
-// difference remain.
+// map quadratic in t. With several particle actors t is the placed
+// coordinate t' of vtkSNDFRenderPass (each actor a part of [0, 1]).
 // Dispatch: (4, 4, number of tiles) groups of 16 x 16; group z recolours the
 // tile in slot prPageTable[z] (SNDFTiles.glsl: the page table holds the list).
 //=========================================================================
@@ -82,36 +84,31 @@ void main()
     return; // no particle sample: no occupied bin
   }
   uint words = prBinWordAddress(texel);
-  uint masks = prSNDFMaskWord(prBins);
-  int maskWords = prSNDFMaskWords(prBins);
-  for (int m = 0; m < maskWords; ++m)
+  int m = -1;
+  uint mask = 0u;
+  int bin;
+  while (prSNDFNextBin(words, prBins, m, mask, bin))
   {
-    uint mask = prBinWordAt(words, masks + uint(m));
-    while (mask != 0u)
+    uint base = prSNDFWordsPerBin * uint(bin);
+    uint w0 = prBinWordAt(words, base);
+    uint w1 = prBinWordAt(words, base + 1u);
+    vec3 mean = prSNDFUnpackMean(w0, w1);
+    if (prMode == 0)
     {
-      int bit = prSNDFTakeBit(mask);
-      uint base = prSNDFWordsPerBin * uint(32 * m + bit);
-      uint w0 = prBinWordAt(words, base);
-      uint w1 = prBinWordAt(words, base + 1u);
-      vec3 mean = prSNDFUnpackMean(w0, w1);
-      if (prMode == 0)
-      {
-        mean = prColourMatrix * mean;
-      }
-      else
-      {
-        uint at = prSNDFMomentWord(prBins) + 2u * uint(32 * m + bit);
-        vec4 moments = prSNDFUnpackMoments(prBinWordAt(words, at), prBinWordAt(words, at + 1u));
-        if (moments.x > 0.0)
-        {
-          vec3 mu = moments.yzw / moments.x;
-          vec3 residual = mean - moments.x * prSNDFQuadrature(0, mu);
-          mean = moments.x * prSNDFQuadrature(1, mu) + prColourMatrix * residual;
-        }
-      }
-      prSNDFPackMean(w0 & 0xFFFFu, mean, w0, w1);
-      prSetBinWordAt(words, base, w0);
-      prSetBinWordAt(words, base + 1u, w1);
+      mean = prColourMatrix * mean;
     }
+    else
+    {
+      vec4 moments = prSNDFLoadMoments(words, prBins, uint(bin));
+      if (moments.x > 0.0)
+      {
+        vec3 mu = moments.yzw / moments.x;
+        vec3 residual = mean - moments.x * prSNDFQuadrature(0, mu);
+        mean = moments.x * prSNDFQuadrature(1, mu) + prColourMatrix * residual;
+      }
+    }
+    prSNDFPackMean(w0 & 0xFFFFu, mean, w0, w1);
+    prSetBinWordAt(words, base, w0);
+    prSetBinWordAt(words, base + 1u, w1);
   }
 }

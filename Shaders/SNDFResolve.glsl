@@ -33,6 +33,7 @@ uniform vec3 prSpecularColour;
 uniform vec3 prDiffuseScale;
 uniform vec3 prAmbientTerm;
 
+//PR::Include SNDFBins
 //PR::Include SNDFTiles
 
 layout(rgba32f, binding = 0) uniform writeonly image2D prImage;

@@ -25,6 +25,7 @@ const uint prTileTexels = 4096u;
 //   vec4 prSum(uint texel, uint k)   (by texel)
 //   bool prSNDFInPart(uint texel)    (the texel lies in the bound part)
 // (word < prWordsPerPixel, k < 4; see SNDFAccumulate.glsl for what they hold).
+// The shaders include SNDFBins.glsl first (the bin layout the helpers below walk).
 //PR::SNDFStorage
 
 uniform ivec2 prTexelOffset;
@@ -66,6 +67,43 @@ int prSNDFTakeBit(inout uint mask)
   int bit = findLSB(mask);
   mask &= mask - 1u;
   return bit;
+}
+
+// The next occupied bin of the texel whose bin words start at `words` (SNDFBins.glsl: the
+// occupancy words after the bins), false after the last: the compute shaders visit a texel's
+// occupied bins with
+//   int m = -1; uint mask = 0u; int bin;
+//   while (prSNDFNextBin(words, prBins, m, mask, bin)) { ... }
+bool prSNDFNextBin(uint words, int bins, inout int m, inout uint mask, out int bin)
+{
+  while (mask == 0u)
+  {
+    if (++m >= prSNDFMaskWords(bins))
+    {
+      bin = -1;
+      return false;
+    }
+    mask = prBinWordAt(words, prSNDFMaskWord(bins) + uint(m));
+  }
+  bin = 32 * m + prSNDFTakeBit(mask);
+  return true;
+}
+
+// A bin's moments of the colour coordinate (SNDFBins.glsl, pools that keep them).
+vec4 prSNDFLoadMoments(uint words, int bins, uint bin)
+{
+  uint at = prSNDFMomentWord(bins) + 2u * bin;
+  return prSNDFUnpackMoments(prBinWordAt(words, at), prBinWordAt(words, at + 1u));
+}
+
+void prSNDFStoreMoments(uint words, int bins, uint bin, vec4 moments)
+{
+  uint m0;
+  uint m1;
+  prSNDFPackMoments(moments, m0, m1);
+  uint at = prSNDFMomentWord(bins) + 2u * bin;
+  prSetBinWordAt(words, at, m0);
+  prSetBinWordAt(words, at + 1u, m1);
 }
 
 // The pool texel of position p (p + prTexelOffset >= 0); false where its tile is not mapped.

@@ -427,16 +427,12 @@ public:
 
   // The colour coordinates of the particle actors up to date (an actor's computed again only when
   // its array, the array's modification time or the component changed); false where they cannot
-  // be kept: CoordinateActors() false, non-finite values (NaN or Inf: the table's NaN and
-  // out-of-range colours are not a function of the clamped value), more particles than a texture
-  // buffer holds.
+  // be kept: non-finite values (NaN or Inf: the table's NaN and out-of-range colours are not a
+  // function of the clamped value), more particles than a texture buffer holds. For actors that
+  // pass CoordinateActors() (Render() checks it first).
   bool UpdateCoordinates(
     const std::vector<vtkActor*>& particles, vtkOpenGLRenderWindow* context, vtkObject* owner)
   {
-    if (!CoordinateActors(particles))
-    {
-      return false;
-    }
     this->Coordinates.resize(particles.size());
     this->CoordinateProps.assign(particles.begin(), particles.end());
     bool solid = false;
@@ -1183,15 +1179,9 @@ public:
     }
     this->Depth->SetContext(context);
     this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    for (auto* image : { &this->Image, &this->Checkpoint, &this->ImageDepth })
-    {
-      const bool depth = image == &this->ImageDepth;
-      (*image)->SetContext(context);
-      (*image)->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
-      (*image)->SetFormat(depth ? GL_RED : GL_RGBA);
-      (*image)->SetDataType(GL_FLOAT);
-      (*image)->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
-    }
+    AllocateImage(this->Image, context, width, height, false);
+    AllocateImage(this->Checkpoint, context, width, height, false);
+    AllocateImage(this->ImageDepth, context, width, height, true);
     vtkOpenGLState* ostate = context->GetState();
     ostate->PushFramebufferBindings();
     this->Target->Bind();
@@ -1220,13 +1210,19 @@ public:
         (*image)->ReleaseGraphicsResources(context);
       }
       *image = vtkSmartPointer<vtkTextureObject>::New();
-      const bool depth = image == &this->DisplayDepth;
-      (*image)->SetContext(context);
-      (*image)->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
-      (*image)->SetFormat(depth ? GL_RED : GL_RGBA);
-      (*image)->SetDataType(GL_FLOAT);
-      (*image)->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
+      AllocateImage(*image, context, width, height, image == &this->DisplayDepth);
     }
+  }
+
+  // a float picture: RGBA, or one depth channel
+  static void AllocateImage(
+    vtkTextureObject* image, vtkOpenGLRenderWindow* context, int width, int height, bool depth)
+  {
+    image->SetContext(context);
+    image->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
+    image->SetFormat(depth ? GL_RED : GL_RGBA);
+    image->SetDataType(GL_FLOAT);
+    image->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
   }
 };
 
