@@ -7,6 +7,10 @@
 //              a the radius of a particle's sphere (0 for other geometry); a
 //              shorter vector (the delegate's clear, geometry without normals):
 //              the normal is taken from the depth buffer
+//   prNormalDepth  the window depth of the fragment that wrote prNormal: the
+//              normal is used only where it equals prDepth (anything drawn
+//              over the opaque geometry without a normal output, e.g. FXAA's
+//              full-screen quad, leaves undefined values in prNormal)
 // prPointAO(pixel) is the occlusion mean_j AO_j in [0, 1] (0: none), with
 // AO_j = sum_i (1 - V_j(w_i)) <w_i, n> / sum_i <w_i, n> over the directions
 // w_i, 1 - V_j(w) the part of the ray p + t w, t <= R_j, that is blocked (see
@@ -17,6 +21,7 @@
 
 uniform sampler2D prDepth;
 uniform sampler2D prNormal;
+uniform sampler2D prNormalDepth;
 uniform mat4 prProjection;        // view -> clip
 uniform mat4 prInverseProjection; // clip -> view
 uniform vec2 prSize;              // the G-buffer's pixels
@@ -64,6 +69,35 @@ float prLevelRadius(int j)
 
 float prPointAO(ivec2 pixel, out float viewDepth);
 
+// The normal and sphere radius (0 for other geometry) the G-buffer holds for a pixel of window
+// depth `depth`, when the fragment that wrote that depth wrote them (see prNormalDepth); false
+// otherwise.
+bool prStoredNormal(ivec2 pixel, float depth, out vec3 n, out float radius)
+{
+  n = vec3(0.0);
+  radius = 0.0;
+  if (texelFetch(prNormalDepth, pixel, 0).r != depth)
+  {
+    return false;
+  }
+  vec3 stored = texelFetch(prNormal, pixel, 0).xyz;
+  float length3 = length(stored);
+  if (!(length3 > 2.5) || isinf(length3))
+  {
+    return false;
+  }
+  n = stored / length3;
+  radius = length3 - 3.0;
+  return true;
+}
+
+// The window depth of a pixel, clamped to the G-buffer (texelFetch outside a texture is
+// undefined).
+float prDepthAt(ivec2 pixel)
+{
+  return texelFetch(prDepth, clamp(pixel, ivec2(0), ivec2(prSize) - 1), 0).r;
+}
+
 // (occlusion, view depth -z, 1) of a pixel with geometry, (0, 0, 0) of the background: what the
 // blur (PointAOBlur.glsl) reads
 vec4 prPointAOTarget(ivec2 texel)
@@ -84,19 +118,17 @@ float prPointAO(ivec2 pixel, out float viewDepth)
   vec2 uv = (vec2(pixel) + 0.5) / prSize;
   vec3 p = prViewPosition(uv, depth);
   viewDepth = (isnan(p.z) || isinf(p.z)) ? 0.0 : max(-p.z, 1e-30);
-  vec3 stored = texelFetch(prNormal, pixel, 0).xyz;
-  float length3 = length(stored);
-  vec3 n = stored / max(length3, 1e-30);
-  float own = length3 > 2.5 ? length3 - 3.0 : 0.0; // the pixel's sphere's radius, or 0
-  if (!(length3 > 2.5))
+  vec3 n;
+  float own; // the pixel's sphere's radius, or 0
+  if (!prStoredNormal(pixel, depth, n, own))
   {
     // no normal from the geometry: the depth buffer's (neighbours on the nearer side)
     vec2 dx = vec2(1.0 / prSize.x, 0.0);
     vec2 dy = vec2(0.0, 1.0 / prSize.y);
-    vec3 px = prViewPosition(uv + dx, texelFetch(prDepth, pixel + ivec2(1, 0), 0).r) - p;
-    vec3 mx = p - prViewPosition(uv - dx, texelFetch(prDepth, pixel - ivec2(1, 0), 0).r);
-    vec3 py = prViewPosition(uv + dy, texelFetch(prDepth, pixel + ivec2(0, 1), 0).r) - p;
-    vec3 my = p - prViewPosition(uv - dy, texelFetch(prDepth, pixel - ivec2(0, 1), 0).r);
+    vec3 px = prViewPosition(uv + dx, prDepthAt(pixel + ivec2(1, 0))) - p;
+    vec3 mx = p - prViewPosition(uv - dx, prDepthAt(pixel - ivec2(1, 0)));
+    vec3 py = prViewPosition(uv + dy, prDepthAt(pixel + ivec2(0, 1))) - p;
+    vec3 my = p - prViewPosition(uv - dy, prDepthAt(pixel - ivec2(0, 1)));
     n = cross(abs(px.z) < abs(mx.z) ? px : mx, abs(py.z) < abs(my.z) ? py : my);
   }
   // facing the viewer (perspective: towards the eye; parallel: +z)
@@ -173,14 +205,14 @@ float prPointAO(ivec2 pixel, out float viewDepth)
         {
           continue; // in front of the visible surface, or behind the pixel's own sphere
         }
-        vec3 so = texelFetch(prNormal, qp, 0).xyz;
-        float lo = length(so);
-        float a = lo > 2.5 ? lo - 3.0 : 0.0;
+        vec3 no;
+        float a;
+        prStoredNormal(qp, occluderDepth, no, a);
         if (a > 0.0)
         {
           // a particle: inside its sphere blocks; behind it, a hidden sphere blocks with the
           // probability prHidden while within the thickness
-          if (length(q - (o - a * (so / lo))) < a)
+          if (length(q - (o - a * no)) < a)
           {
             open = 0.0;
           }

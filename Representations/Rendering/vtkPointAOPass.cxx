@@ -7,6 +7,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -16,6 +17,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkParticleComputeProgram.h"
+#include "vtkParticleGBufferGuard.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkParticleStageTimer.h"
@@ -23,6 +25,7 @@
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 
 #include "vtk_glew.h"
@@ -42,6 +45,9 @@ namespace
 // the tag the pass puts after VTK's lighting (PreReplaceShaderValues) and fills in
 // PostReplaceShaderValues: the G-buffer's normal
 const char* const NormalTag = "//PR::PointAO::Normal";
+
+// the G-buffer: colour, normal (times 3 + the sphere's radius), the depth of the normal's fragment
+const unsigned int NumberOfGBufferTargets = 3;
 
 // The mean world radius of the spheres of one particle prop: at most 65536 of the radii the
 // mapper draws with, evenly spaced (the positive ones), times the mapper's radius scale and the
@@ -83,6 +89,7 @@ public:
   vtkNew<vtkOpenGLFramebufferObject> GBuffer;
   vtkNew<vtkTextureObject> Colour;
   vtkNew<vtkTextureObject> Normal;
+  vtkNew<vtkTextureObject> NormalDepth; // the window depth of the fragment that wrote Normal
   vtkNew<vtkTextureObject> Depth;
   vtkNew<vtkOpenGLFramebufferObject> Work;
   vtkNew<vtkTextureObject> Occlusion;
@@ -90,6 +97,7 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> OcclusionQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> BlurQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
   bool WarnedTranslucent = false;
   // the mean particle radius of the automatic Radius, and what it was computed from
   double MeanRadius = 0.0;
@@ -101,8 +109,8 @@ public:
   void ReleaseTextures(vtkWindow* w)
   {
     for (vtkTextureObject* t :
-      { this->Colour.Get(), this->Normal.Get(), this->Depth.Get(), this->Occlusion.Get(),
-        this->Blurred.Get() })
+      { this->Colour.Get(), this->Normal.Get(), this->NormalDepth.Get(), this->Depth.Get(),
+        this->Occlusion.Get(), this->Blurred.Get() })
     {
       t->ReleaseGraphicsResources(w);
     }
@@ -138,6 +146,11 @@ public:
     this->Normal->SetFormat(GL_RGBA);
     this->Normal->SetDataType(GL_FLOAT);
     this->Normal->Allocate2D(width, height, 4, VTK_FLOAT);
+    setUp(this->NormalDepth);
+    this->NormalDepth->SetInternalFormat(GL_R32F);
+    this->NormalDepth->SetFormat(GL_RED);
+    this->NormalDepth->SetDataType(GL_FLOAT);
+    this->NormalDepth->Allocate2D(width, height, 1, VTK_FLOAT);
     setUp(this->Depth);
     this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
     for (vtkTextureObject* t : { this->Occlusion.Get(), this->Blurred.Get() })
@@ -154,6 +167,7 @@ public:
     this->GBuffer->Bind();
     this->GBuffer->AddColorAttachment(0, this->Colour);
     this->GBuffer->AddColorAttachment(1, this->Normal);
+    this->GBuffer->AddColorAttachment(2, this->NormalDepth);
     this->GBuffer->AddDepthAttachment(this->Depth);
     context->GetState()->PopFramebufferBindings();
     this->Work->SetContext(context);
@@ -228,15 +242,27 @@ bool vtkPointAOPass::PostReplaceShaderValues(
   // lines and points) writes 0: the occlusion takes the depth buffer's normal.
   const bool hasNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos &&
     fragmentShader.find("vertexVC") != std::string::npos;
-  std::string code = "gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);";
+  std::string code = "gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);\n";
   if (vtkParticleSphereMapper::SafeDownCast(mapper) && hasNormal)
   {
-    code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * (3.0 + radiusVC), 1.0);";
+    code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * (3.0 + radiusVC), 1.0);\n";
   }
   else if (hasNormal)
   {
-    code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * 3.0, 1.0);";
+    code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * 3.0, 1.0);\n";
   }
+  // With the normal, the window depth this fragment gives the depth buffer (VTK's and the
+  // particle shaders write gl_FragDepth before the lighting, if at all): the occlusion trusts a
+  // normal only where it equals the depth buffer, i.e. where the fragment that won the depth
+  // test wrote it. Whatever else the delegate draws into the G-buffer after the opaque geometry
+  // (the renderer's FXAA, depth peeling's and volumes' full-screen quads, overlays) writes
+  // undefined values to these targets (its shader has no such output); a fragment that writes
+  // no depth (PR_NO_DEPTH_WRITE: translucent spheres) writes -1, which no depth equals.
+  const bool writesDepth = fragmentShader.find("gl_FragDepth =") != std::string::npos;
+  code += writesDepth
+    ? "#ifdef PR_NO_DEPTH_WRITE\n  gl_FragData[2] = vec4(-1.0, 0.0, 0.0, 1.0);\n#else\n"
+      "  gl_FragData[2] = vec4(gl_FragDepth, 0.0, 0.0, 1.0);\n#endif\n"
+    : "  gl_FragData[2] = vec4(gl_FragCoord.z, 0.0, 0.0, 1.0);\n";
   vtkShaderProgram::Substitute(fragmentShader, NormalTag, code, false);
   return true;
 }
@@ -379,7 +405,8 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   internals.Timer.Begin(0);
   ostate->PushFramebufferBindings();
   internals.GBuffer->Bind();
-  internals.GBuffer->ActivateDrawBuffers(2);
+  internals.GBuffer->ActivateDrawBuffers(NumberOfGBufferTargets);
+  bool heldBackFXAA = false;
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
     vtkOpenGLState::ScopedglScissor scissor(ostate);
@@ -393,6 +420,8 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     glClearBufferfv(GL_DEPTH, 0, &far);
     const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearBufferfv(GL_COLOR, 1, zero);
+    const GLfloat noDepth[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
+    glClearBufferfv(GL_COLOR, 2, noDepth);
     // the colour's alpha 0 (the background as cleared or drawn stays): blended over it, the
     // alpha becomes the coverage of what the delegate draws, so that a pixel only partly
     // covered (the translucent rim of an emission-absorption sphere) is darkened only as much
@@ -403,6 +432,9 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     vtkRenderState state(ren);
     state.SetFrameBuffer(internals.GBuffer);
     state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    // normals and depths as written; the renderer's FXAA on the composite (step 5)
+    vtkParticleGBufferGuard guard(ren, NumberOfGBufferTargets);
+    heldBackFXAA = guard.GetHeldBackFXAA();
     this->PreRender(&state);
     this->DelegatePass->Render(&state);
     this->PostRender(&state);
@@ -471,8 +503,10 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
         vtkShaderProgram* program = quad->Program;
         internals.Depth->Activate();
         internals.Normal->Activate();
+        internals.NormalDepth->Activate();
         program->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
         program->SetUniformi("prNormal", internals.Normal->GetTextureUnit());
+        program->SetUniformi("prNormalDepth", internals.NormalDepth->GetTextureUnit());
         program->SetUniformMatrix4x4("prProjection", proj);
         program->SetUniformMatrix4x4("prInverseProjection", inv);
         const float size[2] = { static_cast<float>(width), static_cast<float>(height) };
@@ -493,6 +527,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
         quad->Render();
         internals.Depth->Deactivate();
         internals.Normal->Deactivate();
+        internals.NormalDepth->Deactivate();
       }
       else
       {
@@ -610,6 +645,20 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   {
     vtkErrorMacro(<< "Could not build the PointAO composite shader.");
   }
+
+  // 5. the renderer's FXAA, held back from the delegate, on the final picture
+  if (heldBackFXAA)
+  {
+    if (!internals.FXAA)
+    {
+      internals.FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
+    }
+    if (ren->GetFXAAOptions())
+    {
+      internals.FXAA->UpdateConfiguration(ren->GetFXAAOptions());
+    }
+    internals.FXAA->Execute(ren);
+  }
   internals.Timer.End();
   vtkOpenGLCheckErrorMacro("failed after vtkPointAOPass::Render");
 }
@@ -626,6 +675,10 @@ void vtkPointAOPass::ReleaseGraphicsResources(vtkWindow* w)
       (*quad)->ReleaseGraphicsResources(w);
       quad->reset();
     }
+  }
+  if (internals.FXAA)
+  {
+    internals.FXAA->ReleaseGraphicsResources();
   }
   internals.Timer.Release(
     vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));

@@ -25,6 +25,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkParticleComputeProgram.h"
+#include "vtkParticleGBufferGuard.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleStageTimer.h"
 #include "vtkParticleViewport.h"
@@ -2246,25 +2247,17 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
       vtkRenderState sampleState(ren);
       sampleState.SetFrameBuffer(internals.Target);
       sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
-      // the particle targets take each fragment as it is: every shader writes alpha 1 there, so
-      // blending (which VTK keeps on for opaque geometry, too) would only add a read-modify-write
-      // of two 16-bit float targets per fragment
-      for (unsigned int a = 1; a < NumberOfAttachments; ++a)
+      // the particle targets take each fragment as it is (every shader writes alpha 1 there:
+      // blending, which VTK keeps on for opaque geometry too, would only add a read-modify-write
+      // of two 16-bit float targets per fragment); no FXAA over them (nor over the S-NDF
+      // picture, which is box-filtered over each pixel already)
       {
-        glDisablei(GL_BLEND, a);
+        vtkParticleGBufferGuard guard(ren, NumberOfAttachments);
+        this->PreRender(&sampleState);
+        this->DelegatePass->Render(&sampleState);
+        this->PostRender(&sampleState);
       }
-      this->PreRender(&sampleState);
-      this->DelegatePass->Render(&sampleState);
-      this->PostRender(&sampleState);
       internals.DeactivateCoordinates(); // (SetShaderParameters activated them)
-      // back to what draw buffer 0 has (GL's state: VTK's state cache can be out of step with it)
-      if (glIsEnabledi(GL_BLEND, 0))
-      {
-        for (unsigned int a = 1; a < NumberOfAttachments; ++a)
-        {
-          glEnablei(GL_BLEND, a);
-        }
-      }
       this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     }
     ostate->PopFramebufferBindings();
