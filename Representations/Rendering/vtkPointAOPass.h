@@ -77,6 +77,16 @@
  *   occluders and are not darkened where nothing opaque lies behind them: translucent
  *   particles get a warning (once) pointing to the object-space passes.
  *
+ * The G-buffer holds, besides colour and depth, the normal (times 3 + the sphere's radius) and
+ * the window depth of the fragment that wrote it: a normal is used only where that depth equals
+ * the depth buffer's. Anything the delegate draws over the opaque geometry without the pass's
+ * shader hook (depth peeling's and volumes' full-screen quads, overlays) leaves undefined values
+ * in the normal target; there the occlusion takes the depth buffer's normal instead (the same
+ * picture every frame). The renderer's FXAA (vtkRenderer::UseFXAA, on in ParaView by default)
+ * would run inside the delegate over every G-buffer target: it is held back and applied to the
+ * composited picture instead (vtkParticleGBufferGuard), so a renderer that asks for FXAA gets it
+ * on PointAO's picture even under a delegate that ignores it (vtkRenderStepsPass).
+ *
  * A renderer whose viewport does not fill its window (several renderers side by side in one
  * plain VTK window) is drawn without ambient occlusion, with a warning: the delegate's camera
  * pass sets up the window's viewport, not the G-buffer's. ParaView's views fill their windows.
@@ -201,7 +211,8 @@ public:
   /**
    * GPU time of the last Render()'s stages (timer queries, read at the next Render() or by
    * GetStageSeconds): 0 the scene into the G-buffer, 1 the occlusion, 2 the horizontal blur,
-   * 3 the composite with the vertical blur. Off by default (the queries cost a little).
+   * 3 the composite with the vertical blur (and the renderer's FXAA, when it asks for it).
+   * Off by default (the queries cost a little).
    */
   vtkSetMacro(CollectTimings, bool);
   vtkGetMacro(CollectTimings, bool);

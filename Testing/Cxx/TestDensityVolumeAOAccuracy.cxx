@@ -220,6 +220,7 @@ int TestDensityVolumeAOAccuracy(int argc, char* argv[])
   renderer->SetPass(ao);
   window->Render();
   const std::vector<double> gpu = Red(window);
+  bool repeatable = vtkParticleImageComparison::TestRepeatable(window, "TestDensityVolumeAOAccuracy");
 
   vtkNew<vtkParticleReferenceRenderer> reference;
   reference->SetRenderer(renderer);
@@ -290,5 +291,5 @@ int TestDensityVolumeAOAccuracy(int argc, char* argv[])
   ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 1, "no volume rebuild for the strength");
   renderer->SetPass(nullptr);
   ao->ReleaseGraphicsResources(window);
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ok && repeatable ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -11,7 +11,9 @@
 //   - another size: not compared, which TestRejects reports as a rejection for the wrong reason
 //     (false) and TestImages as a failure;
 //   - a missing baseline file: TestImage fails (and still writes the image);
-//   - criteria so loose that a 10 % darker baseline passes: TestImage fails.
+//   - criteria so loose that a 10 % darker baseline passes: TestImage fails;
+//   - the repeatability check (TestIdentical): the same picture and its float copy are
+//     identical; one value one step off, a moved edge, NaN and another size are not.
 // It also checks the numbers behind the score: mean and maximum per channel, share of pixels
 // over tolerance, the bounding box of those pixels, and the mask sizes.
 #include "prTestUtilities.h"
@@ -204,5 +206,40 @@ int TestImageComparison(int argc, char* argv[])
   ok &= prTest::Check(!loose->TestImage(Disk(80.0, 60.0, 40.0), baselineFile.c_str(),
                         temp.c_str(), "TestImageComparison_loose"),
     "criteria that accept a 10 % darker picture fail the test");
+
+  // the repeatability check: identical only when every 8-bit RGB value is the same
+  ok &= prTest::Check(
+    vtkParticleImageComparison::TestIdentical(baseline, Disk(80.0, 60.0, 40.0), "same picture"),
+    "the same picture is identical");
+  vtkSmartPointer<vtkImageData> oneStep = Disk(80.0, 60.0, 40.0);
+  vtkDataArray* oneStepRGB = oneStep->GetPointData()->GetScalars();
+  oneStepRGB->SetComponent(37 * Width + 101, 2, oneStepRGB->GetComponent(37 * Width + 101, 2) + 1);
+  ok &= prTest::Check(
+    !vtkParticleImageComparison::TestIdentical(baseline, oneStep, "one value one step off"),
+    "one channel of one pixel 1/255 off is not identical");
+  ok &= prTest::Check(
+    !vtkParticleImageComparison::TestIdentical(baseline, moved1, "edge moved 1 px"),
+    "a moved edge is not identical");
+  ok &= prTest::Check(
+    !vtkParticleImageComparison::TestIdentical(baseline, nan, "NaN pixel"), "NaN is not identical");
+  ok &= prTest::Check(!vtkParticleImageComparison::TestIdentical(baseline, small, "other size"),
+    "another size is not identical");
+  // a float picture of the same 8-bit values (as GrabColorBuffer reads them) is identical
+  vtkNew<vtkImageData> asFloat;
+  asFloat->SetDimensions(Width, Height, 1);
+  vtkNew<vtkDoubleArray> floats;
+  floats->SetNumberOfComponents(3);
+  floats->SetNumberOfTuples(Width * Height);
+  vtkDataArray* bytes = baseline->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < Width * Height; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      floats->SetComponent(i, c, static_cast<float>(bytes->GetComponent(i, c) / 255.0));
+    }
+  }
+  asFloat->GetPointData()->SetScalars(floats);
+  ok &= prTest::Check(vtkParticleImageComparison::TestIdentical(baseline, asFloat, "as float"),
+    "the float picture of the same 8-bit values is identical");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -162,7 +162,7 @@ int TestParticleSphereMapperExtremes(int argc, char* argv[])
   }
   window->Render();
 
-  bool ok = true;
+  bool ok = vtkParticleImageComparison::TestRepeatable(window, "TestParticleSphereMapperExtremes");
   for (int c = 0; c < 6; ++c)
   {
     const double coverage = Coverage(window, renderers[c]);

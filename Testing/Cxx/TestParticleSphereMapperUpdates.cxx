@@ -5,6 +5,7 @@
 // - a time series whose particle count changes (5000 -> 11033 -> 0 -> 11033) and then only its
 //   radii draws at every step exactly what a fresh mapper draws for that step's data.
 #include "prTestUtilities.h"
+#include "vtkParticleImageComparison.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -89,7 +90,7 @@ int TestParticleSphereMapperUpdates(int argc, char* argv[])
   renderer->ResetCamera();
   window->Render();
 
-  bool ok = true;
+  bool ok = vtkParticleImageComparison::TestRepeatable(window, "TestParticleSphereMapperUpdates");
   vtkIdType uploads = mapper->GetNumberOfUploads();
   ok &= prTest::Check(uploads == 1, "first frame: expected 1 upload");
   auto expectUploads = [&](vtkIdType expected, const std::string& what) {

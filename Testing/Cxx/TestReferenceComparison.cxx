@@ -123,6 +123,8 @@ bool RunScene(
     scene.Name + ": cannot read the colour buffer");
   ok &= prTest::Check(vtkParticleImageComparison::GrabDepthBuffer(window, gpuDepth, renderer),
     scene.Name + ": cannot read the depth buffer");
+  ok &= vtkParticleImageComparison::TestRepeatable(
+    window, ("TestReferenceComparison_" + scene.Name).c_str(), renderer);
 
   vtkNew<vtkParticleReferenceRenderer> reference;
   reference->SetRenderer(renderer);

@@ -211,6 +211,8 @@ bool RunScene(const Scene& scene, vtkPolyData* particles, double radius, double 
   vtkNew<vtkImageData> gpu;
   ok &= prTest::Check(
     vtkParticleImageComparison::GrabColorBuffer(window, gpu), scene.Name + ": image read back");
+  ok &= vtkParticleImageComparison::TestRepeatable(
+    window, ("TestTransparentSphereAccuracy_" + scene.Name).c_str());
   if (!ok)
   {
     return false;

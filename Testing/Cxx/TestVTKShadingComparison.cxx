@@ -156,6 +156,8 @@ int TestVTKShadingComparison(int argc, char* argv[])
 
     vtkSmartPointer<vtkImageData> vtkImage = Render(window, actor, vtks);
     vtkSmartPointer<vtkImageData> ourImage = Render(window, actor, ours);
+    ok &= vtkParticleImageComparison::TestRepeatable(
+      window, (std::string("TestVTKShadingComparison_") + scene.Name).c_str());
 
     // the visible-surface ids of the spheres (radii and colours from the raw arrays)
     vtkNew<vtkParticleReferenceRenderer> reference;

@@ -36,7 +36,8 @@ struct ImageCriteria
 /**
  * The baseline test of the suite: the window's image against the -V baseline under the
  * criteria, through vtkParticleImageComparison::TestImage (report, <Test>.png and
- * <Test>.diff.png in the -T directory, built-in must-fail checks). A missing -V argument or
+ * <Test>.diff.png in the -T directory, built-in must-fail checks), and the frame drawn once more
+ * must be identical (vtkParticleImageComparison::TestRepeatable). A missing -V argument or
  * baseline file is a failure.
  * In must-fail mode (the test was started with --must-fail CASE, see MustFail()) the test has
  * drawn a wrong picture on purpose: then true means the picture was rejected for its pixels.

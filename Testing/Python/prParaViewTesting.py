@@ -191,15 +191,30 @@ def set_camera(view, position, focal_point, view_up=(0, 0, 1), view_angle=30.0):
     view.CameraParallelProjection = 0
 
 
-def capture(view, path):
+# the captures whose frame, drawn once more, differed (see capture); finish() fails on any
+REPEAT_FAILURES = []
+
+
+def capture(view, path, repeat=True):
     """Render the view, save it to `path` (PNG, the view's size) and return the image read back
-    (vtkImageData)."""
+    (vtkImageData). With repeat (the default: every image test of the suite) the view is saved
+    once more and the two pictures must be identical, bit for bit
+    (vtkParticleImageComparison.TestIdentical; finish() fails otherwise). repeat=False only for
+    a progressive view whose next frame refines the picture (S-NDF while it converges)."""
     simple.Render(view)
     simple.SaveScreenshot(path, view, ImageResolution=list(view.ViewSize), TransparentBackground=0)
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
+    image = read_png(path)
+    if repeat:
+        again = os.path.splitext(path)[0] + "_repeat.png"
+        simple.SaveScreenshot(again, view, ImageResolution=list(view.ViewSize),
+                              TransparentBackground=0)
+        name = os.path.splitext(os.path.basename(path))[0]
+        if not particlerendering.vtkParticleImageComparison.TestIdentical(
+                image, read_png(again), name):
+            REPEAT_FAILURES.append(name)
+        else:
+            os.remove(again)
+    return image
 
 
 def must_fail(args, case):
@@ -270,6 +285,9 @@ def finish(ok):
     fails with an X error while tearing down OpenGL, so even sys.exit(0) gives a non-zero
     status.)"""
     sys.stdout.flush()
+    if REPEAT_FAILURES:
+        print("FAIL: the same frame drawn twice differs: %s" % ", ".join(REPEAT_FAILURES))
+        ok = False
     if not ok:
         raise TestFailure("FAILED (see the messages above)")
     print("PASSED")

@@ -856,6 +856,91 @@ bool vtkParticleImageComparison::GrabDepthBuffer(
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleImageComparison::TestIdentical(
+  vtkImageData* first, vtkImageData* again, const char* name)
+{
+  const char* label = name ? name : "picture";
+  ImageValues va;
+  ImageValues vb;
+  if (!va.Set(first, "first") || !vb.Set(again, "again") || va.Width != vb.Width ||
+    va.Height != vb.Height || va.Components < 3 || vb.Components < 3)
+  {
+    std::cout << "REPEAT " << label << ": NOT COMPARED (no RGB images of the same size)\n";
+    std::cout.flush();
+    return false;
+  }
+  // the 8-bit value of a channel (NaN and Inf, never in an 8-bit picture, as -1)
+  auto byte = [](double v) { return std::isfinite(v) ? std::lround(v * 255.0) : -1L; };
+  long long differing = 0;
+  long worst = 0;
+  int worstPixel[2] = { -1, -1 };
+  int box[4] = { va.Width, -1, va.Height, -1 };
+  const vtkIdType pixels = static_cast<vtkIdType>(va.Width) * va.Height;
+  for (vtkIdType pixel = 0; pixel < pixels; ++pixel)
+  {
+    long largest = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const long a = byte(va.Get(pixel, c));
+      const long b = byte(vb.Get(pixel, c));
+      largest = std::max(largest, (a < 0 || b < 0) ? (a == b ? 0L : 255L) : std::abs(a - b));
+    }
+    if (largest == 0)
+    {
+      continue;
+    }
+    const int x = static_cast<int>(pixel % va.Width);
+    const int y = static_cast<int>(pixel / va.Width);
+    ++differing;
+    if (largest > worst)
+    {
+      worst = largest;
+      worstPixel[0] = x;
+      worstPixel[1] = y;
+    }
+    box[0] = std::min(box[0], x);
+    box[1] = std::max(box[1], x);
+    box[2] = std::min(box[2], y);
+    box[3] = std::max(box[3], y);
+  }
+  std::cout << "REPEAT " << label << ": ";
+  if (differing == 0)
+  {
+    std::cout << "identical (" << va.Width << " x " << va.Height << ")\n";
+  }
+  else
+  {
+    std::cout << "DIFFERS on " << differing << " of " << pixels << " pixels, max " << worst
+              << "/255 at (" << worstPixel[0] << ", " << worstPixel[1] << "), in x " << box[0]
+              << ".." << box[1] << ", y " << box[2] << ".." << box[3]
+              << " (the same frame drawn twice)\n";
+  }
+  std::cout.flush();
+  return differing == 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleImageComparison::TestRepeatable(
+  vtkRenderWindow* window, const char* name, vtkRenderer* viewport)
+{
+  vtkNew<vtkImageData> first;
+  vtkNew<vtkImageData> again;
+  window->Render();
+  if (!GrabColorBuffer(window, first, viewport))
+  {
+    std::cout << "REPEAT " << (name ? name : "picture") << ": NOT COMPARED (no picture)\n";
+    return false;
+  }
+  window->Render();
+  if (!GrabColorBuffer(window, again, viewport))
+  {
+    std::cout << "REPEAT " << (name ? name : "picture") << ": NOT COMPARED (no picture)\n";
+    return false;
+  }
+  return TestIdentical(first, again, name);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleImageComparison::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

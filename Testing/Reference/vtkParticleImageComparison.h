@@ -161,6 +161,27 @@ public:
   const char* GetFailureReason() { return this->FailureReason.c_str(); }
   vtkGetVector4Macro(ChannelMeanAbsError, double);
 
+  /**
+   * The repeatability check of the suite: the same frame drawn twice must give the same picture.
+   * Compares the RGB channels of two images of the same size exactly, as the 8-bit values a user
+   * sees and saves (values of floating-point images are taken times 255 and rounded; two values
+   * differ when their 8-bit values do). Prints "REPEAT name: identical (w x h)" or "REPEAT name:
+   * DIFFERS ..." (how many pixels, the largest difference and where, the box of the differing
+   * pixels) and returns whether the images are identical; images that cannot be compared fail.
+   */
+  static bool TestIdentical(vtkImageData* first, vtkImageData* again, const char* name);
+
+  /**
+   * Repeatability of a window's frame: renders the window twice without changing anything,
+   * reading its render framebuffer (the back buffer, as GrabColorBuffer) after each, and compares
+   * the two through TestIdentical. (Both frames come from Render(): vtkWindowToImageFilter
+   * renders with a camera recomputed through atan(tan()), whose frame may differ from Render()'s
+   * in the last bit.) With a renderer, only its (tiled) viewport is compared. Not for progressive
+   * passes, whose next frame refines the picture.
+   */
+  static bool TestRepeatable(
+    vtkRenderWindow* window, const char* name, vtkRenderer* viewport = nullptr);
+
   ///@{
   /**
    * Scores of the built-in must-fail pictures of the last TestImage (the baseline darkened by

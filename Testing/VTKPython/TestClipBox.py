@@ -20,7 +20,7 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import check, finish, offscreen_window, particles_from
+from prVTKTesting import check, check_repeatable, finish, offscreen_window, particles_from
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
@@ -65,7 +65,9 @@ def render(xyz, offset, opacity, model, box, drawn=None):
     grab.SetInputBufferTypeToRGBA()
     grab.ReadFrontBufferOff()
     grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(float)
+    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(float)
+    check_repeatable(window)
+    return pixels
 
 
 def composite(front, back):

@@ -6,7 +6,8 @@ from plain VTK Python. Checked:
 - convergence: an fcc crystal of two species with about two pixels per atom, 256 jittered
   samples per pixel, against the 16x16 super-sampled core (rendered at 16x the size and box
   filtered): the plain one-sample image is far off, the S-NDF image close; the frame of a change
-  is the plain image;
+  is the plain image; the converged picture drawn again, and the picture a fresh pass converges
+  to on the same view, are identical to it, bit for bit;
 - shading per sample: the shaded bin sums kept up to date sample by sample equal those formed
   again from the bins;
 - re-lighting: another light re-shades the converged S-NDFs without a sample pass and matches
@@ -213,8 +214,20 @@ check(plain_error[0] > 4.0, "the one-sample image aliases (mean %.2f)" % plain_e
 check(sndf_error[0] < 0.5 and sndf_error[1] < 4.5 and sndf_error[2] < 8.0,
       "S-NDF within mean 0.5, p99 4.5, max 8 /255 of the super-sampled core")
 passes = sndf.GetNumberOfSamplePasses()
-image(window)
+again = image(window)
 check(sndf.GetNumberOfSamplePasses() == passes, "converged: no more sample passes")
+# the same frame drawn twice (a progressive pass: the converged picture, and the whole
+# refinement run again by a pass that starts afresh) gives the same picture, bit for bit
+print("converged picture drawn again: max %d/255" % np.abs(again - out).max())
+check(np.array_equal(again, out), "converged: the same frame drawn twice differs")
+fresh = pr.vtkSNDFRenderPass()
+fresh.SetSamplesPerFrame(32)
+_, fresh_window, _ = scene(xyz, rgb, (W, H), fresh)
+image(fresh_window)
+converge(fresh, fresh_window)
+rerun = image(fresh_window)
+print("a fresh pass converged on the same view: max %d/255" % np.abs(rerun - out).max())
+check(np.array_equal(rerun, out), "a fresh pass converges to another picture")
 
 # --- particles several pixels wide: shaded without facets --------------------------------------
 # (each pixel sees a small patch of one sphere, so its samples crowd into part of one bin; the

@@ -80,6 +80,9 @@ def main():
     if not comparison.TestImage(grab.GetOutput(), args.baseline, args.temp, name):
         print("FAIL: image differs from the baseline (see %s)" % args.temp)
         return 1
+    if not particlerendering.vtkParticleImageComparison.TestRepeatable(window, name):
+        print("FAIL: the same frame drawn twice differs")
+        return 1
 
     # The transparent mapper from plain VTK Python: the same droplets with the maximum opacity
     # from the speed, composited by the mapper (one sort, or -- the droplets' spheres overlap --
@@ -104,6 +107,9 @@ def main():
     window.Render()
     translucent = vtkUnsignedCharArray()
     window.GetRGBACharPixelData(0, 0, 499, 399, 1, translucent)
+    if not particlerendering.vtkParticleImageComparison.TestRepeatable(window, name + " translucent"):
+        print("FAIL: the same translucent frame drawn twice differs")
+        return 1
     changed = sum(1 for i in range(0, translucent.GetNumberOfValues(), 4 * 7)
                   if translucent.GetValue(i) != opaque.GetValue(i))
     print("transparent mapper: %d sort(s), %d of %d sampled pixels differ from the opaque image"

@@ -59,14 +59,54 @@ def open_reader(reader, path):
     return reader, messages, time_steps(reader)
 
 
-def grab_image(window):
-    """The window's RGB(A) pixels as an (N, components) int numpy array."""
+def grab_image(window, repeat=True):
+    """The window's RGB(A) pixels as an (N, components) int numpy array (the filter renders the
+    window first). With repeat (the default: every image test of the suite), the same frame
+    grabbed once more must be identical, bit for bit (vtkParticleImageComparison.TestIdentical,
+    a failed check otherwise); repeat=False only for a progressive pass, whose next frame
+    refines the picture. (vtkWindowToImageFilter renders with the view angle recomputed through
+    atan(tan()): its frame may differ from a plain Render()'s in the last bit of the camera, so
+    the repeat is grabbed the same way.)"""
     from vtkmodules.util.numpy_support import vtk_to_numpy
+    first = _filter_grab(window)
+    if repeat:
+        _REPEATS[0] += 1
+        name = _repeat_name()
+        import particlerendering as pr
+        check(pr.vtkParticleImageComparison.TestIdentical(first, _filter_grab(window), name),
+              "%s: the same frame drawn twice differs" % name)
+    return vtk_to_numpy(first.GetPointData().GetScalars()).astype(int)
+
+
+def _filter_grab(window):
+    from vtkmodules.vtkCommonDataModel import vtkImageData
     from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+    image = vtkImageData()
+    image.DeepCopy(grab.GetOutput())
+    return image
+
+
+_REPEATS = [0]
+
+
+def _repeat_name():
+    import os
+    import sys
+    return "%s frame %d" % (os.path.basename(sys.argv[0]), _REPEATS[0])
+
+
+def check_repeatable(window, name=None):
+    """The repeatability check: the window's frame drawn twice must be identical, bit for bit
+    (vtkParticleImageComparison.TestRepeatable; a failed check otherwise). Returns whether it
+    is."""
+    import particlerendering as pr
+    _REPEATS[0] += 1
+    name = name or _repeat_name()
+    return check(pr.vtkParticleImageComparison.TestRepeatable(window, name),
+                 "%s: the same frame drawn twice differs" % name)
 
 
 def picked_ids(renderer, area):
@@ -223,3 +263,24 @@ def pan_camera(camera, pixels_right, pixels_up, height):
     move = pixel * (pixels_right * right + pixels_up * up)
     camera.SetPosition(*(np.array(camera.GetPosition()) + move))
     camera.SetFocalPoint(*(np.array(camera.GetFocalPoint()) + move))
+
+
+def gas_and_slab(count=100000, seed=7):
+    """A LAMMPS-like scene of `count` particles (radius 0.5, lattice units): a dense FCC slab of
+    40 x 40 x 11 cells (70 400 atoms, lattice constant 1.5874, type 1) between two layers of gas
+    (the rest, uniform random, 40 units thick above and below the slab, type 2). Returns
+    (xyz, radius, type) as float64, float32 and int32 arrays."""
+    import numpy as np
+    a = 1.5874
+    g = np.arange(40)
+    cells = np.stack(np.meshgrid(g, g, np.arange(11), indexing="ij"), -1).reshape(-1, 3)
+    offsets = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+    slab = ((cells[:, None, :] + offsets[None]) * a).reshape(-1, 3)
+    slab = slab[:count]
+    rng = np.random.default_rng(seed)
+    n_gas = count - len(slab)
+    gas = rng.random((n_gas, 3)) * [40 * a, 40 * a, 80.0]
+    gas[:, 2] = np.where(gas[:, 2] < 40.0, gas[:, 2] - 40.0, gas[:, 2] - 40.0 + 11 * a)
+    xyz = np.vstack([slab, gas])
+    kinds = np.r_[np.ones(len(slab), np.int32), np.full(n_gas, 2, np.int32)]
+    return xyz, np.full(len(xyz), 0.5, np.float32), kinds
