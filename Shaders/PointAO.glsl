@@ -7,10 +7,11 @@
 //              a the radius of a particle's sphere (0 for other geometry); a
 //              shorter vector (the delegate's clear, geometry without normals):
 //              the normal is taken from the depth buffer
-//   prNormalDepth  the window depth of the fragment that wrote prNormal: the
-//              normal is used only where it equals prDepth (anything drawn
-//              over the opaque geometry without a normal output, e.g. FXAA's
-//              full-screen quad, leaves undefined values in prNormal)
+//   prNormalDepth  the stamp of the fragment that wrote prNormal, its window
+//              depth + prStampKey: the normal is used only where the stamp
+//              equals prDepth + prStampKey (anything drawn over the opaque
+//              geometry without a normal output, e.g. depth peeling's full-
+//              screen quad, leaves undefined values in both targets)
 // prPointAO(pixel) is the occlusion mean_j AO_j in [0, 1] (0: none), with
 // AO_j = sum_i (1 - V_j(w_i)) <w_i, n> / sum_i <w_i, n> over the directions
 // w_i, 1 - V_j(w) the part of the ray p + t w, t <= R_j, that is blocked (see
@@ -22,6 +23,8 @@
 uniform sampler2D prDepth;
 uniform sampler2D prNormal;
 uniform sampler2D prNormalDepth;
+uniform float prStampKey;
+uniform int prStoredNormals;      // 0: the normal targets were not drawn (see vtkPointAOPass)
 uniform mat4 prProjection;        // view -> clip
 uniform mat4 prInverseProjection; // clip -> view
 uniform vec2 prSize;              // the G-buffer's pixels
@@ -70,13 +73,13 @@ float prLevelRadius(int j)
 float prPointAO(ivec2 pixel, out float viewDepth);
 
 // The normal and sphere radius (0 for other geometry) the G-buffer holds for a pixel of window
-// depth `depth`, when the fragment that wrote that depth wrote them (see prNormalDepth); false
-// otherwise.
+// depth `depth`, when the fragment that wrote that depth wrote them (see prNormalDepth; the sum
+// is rounded as the hooked fragment rounded it); false otherwise.
 bool prStoredNormal(ivec2 pixel, float depth, out vec3 n, out float radius)
 {
   n = vec3(0.0);
   radius = 0.0;
-  if (texelFetch(prNormalDepth, pixel, 0).r != depth)
+  if (prStoredNormals == 0 || texelFetch(prNormalDepth, pixel, 0).r != depth + prStampKey)
   {
     return false;
   }

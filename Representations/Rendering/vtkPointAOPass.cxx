@@ -46,8 +46,14 @@ namespace
 // PostReplaceShaderValues: the G-buffer's normal
 const char* const NormalTag = "//PR::PointAO::Normal";
 
-// the G-buffer: colour, normal (times 3 + the sphere's radius), the depth of the normal's fragment
+// the G-buffer: colour, normal (times 3 + the sphere's radius), the stamp of the normal's fragment
 const unsigned int NumberOfGBufferTargets = 3;
+
+// The stamp a hooked fragment writes with its normal: its window depth plus this key, a value no
+// other shader computes (a foreign shader's undefined outputs may hold the depth it sampled, as
+// llvmpipe's do under dual depth peeling). Exact in binary; passed to the occlusion as prStampKey.
+const char* const StampKeyGLSL = "19.75";
+const float StampKey = 19.75f;
 
 // The mean world radius of the spheres of one particle prop: at most 65536 of the radii the
 // mapper draws with, evenly spaced (the positive ones), times the mapper's radius scale and the
@@ -89,7 +95,7 @@ public:
   vtkNew<vtkOpenGLFramebufferObject> GBuffer;
   vtkNew<vtkTextureObject> Colour;
   vtkNew<vtkTextureObject> Normal;
-  vtkNew<vtkTextureObject> NormalDepth; // the window depth of the fragment that wrote Normal
+  vtkNew<vtkTextureObject> NormalDepth; // the stamp of the fragment that wrote Normal
   vtkNew<vtkTextureObject> Depth;
   vtkNew<vtkOpenGLFramebufferObject> Work;
   vtkNew<vtkTextureObject> Occlusion;
@@ -251,18 +257,21 @@ bool vtkPointAOPass::PostReplaceShaderValues(
   {
     code = "gl_FragData[1] = vec4(normalize(normalVCVSOutput) * 3.0, 1.0);\n";
   }
-  // With the normal, the window depth this fragment gives the depth buffer (VTK's and the
-  // particle shaders write gl_FragDepth before the lighting, if at all): the occlusion trusts a
-  // normal only where it equals the depth buffer, i.e. where the fragment that won the depth
-  // test wrote it. Whatever else the delegate draws into the G-buffer after the opaque geometry
-  // (the renderer's FXAA, depth peeling's and volumes' full-screen quads, overlays) writes
-  // undefined values to these targets (its shader has no such output); a fragment that writes
-  // no depth (PR_NO_DEPTH_WRITE: translucent spheres) writes -1, which no depth equals.
+  // With the normal, its stamp: the window depth this fragment gives the depth buffer (VTK's and
+  // the particle shaders write gl_FragDepth before the lighting, if at all; stored clamped to
+  // [0, 1]) plus the key. The occlusion trusts a normal only where the stamp equals the depth
+  // buffer's value plus the key, i.e. where the fragment that won the depth test wrote it.
+  // Whatever else the delegate draws into the G-buffer after the opaque geometry (depth
+  // peeling's and volumes' full-screen quads, overlays) writes undefined values to these
+  // targets (its shader has no such output); a fragment that writes no depth
+  // (PR_NO_DEPTH_WRITE: translucent spheres) writes -1, which no stamp equals.
+  const std::string key = StampKeyGLSL;
   const bool writesDepth = fragmentShader.find("gl_FragDepth =") != std::string::npos;
   code += writesDepth
     ? "#ifdef PR_NO_DEPTH_WRITE\n  gl_FragData[2] = vec4(-1.0, 0.0, 0.0, 1.0);\n#else\n"
-      "  gl_FragData[2] = vec4(gl_FragDepth, 0.0, 0.0, 1.0);\n#endif\n"
-    : "  gl_FragData[2] = vec4(gl_FragCoord.z, 0.0, 0.0, 1.0);\n";
+      "  gl_FragData[2] = vec4(clamp(gl_FragDepth, 0.0, 1.0) + " + key +
+      ", 0.0, 0.0, 1.0);\n#endif\n"
+    : "  gl_FragData[2] = vec4(gl_FragCoord.z + " + key + ", 0.0, 0.0, 1.0);\n";
   vtkShaderProgram::Substitute(fragmentShader, NormalTag, code, false);
   return true;
 }
@@ -341,6 +350,20 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   }
   internals.WarnedTranslucent = translucent;
 
+  // the G-buffer's normals: only when every visible prop is opaque geometry of a vtkActor. The
+  // passes that draw translucent geometry (depth peeling), volumes and 2D overlays write into
+  // the G-buffer with shaders that leave the normal targets undefined, and whether a driver
+  // writes garbage there or keeps the values varies (llvmpipe: by tile and thread): with any of
+  // them in view the occlusion takes the depth buffer's normals, the same each frame
+  bool storedNormals = true;
+  for (int i = 0; i < s->GetPropArrayCount() && storedNormals; ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    storedNormals = !prop->GetVisibility() ||
+      (vtkActor::SafeDownCast(prop) && !prop->HasTranslucentPolygonalGeometry());
+  }
+  const unsigned int targets = storedNormals ? NumberOfGBufferTargets : 1;
+
   // the radius: set, or four mean particle radii, or 2 % of the visible props' diagonal
   double radius = this->Radius;
   if (!(radius > 0.0))
@@ -405,7 +428,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   internals.Timer.Begin(0);
   ostate->PushFramebufferBindings();
   internals.GBuffer->Bind();
-  internals.GBuffer->ActivateDrawBuffers(NumberOfGBufferTargets);
+  internals.GBuffer->ActivateDrawBuffers(targets);
   bool heldBackFXAA = false;
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
@@ -419,9 +442,12 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     const GLfloat far = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &far);
     const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    glClearBufferfv(GL_COLOR, 1, zero);
-    const GLfloat noDepth[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
-    glClearBufferfv(GL_COLOR, 2, noDepth);
+    if (storedNormals)
+    {
+      const GLfloat noStamp[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
+      glClearBufferfv(GL_COLOR, 1, zero);
+      glClearBufferfv(GL_COLOR, 2, noStamp);
+    }
     // the colour's alpha 0 (the background as cleared or drawn stays): blended over it, the
     // alpha becomes the coverage of what the delegate draws, so that a pixel only partly
     // covered (the translucent rim of an emission-absorption sphere) is darkened only as much
@@ -433,7 +459,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     state.SetFrameBuffer(internals.GBuffer);
     state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
     // normals and depths as written; the renderer's FXAA on the composite (step 5)
-    vtkParticleGBufferGuard guard(ren, NumberOfGBufferTargets);
+    vtkParticleGBufferGuard guard(ren, targets);
     heldBackFXAA = guard.GetHeldBackFXAA();
     this->PreRender(&state);
     this->DelegatePass->Render(&state);
@@ -507,6 +533,8 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
         program->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
         program->SetUniformi("prNormal", internals.Normal->GetTextureUnit());
         program->SetUniformi("prNormalDepth", internals.NormalDepth->GetTextureUnit());
+        program->SetUniformf("prStampKey", StampKey);
+        program->SetUniformi("prStoredNormals", storedNormals ? 1 : 0);
         program->SetUniformMatrix4x4("prProjection", proj);
         program->SetUniformMatrix4x4("prInverseProjection", inv);
         const float size[2] = { static_cast<float>(width), static_cast<float>(height) };

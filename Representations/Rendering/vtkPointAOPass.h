@@ -77,12 +77,14 @@
  *   occluders and are not darkened where nothing opaque lies behind them: translucent
  *   particles get a warning (once) pointing to the object-space passes.
  *
- * The G-buffer holds, besides colour and depth, the normal (times 3 + the sphere's radius) and
- * the window depth of the fragment that wrote it: a normal is used only where that depth equals
- * the depth buffer's. Anything the delegate draws over the opaque geometry without the pass's
- * shader hook (depth peeling's and volumes' full-screen quads, overlays) leaves undefined values
- * in the normal target; there the occlusion takes the depth buffer's normal instead (the same
- * picture every frame). The renderer's FXAA (vtkRenderer::UseFXAA, on in ParaView by default)
+ * The same frame gives the same picture. The G-buffer holds, besides colour and depth, the
+ * normal (times 3 + the sphere's radius) and a stamp of the fragment that wrote it (its window
+ * depth plus a key): a normal is used only where the stamp matches the depth buffer. The normal
+ * targets are drawn only while every visible prop is an opaque vtkActor: the passes that draw
+ * translucent geometry (depth peeling), volumes and 2D overlays write into the G-buffer with
+ * shaders that leave those targets undefined -- garbage or the old value, by tile and thread on
+ * llvmpipe -- so with any of them in view the occlusion takes the depth buffer's normals (no
+ * own-sphere exclusion: a little more occlusion on the particles' rims). The renderer's FXAA (vtkRenderer::UseFXAA, on in ParaView by default)
  * would run inside the delegate over every G-buffer target: it is held back and applied to the
  * composited picture instead (vtkParticleGBufferGuard), so a renderer that asks for FXAA gets it
  * on PointAO's picture even under a delegate that ignores it (vtkRenderStepsPass).

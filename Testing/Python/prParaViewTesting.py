@@ -199,16 +199,28 @@ def capture(view, path, repeat=True):
     """Render the view, save it to `path` (PNG, the view's size) and return the image read back
     (vtkImageData). With repeat (the default: every image test of the suite) the view is saved
     once more and the two pictures must be identical, bit for bit
-    (vtkParticleImageComparison.TestIdentical; finish() fails otherwise). repeat=False only for
-    a progressive view whose next frame refines the picture (S-NDF while it converges)."""
+    (vtkParticleImageComparison.TestIdentical), with no OpenGL error reported by the context's
+    debug output while the second is drawn (vtkParticleGLDebugLog); finish() fails otherwise.
+    repeat=False only for a progressive view whose next frame refines the picture (S-NDF while
+    it converges)."""
     simple.Render(view)
     simple.SaveScreenshot(path, view, ImageResolution=list(view.ViewSize), TransparentBackground=0)
     image = read_png(path)
     if repeat:
         again = os.path.splitext(path)[0] + "_repeat.png"
+        name = os.path.splitext(os.path.basename(path))[0]
+        # the second frame under the context's debug output (as TestRepeatable)
+        log = particlerendering.vtkParticleGLDebugLog.GetInstance()
+        window = view.GetRenderWindow()
+        if window is not None:
+            log.Watch(window)
+        errors = log.GetNumberOfErrors()
         simple.SaveScreenshot(again, view, ImageResolution=list(view.ViewSize),
                               TransparentBackground=0)
-        name = os.path.splitext(os.path.basename(path))[0]
+        if log.GetNumberOfErrors() != errors:
+            print("REPEAT %s: %d OpenGL error(s) reported while the frame was drawn (the last: %s)"
+                  % (name, log.GetNumberOfErrors() - errors, log.GetLastError()))
+            REPEAT_FAILURES.append(name)
         if not particlerendering.vtkParticleImageComparison.TestIdentical(
                 image, read_png(again), name):
             REPEAT_FAILURES.append(name)

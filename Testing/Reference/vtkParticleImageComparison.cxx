@@ -9,6 +9,7 @@
 #include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkParticleGLDebugLog.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -925,19 +926,32 @@ bool vtkParticleImageComparison::TestRepeatable(
 {
   vtkNew<vtkImageData> first;
   vtkNew<vtkImageData> again;
+  const char* label = name ? name : "picture";
   window->Render();
   if (!GrabColorBuffer(window, first, viewport))
   {
-    std::cout << "REPEAT " << (name ? name : "picture") << ": NOT COMPARED (no picture)\n";
+    std::cout << "REPEAT " << label << ": NOT COMPARED (no picture)\n";
     return false;
   }
+  // the second frame under the context's debug output: a GL error or undefined behaviour that
+  // the driver reports fails the check too
+  vtkParticleGLDebugLog* log = vtkParticleGLDebugLog::GetInstance();
+  log->Watch(window);
+  const int errors = log->GetNumberOfErrors();
   window->Render();
   if (!GrabColorBuffer(window, again, viewport))
   {
-    std::cout << "REPEAT " << (name ? name : "picture") << ": NOT COMPARED (no picture)\n";
+    std::cout << "REPEAT " << label << ": NOT COMPARED (no picture)\n";
     return false;
   }
-  return TestIdentical(first, again, name);
+  const bool clean = log->GetNumberOfErrors() == errors;
+  if (!clean)
+  {
+    std::cout << "REPEAT " << label << ": " << log->GetNumberOfErrors() - errors
+              << " OpenGL error(s) reported while the frame was drawn (the last: "
+              << log->GetLastError() << ")\n";
+  }
+  return TestIdentical(first, again, name) && clean;
 }
 
 //------------------------------------------------------------------------------

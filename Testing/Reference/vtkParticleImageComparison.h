@@ -176,7 +176,9 @@ public:
    * reading its render framebuffer (the back buffer, as GrabColorBuffer) after each, and compares
    * the two through TestIdentical. (Both frames come from Render(): vtkWindowToImageFilter
    * renders with a camera recomputed through atan(tan()), whose frame may differ from Render()'s
-   * in the last bit.) With a renderer, only its (tiled) viewport is compared. Not for progressive
+   * in the last bit.) The second frame is drawn under the context's debug output
+   * (vtkParticleGLDebugLog): an OpenGL error or undefined behaviour the driver reports fails the
+   * check too. With a renderer, only its (tiled) viewport is compared. Not for progressive
    * passes, whose next frame refines the picture.
    */
   static bool TestRepeatable(

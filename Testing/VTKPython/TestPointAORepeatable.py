@@ -4,8 +4,9 @@ renderer's FXAA is on by default).
 
 Scene: 10^5 particles, a dense FCC slab between two layers of gas (prVTKTesting.gas_and_slab),
 1024 x 768 (many of llvmpipe's 64 x 64 tiles), a translucent box drawn over part of it with
-depth peeling (anything drawn over the opaque geometry writes undefined values into the pass's
-G-buffer targets: the pass must not read them). For PointAO at full and at half resolution,
+dual depth peeling (its full-screen blend writes undefined values into the pass's G-buffer
+targets, as ParaView's FXAA does: the pass must not read them). Before the fix, the four renders
+differed. For PointAO at full and at half resolution,
 with the renderer's FXAA off and on: four renders of the unchanged view are identical, bit for
 bit (vtkParticleImageComparison.TestRepeatable), and PointAO does darken the slab (the check is
 not passed by a pass that does nothing). With FXAA on the picture is PointAO's picture with
@@ -21,7 +22,9 @@ from prVTKTesting import check, check_repeatable, finish, gas_and_slab, grab_ima
 from prVTKTesting import particles_from
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
-from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass, vtkRenderStepsPass
+from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkDualDepthPeelingPass,
+                                            vtkRenderStepsPass, vtkTranslucentPass,
+                                            vtkVolumetricPass)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factory overrides)
 
 xyz, radius, kinds = gas_and_slab()
@@ -62,7 +65,15 @@ renderer.SetPass(camera_pass)
 plain = grab_image(window)[:, :3]
 
 ao = pr.vtkPointAOPass()
-ao.SetDelegatePass(vtkRenderStepsPass())
+# the delegate draws translucent geometry with dual depth peeling, whose full-screen blend quad
+# has one output: it leaves undefined values in the G-buffer's normal targets (as ParaView's
+# depth peeling and the renderer's FXAA do)
+steps = vtkRenderStepsPass()
+peeling = vtkDualDepthPeelingPass()
+peeling.SetTranslucentPass(vtkTranslucentPass())
+peeling.SetVolumetricPass(vtkVolumetricPass())
+steps.SetTranslucentPass(peeling)
+ao.SetDelegatePass(steps)
 camera_pass.SetDelegatePass(ao)
 pictures = {}
 for half in (False, True):

@@ -62,8 +62,9 @@ def open_reader(reader, path):
 def grab_image(window, repeat=True):
     """The window's RGB(A) pixels as an (N, components) int numpy array (the filter renders the
     window first). With repeat (the default: every image test of the suite), the same frame
-    grabbed once more must be identical, bit for bit (vtkParticleImageComparison.TestIdentical,
-    a failed check otherwise); repeat=False only for a progressive pass, whose next frame
+    grabbed once more must be identical, bit for bit (vtkParticleImageComparison.TestIdentical),
+    with no OpenGL error from the context's debug output (vtkParticleGLDebugLog), a failed check
+    otherwise; repeat=False only for a progressive pass, whose next frame
     refines the picture. (vtkWindowToImageFilter renders with the view angle recomputed through
     atan(tan()): its frame may differ from a plain Render()'s in the last bit of the camera, so
     the repeat is grabbed the same way.)"""
@@ -73,7 +74,14 @@ def grab_image(window, repeat=True):
         _REPEATS[0] += 1
         name = _repeat_name()
         import particlerendering as pr
-        check(pr.vtkParticleImageComparison.TestIdentical(first, _filter_grab(window), name),
+        # the second frame under the context's debug output (as TestRepeatable)
+        log = pr.vtkParticleGLDebugLog.GetInstance()
+        log.Watch(window)
+        errors = log.GetNumberOfErrors()
+        again = _filter_grab(window)
+        check(log.GetNumberOfErrors() == errors, "%s: OpenGL error(s) while the frame was drawn"
+              " (the last: %s)" % (name, log.GetLastError()))
+        check(pr.vtkParticleImageComparison.TestIdentical(first, again, name),
               "%s: the same frame drawn twice differs" % name)
     return vtk_to_numpy(first.GetPointData().GetScalars()).astype(int)
 
