@@ -7,4 +7,6 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/Scripts/build.sh"
 build=${BUILD_DIR:-$top/build}
 cd "$build"
+# Mesa prints every OpenGL error it sees; such a line fails the test (pr_fail_on_mesa_errors)
+export MESA_DEBUG=${MESA_DEBUG:-1}
 "$top/Scripts/with_xvfb.sh" ctest --output-on-failure --no-tests=error --timeout 900 "$@"
