@@ -19,8 +19,10 @@
  * Construct the guard after binding the G-buffer and activating its draw buffers, destroy it
  * when the delegate is done. Anything else drawn into the G-buffer by the delegate without the
  * pass's hooks (depth peeling's and volumes' full-screen quads, overlays) still leaves undefined
- * values in the auxiliary targets: the passes tell their own writes apart (e.g. vtkPointAOPass
- * stores the depth of the fragment that wrote a normal with it).
+ * values in the auxiliary targets, garbage or the old value by tile and thread: the passes draw
+ * those targets only when no such geometry is in view (vtkPointAOPass; vtkSNDFRenderPass shows
+ * the plain picture with translucent geometry in view) and tell their own writes apart
+ * (vtkPointAOPass stores a stamp of the fragment's depth with its normal).
  */
 #ifndef vtkParticleGBufferGuard_h
 #define vtkParticleGBufferGuard_h

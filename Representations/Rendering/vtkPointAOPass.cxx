@@ -50,8 +50,9 @@ const char* const NormalTag = "//PR::PointAO::Normal";
 const unsigned int NumberOfGBufferTargets = 3;
 
 // The stamp a hooked fragment writes with its normal: its window depth plus this key, a value no
-// other shader computes (a foreign shader's undefined outputs may hold the depth it sampled, as
-// llvmpipe's do under dual depth peeling). Exact in binary; passed to the occlusion as prStampKey.
+// other shader computes (an undefined output of a foreign shader that sampled the depth buffer
+// cannot pass for a stamp by holding that depth). Exact in binary; passed to the occlusion as
+// prStampKey.
 const char* const StampKeyGLSL = "19.75";
 const float StampKey = 19.75f;
 

@@ -84,10 +84,11 @@
  * translucent geometry (depth peeling), volumes and 2D overlays write into the G-buffer with
  * shaders that leave those targets undefined -- garbage or the old value, by tile and thread on
  * llvmpipe -- so with any of them in view the occlusion takes the depth buffer's normals (no
- * own-sphere exclusion: a little more occlusion on the particles' rims). The renderer's FXAA (vtkRenderer::UseFXAA, on in ParaView by default)
- * would run inside the delegate over every G-buffer target: it is held back and applied to the
- * composited picture instead (vtkParticleGBufferGuard), so a renderer that asks for FXAA gets it
- * on PointAO's picture even under a delegate that ignores it (vtkRenderStepsPass).
+ * own-sphere exclusion: a little more occlusion on the particles' rims). The renderer's FXAA
+ * (vtkRenderer::UseFXAA, on in ParaView by default) would run inside the delegate over every
+ * G-buffer target: it is held back and applied to the composited picture instead
+ * (vtkParticleGBufferGuard), so a renderer that asks for FXAA gets it on PointAO's picture even
+ * under a delegate that ignores it (vtkRenderStepsPass).
  *
  * A renderer whose viewport does not fill its window (several renderers side by side in one
  * plain VTK window) is drawn without ambient occlusion, with a warning: the delegate's camera
