@@ -333,15 +333,28 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   const int lowWidth = (width + step - 1) / step;
   const int lowHeight = (height + step - 1) / step;
 
-  // translucent particles are drawn over the opaque scene without depth: they are neither
-  // darkened nor occluders (said once, until the scene has none again)
+  // What the delegate will draw, in one walk over the props:
+  // - translucent particles are drawn over the opaque scene without depth: they are neither
+  //   darkened nor occluders (said once, until the scene has none again);
+  // - the G-buffer's normals: only when every visible prop is opaque geometry of a vtkActor. The
+  //   passes that draw translucent geometry (depth peeling), volumes and 2D overlays write into
+  //   the G-buffer with shaders that leave the normal targets undefined, and whether a driver
+  //   writes garbage there or keeps the values varies (llvmpipe: by tile and thread): with any
+  //   of them in view the occlusion takes the depth buffer's normals, the same each frame.
   bool translucent = false;
-  for (int i = 0; i < s->GetPropArrayCount() && !translucent; ++i)
+  bool storedNormals = true;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    translucent = actor && actor->GetVisibility() &&
-      vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) &&
-      actor->HasTranslucentPolygonalGeometry();
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    const bool translucentGeometry = prop->HasTranslucentPolygonalGeometry() != 0;
+    translucent = translucent ||
+      (actor && vtkParticleSphereMapper::SafeDownCast(actor->GetMapper()) && translucentGeometry);
+    storedNormals = storedNormals && actor && !translucentGeometry;
   }
   if (translucent && !internals.WarnedTranslucent)
   {
@@ -350,19 +363,6 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
                     << "occlude them).");
   }
   internals.WarnedTranslucent = translucent;
-
-  // the G-buffer's normals: only when every visible prop is opaque geometry of a vtkActor. The
-  // passes that draw translucent geometry (depth peeling), volumes and 2D overlays write into
-  // the G-buffer with shaders that leave the normal targets undefined, and whether a driver
-  // writes garbage there or keeps the values varies (llvmpipe: by tile and thread): with any of
-  // them in view the occlusion takes the depth buffer's normals, the same each frame
-  bool storedNormals = true;
-  for (int i = 0; i < s->GetPropArrayCount() && storedNormals; ++i)
-  {
-    vtkProp* prop = s->GetPropArray()[i];
-    storedNormals = !prop->GetVisibility() ||
-      (vtkActor::SafeDownCast(prop) && !prop->HasTranslucentPolygonalGeometry());
-  }
   const unsigned int targets = storedNormals ? NumberOfGBufferTargets : 1;
 
   // the radius: set, or four mean particle radii, or 2 % of the visible props' diagonal

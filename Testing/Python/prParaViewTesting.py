@@ -211,15 +211,10 @@ def capture(view, path, repeat=True):
         name = os.path.splitext(os.path.basename(path))[0]
         # the second frame under the context's debug output (as TestRepeatable)
         log = particlerendering.vtkParticleGLDebugLog.GetInstance()
-        window = view.GetRenderWindow()
-        if window is not None:
-            log.Watch(window)
-        errors = log.GetNumberOfErrors()
+        log.StartFrame(view.GetRenderWindow())
         simple.SaveScreenshot(again, view, ImageResolution=list(view.ViewSize),
                               TransparentBackground=0)
-        if log.GetNumberOfErrors() != errors:
-            print("REPEAT %s: %d OpenGL error(s) reported while the frame was drawn (the last: %s)"
-                  % (name, log.GetNumberOfErrors() - errors, log.GetLastError()))
+        if not log.EndFrame(name):
             REPEAT_FAILURES.append(name)
         if not particlerendering.vtkParticleImageComparison.TestIdentical(
                 image, read_png(again), name):

@@ -59,6 +59,27 @@ bool vtkParticleGLDebugLog::Watch(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleGLDebugLog::StartFrame(vtkRenderWindow* window)
+{
+  this->Watch(window);
+  this->FrameStartErrors = this->NumberOfErrors;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleGLDebugLog::EndFrame(const char* name)
+{
+  const int errors = this->NumberOfErrors - this->FrameStartErrors;
+  if (errors > 0)
+  {
+    std::cout << "REPEAT " << (name ? name : "picture") << ": " << errors
+              << " OpenGL error(s) reported while the frame was drawn (the last: "
+              << this->LastError << ")\n";
+    std::cout.flush();
+  }
+  return errors == 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleGLDebugLog::Add(unsigned int source, unsigned int type, unsigned int id,
   unsigned int severity, const char* message)
 {

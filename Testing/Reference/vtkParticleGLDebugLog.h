@@ -7,9 +7,9 @@
  * undefined behaviour (GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR: e.g. a texture sampled while it is a
  * render target, on drivers that detect it) are printed at once as "GL DEBUG ERROR: ..." and
  * counted in GetNumberOfErrors(); other messages (performance notes, portability) only in
- * GetNumberOfMessages(). The suite's repeatability check (vtkParticleImageComparison::
- * TestRepeatable) watches every window it renders, so a GL error during any image test's frame
- * fails that test. One log per process (GetInstance()); a context is watched once. Needs
+ * GetNumberOfMessages(). The suite's repeatability checks (vtkParticleImageComparison::
+ * TestRepeatable, the Python harnesses) draw their second frame between StartFrame and EndFrame,
+ * so a GL error during any image test's frame fails that test. One log per process (GetInstance()); a context is watched once. Needs
  * OpenGL 4.3 or KHR_debug (Watch returns false without it).
  */
 #ifndef vtkParticleGLDebugLog_h
@@ -50,6 +50,16 @@ public:
   /** The text of the last error ("" when none). */
   const char* GetLastError() { return this->LastError.c_str(); }
 
+  ///@{
+  /**
+   * A frame under the debug output, as the repeatability checks draw it: StartFrame watches the
+   * window and marks the error count; EndFrame returns whether no error came since, printing
+   * "REPEAT name: N OpenGL error(s) reported while the frame was drawn (the last: ...)" if one did.
+   */
+  void StartFrame(vtkRenderWindow* window);
+  bool EndFrame(const char* name);
+  ///@}
+
 #ifndef __VTK_WRAP__
   /** The callback's entry (public for the C callback only). */
   void Add(unsigned int source, unsigned int type, unsigned int id, unsigned int severity,
@@ -66,6 +76,7 @@ private:
 
   int NumberOfErrors = 0;
   int NumberOfMessages = 0;
+  int FrameStartErrors = 0;
   std::string LastError;
   std::vector<vtkWeakPointer<vtkRenderWindow>> Watched; // the windows reporting here
 };
