@@ -9,6 +9,7 @@
 #include "vtkMapper.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderTimer.h"
+#include "vtkParticleCompat.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -203,7 +204,7 @@ inline vtkSmartPointer<vtkPointGaussianMapper> MakePointGaussianMapper(
                              "  ambientColor *= scale;\n"
                              "  diffuseColor *= scale;\n"
                              "}\n");
-  mapper->SetTriangleScale(1.0);
+  vtkParticleSetPointGaussianBoundScale(mapper.GetPointer(), 1.0f);
   return mapper.GetPointer();
 }
 

@@ -25,7 +25,7 @@
 #include "vtkTransparentSphereMapper.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <array>

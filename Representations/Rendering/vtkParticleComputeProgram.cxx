@@ -6,7 +6,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkWeakPointer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <map>
 #include <sstream>

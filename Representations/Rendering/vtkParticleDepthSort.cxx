@@ -12,7 +12,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <cstdint>
 #include <cstring>

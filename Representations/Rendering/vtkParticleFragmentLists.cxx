@@ -12,7 +12,7 @@
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <string>

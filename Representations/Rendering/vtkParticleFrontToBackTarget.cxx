@@ -11,7 +11,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <memory>
 

@@ -2,7 +2,7 @@
 
 #include "vtkRenderer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 //------------------------------------------------------------------------------
 vtkParticleGBufferGuard::vtkParticleGBufferGuard(vtkRenderer* renderer, unsigned int attachments)

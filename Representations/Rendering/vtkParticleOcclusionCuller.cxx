@@ -15,7 +15,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>

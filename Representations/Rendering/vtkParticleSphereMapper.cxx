@@ -37,7 +37,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>

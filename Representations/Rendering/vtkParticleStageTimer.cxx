@@ -1,6 +1,6 @@
 #include "vtkParticleStageTimer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 //------------------------------------------------------------------------------
 vtkParticleStageTimer::vtkParticleStageTimer(int stages)

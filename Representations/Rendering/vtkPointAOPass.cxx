@@ -28,7 +28,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>

@@ -43,7 +43,7 @@
 #include "vtkVoxelConeAOPass.h"
 #include "vtkWeakPointer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <array>

@@ -8,7 +8,7 @@
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <array>

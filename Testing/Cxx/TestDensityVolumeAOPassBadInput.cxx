@@ -22,7 +22,7 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,7 @@
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <cstdlib>
 #include <iostream>

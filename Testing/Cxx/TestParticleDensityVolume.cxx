@@ -19,7 +19,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>

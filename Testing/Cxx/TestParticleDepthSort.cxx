@@ -13,7 +13,7 @@
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>

@@ -27,6 +27,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
+#include <iostream>
 
 namespace
 {

@@ -35,7 +35,7 @@
 #include "vtkRenderer.h"
 #include "vtkTransparentSphereMapper.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -4,7 +4,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSmartPointer.h"
 
-#include "vtk_glew.h"
+#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <iostream>
