@@ -11,7 +11,9 @@ ratio (how far the nearest wrong picture is from the real one, in units of the r
 score; "inf" when the real picture scores 0).
 
 usage: python3 Scripts/image_test_margins.py build/Testing/Temporary/LastTest.log
-           [--csv Benchmarks/results/image_test_margins.csv]
+           [--csv Benchmarks/results/image_test_margins.csv] [--summary PLATFORM]
+--summary prints one line instead of the table (.ci/run, per platform): how many image tests,
+whether every must-fail picture was rejected, and the smallest ratio with its test.
 """
 import argparse
 import csv
@@ -27,6 +29,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("log")
     parser.add_argument("--csv")
+    parser.add_argument("--summary", metavar="PLATFORM")
     args = parser.parse_args()
     real = {}
     wrong = {}
@@ -62,11 +65,22 @@ def main():
             "ratio": "%.4g" % ratio,
             "all_rejected": all(v == "rejected" for _, _, v in cases),
         })
+    if args.summary:
+        rejected = all(row["all_rejected"] for row in rows)
+        nearest = min(rows, key=lambda row: float(row["ratio"])) if rows else None
+        print("margins %s: %d image tests with must-fail pictures, every must-fail picture %s, "
+              "smallest ratio %s (%s: %s)" % (
+                  args.summary, len(rows), "rejected" if rejected else "NOT rejected",
+                  nearest["ratio"] if nearest else "-", nearest["test"] if nearest else "-",
+                  nearest["nearest_must_fail"] if nearest else "-"))
+        if args.csv is None:
+            return 0 if rows and rejected else 1
     writer = csv.DictWriter(open(args.csv, "w", newline="") if args.csv else sys.stdout,
                             fieldnames=list(rows[0].keys()) if rows else ["test"])
     writer.writeheader()
     writer.writerows(rows)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
