@@ -176,7 +176,10 @@ def vertex_cells(n):
     """vtkCellArray with one vertex cell per point, built from numpy (no Python loop)."""
     array_type = vtkTypeInt32Array if n + 1 < 2 ** 31 else vtkTypeInt64Array
     cells = vtkCellArray()
-    if not cells.SetData(_iota(n + 1, array_type), _iota(n, array_type)):
+    # SetData returns a bool in VTK 9.2 and 9.6 but nothing in ParaView 5.13's VTK 9.3 snapshot:
+    # the cell count tells in every version.
+    ok = cells.SetData(_iota(n + 1, array_type), _iota(n, array_type))
+    if ok is False or cells.GetNumberOfCells() != n:
         raise RuntimeError("vtkCellArray.SetData failed")
     return cells
 

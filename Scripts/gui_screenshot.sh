@@ -2,22 +2,21 @@
 # The README's GUI screenshot (Plugin/Documentation/paraview-first-minute.png): LAMMPS writes the
 # lj_droplets dump series, the ParaView GUI opens it as in the README's first minute
 # (Scripts/gui_screenshot.py, run with paraview --script), and the screen of a private Xvfb is
-# captured with xwd and converted by Scripts/xwd_to_png.py. ParaView runs with a private settings
-# directory whose only setting switches the welcome dialog off (it is modal and would block the
-# script). Needs xwd (apt-get install x11-apps) besides the project's set-up and build.
-# usage: Scripts/gui_screenshot.sh [OUTPUT.png]   (from anywhere, after Scripts/build.sh)
+# captured with xwd and converted by Scripts/xwd_to_png.py. ParaView runs with --dr and a private
+# XDG_CONFIG_HOME (no user settings, and so no welcome dialog, which is modal and would block the script; the same in
+# ParaView 5.11, 5.13 and 6.1). xwd comes with x11-apps (Scripts/install_dependencies.sh).
+# usage: Scripts/gui_screenshot.sh [OUTPUT.png]   (from anywhere, after Scripts/build.sh;
+# BUILD_DIR as for build.sh)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/Plugin/Documentation/paraview-first-minute.png}
 work=$(mktemp -d)
-mkdir -p "$work/config/ParaView"
-printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' >"$work/config/ParaView/ParaView5.11.0.ini"
 (cd "$work" && env -u OMPI_COMM_WORLD_SIZE -u OMPI_COMM_WORLD_RANK \
   lmp -in "$root/Testing/Data/Generators/in.lj_droplets" -var outdir "$work" -log none -screen none)
 
 # the capture, on a private Xvfb whose screen is the picture's size (the main window fills it)
 capture() {
-  paraview --script="$root/Scripts/gui_screenshot.py" >"$work/paraview.log" 2>&1 &
+  paraview --dr --script="$root/Scripts/gui_screenshot.py" >"$work/paraview.log" 2>&1 &
   local paraview_pid=$!
   for _ in $(seq 1 300); do
     [ -f "$PR_DONE" ] && break
@@ -36,7 +35,7 @@ capture() {
 trap 'rm -rf "$work"' EXIT
 export -f capture
 export root out work XDG_CONFIG_HOME="$work/config"
-export PR_PLUGIN="$root/build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so"
+export PR_PLUGIN="${BUILD_DIR:-$root/build}/lib/paraview-plugins/ParticleRendering/ParticleRendering.so"
 export PR_DUMPS="$work" PR_DONE="$work/done"
 PR_USE_EXISTING_DISPLAY=0 PR_XVFB_SCREEN=1280x800x24 "$root/Scripts/with_xvfb.sh" bash -c capture
 echo "wrote $out"

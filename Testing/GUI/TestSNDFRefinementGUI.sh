@@ -4,18 +4,16 @@
 # again without further requests until its S-NDFs hold the target 160 samples (10 renders of 16
 # after the render of the change; without the plugin's behaviour the GUI's own renders after the
 # script reach 48), and no more renders may follow. Needs DISPLAY (ctest runs
-# under Scripts/with_xvfb.sh). A private settings directory switches the modal welcome dialog
-# off. A GUI that never converges is reported after 600 s (a hang guard, not a speed limit: the
-# refinement takes a few seconds).
+# under Scripts/with_xvfb.sh). --dr and a private XDG_CONFIG_HOME: no user settings, and so no
+# modal welcome dialog (the same in ParaView 5.11, 5.13 and 6.1). A GUI that never converges is
+# reported after 600 s (a hang guard, not a speed limit: the refinement takes a few seconds).
 # usage: TestSNDFRefinementGUI.sh PLUGIN
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'kill "$pid" 2>/dev/null || true; rm -rf "$work"' EXIT
-mkdir -p "$work/config/ParaView"
-printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' >"$work/config/ParaView/ParaView5.11.0.ini"
 export XDG_CONFIG_HOME="$work/config" PR_PLUGIN="$1" PR_RESULT="$work/result"
-paraview --script="$here/TestSNDFRefinementGUI.py" >"$work/paraview.log" 2>&1 &
+paraview --dr --script="$here/TestSNDFRefinementGUI.py" >"$work/paraview.log" 2>&1 &
 pid=$!
 samples=0
 for _ in $(seq 1 600); do

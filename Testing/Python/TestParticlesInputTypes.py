@@ -29,8 +29,9 @@ wavelet = simple.Wavelet(WholeExtent=[-2, 2, -2, 2, -2, 2])
 image = simple.Show(wavelet, view)
 image.Representation = "Particles"
 image.Radius = 0.3
-image.Position = [-6.0, 0.0, 0.0]
+pr.translate(image, (-6.0, 0.0, 0.0))
 simple.ColorBy(image, ("POINTS", "RTData"))
+pr.apply_preset(simple.GetColorTransferFunction("RTData"), "Cool to Warm")  # (6.1's default: Fast)
 image.RescaleTransferFunctionToDataRange(True, False)
 
 # unstructured grid: the points of a sphere

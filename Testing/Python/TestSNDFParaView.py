@@ -200,12 +200,12 @@ if not args.must_fail:
     view.SNDFConvergeStillRenders = 1
     simple.ColorBy(display, ("POINTS", "speed"))
     speed_lut = simple.GetColorTransferFunction("speed")
-    speed_lut.ApplyPreset("Cool to Warm", True)
+    pr.apply_preset(speed_lut, "Cool to Warm")
     by_speed = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_speed.png")))
     view.SNDFConvergeStillRenders = 0
     simple.Render(view)
     samples = view_info(view, "SNDFNumberOfSamples")
-    speed_lut.ApplyPreset("Viridis (matplotlib)", True)
+    pr.apply_preset(speed_lut, "Viridis (matplotlib)")
     simple.Render(view)
     kept = view_info(view, "SNDFNumberOfSamples")
     viridis = rgb(pr.capture(view, os.path.join(args.temp_dir, "TestSNDFParaView_viridis.png")))

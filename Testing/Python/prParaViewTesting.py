@@ -180,6 +180,31 @@ def show_particles(source, view, color_by_type=True, use_radius_array=True):
     return display
 
 
+def translate(representation, offset):
+    """Moves a representation by offset: the property is "Position" in ParaView 5.11's Python and
+    "Translation" from 5.12 on (the same XML property, Position, renamed for Python)."""
+    name = "Translation" if "Translation" in representation.ListProperties() else "Position"
+    setattr(representation, name, list(offset))
+
+
+# Colour-map presets renamed between ParaView versions: the name a test asks for -> the names
+# ParaView 6 knows it by.
+PRESET_NAMES = {"Viridis (matplotlib)": ("Viridis (matplotlib)", "Viridis")}
+
+
+def apply_preset(lut, name):
+    """Applies a colour-map preset by its ParaView 5.11 name, under whichever name this ParaView
+    has it ("Viridis (matplotlib)" is "Viridis" in ParaView 6). Also for a test whose picture
+    relies on the default map: ParaView 6's default is "Fast", 5.11's and 5.13's "Cool to Warm"."""
+    for candidate in PRESET_NAMES.get(name, (name,)):
+        try:
+            lut.ApplyPreset(candidate, True)
+            return
+        except RuntimeError:
+            continue
+    raise TestFailure("no colour-map preset named %s in this ParaView" % name)
+
+
 def set_camera(view, position, focal_point, view_up=(0, 0, 1), view_angle=30.0):
     """Set the camera. Renders once first: paraview.simple resets the camera at the first
     Render() of the process, which would otherwise override this camera."""
