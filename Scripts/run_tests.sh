@@ -12,8 +12,12 @@ if [ "${1:-}" = --debian ]; then
   export BUILD_DIR=$top/build-debian-$release
   exec bash "$top/Scripts/debian_chroot.sh" "$release" bash "$top/Scripts/run_tests.sh" "$@"
 fi
+start=$SECONDS
 "$top/Scripts/install_dependencies.sh"
+echo "run_tests: dependencies checked in $((SECONDS - start)) s"
+start=$SECONDS
 "$top/Scripts/build.sh"
+echo "run_tests: built in $((SECONDS - start)) s"
 build=${BUILD_DIR:-$top/build}
 cd "$build"
 # Mesa prints every OpenGL error it sees; such a line fails the test (pr_fail_on_mesa_errors)
