@@ -4,9 +4,8 @@
 # Makes the chroot with debootstrap if it does not exist yet (about 30 s; later runs reuse it),
 # mounts /proc, /sys, /dev, /dev/pts and /dev/shm (Xvfb and MPI need them) and this source tree
 # at the same path inside, runs COMMAND there from the source tree, and unmounts again.
-# The chroots live
-# under ${PR_CHROOT_ROOT:-/var/lib/particlerendering/chroots}; packages come from the Debian
-# mirror the host's apt uses (or ${PR_DEBIAN_MIRROR}). Packages inside are installed by
+# The chroots live under ${PR_CHROOT_ROOT:-/var/lib/particlerendering/chroots}; packages come
+# from the Debian mirror the host's apt uses (or ${PR_DEBIAN_MIRROR}). Packages inside are installed by
 # Scripts/install_dependencies.sh, which run_tests.sh calls in the chroot like on the host.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
