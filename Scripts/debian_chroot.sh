@@ -28,15 +28,11 @@ exec 9>"$root/$release.lock"
 flock 9
 
 # The mirror the host's apt uses for Debian's main archive.
+# (deb822 "URIs:" lines or one-line "deb" entries)
 mirror=${PR_DEBIAN_MIRROR:-}
-if [ -z "$mirror" ]; then
-  mirror=$(cat /etc/apt/sources.list.d/*.sources 2>/dev/null |
-    awk '/^URIs:/ { for (i = 2; i <= NF; ++i) if ($i ~ /\/debian\/?$/) { print $i; exit } }')
-fi
-if [ -z "$mirror" ]; then
-  mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2>/dev/null |
-    awk '$1 == "deb" { for (i = 2; i <= NF; ++i) if ($i ~ /\/debian\/?$/) { print $i; exit } }')
-fi
+[ -n "$mirror" ] || mirror=$( { cat /etc/apt/sources.list.d/*.sources /etc/apt/sources.list \
+  /etc/apt/sources.list.d/*.list 2>/dev/null || true; } | awk '$1 == "URIs:" || $1 == "deb" {
+    for (i = 2; i <= NF; ++i) if ($i ~ /\/debian\/?$/) { print $i; exit } }')
 
 if [ ! -e "$dir/.particlerendering-ready" ]; then
   [ -n "$mirror" ] || { echo "debian_chroot: no Debian mirror in the host's apt sources; set PR_DEBIAN_MIRROR" >&2; exit 1; }

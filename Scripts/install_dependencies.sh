@@ -30,7 +30,10 @@ common=(
   # data generation, plots, MPI runs
   lammps python3-numpy python3-matplotlib openmpi-bin
 )
-qt6=(qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-svg-dev qt6-5compat-dev)
+# Debian 13 and unstable: Qt 6 and the further -dev packages their ParaView's CMake config asks for
+newer=(qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-svg-dev qt6-5compat-dev libcgns-dev
+  libprotobuf-dev protobuf-compiler libpugixml-dev libfmt-dev libexprtk-dev libcli11-dev
+  libfast-float-dev libeigen3-dev)
 case "$release" in
   bookworm)
     what="Debian 12 (bookworm): ParaView 5.11, Qt 5"
@@ -38,14 +41,10 @@ case "$release" in
       libqt5opengl5-dev) ;;
   trixie)
     what="Debian 13 (trixie): ParaView 5.13, Qt 6"
-    packages=("${common[@]}" "${qt6[@]}" libadios2-mpi-c++11-dev libcgns-dev libprotobuf-dev
-      protobuf-compiler libpugixml-dev libfmt-dev libexprtk-dev libcli11-dev libfast-float-dev
-      libeigen3-dev) ;;
+    packages=("${common[@]}" "${newer[@]}" libadios2-mpi-c++11-dev) ;;
   sid)
     what="Debian unstable (sid): ParaView 6.1, external VTK 9.6, Qt 6"
-    packages=("${common[@]}" "${qt6[@]}" libvtk9-dev python3-vtk9 libcgns-dev libprotobuf-dev
-      protobuf-compiler libpugixml-dev libfmt-dev libexprtk-dev libcli11-dev libfast-float-dev
-      libeigen3-dev) ;;
+    packages=("${common[@]}" "${newer[@]}" libvtk9-dev python3-vtk9) ;;
   *)
     echo "install_dependencies: unsupported release '$release' ($PRETTY_NAME); supported:" \
       "Debian 12 (bookworm), Debian 13 (trixie), Debian unstable (sid)" >&2
