@@ -19,11 +19,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkMetaballMapper.h"
-#include "vtkDensityVolumeAOPass.h"
-#include "vtkParticleAmbientVolume.h"
-#include "vtkVoxelConeAOPass.h"
-#include "vtkParticleDensityVolume.h"
+#include "vtkParticleDistributedVolumes.h"
 #include "vtkParticlePartition.h"
+#include "vtkParticleProcessReduction.h"
 #include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkTransparentSphereMapper.h"
@@ -48,73 +46,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleRepresentation);
-
-namespace
-{
-// Bounds and a count and radius sum of particles, gathered on each process and reduced over all
-// of them (distributed rendering: the grids and estimates every process must share).
-struct GlobalParticleExtent
-{
-  double Bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  double Count = 0.0;
-  double RadiusSum = 0.0;
-
-  // the box [lo, hi] into the bounds
-  void AddBox(const double lo[3], const double hi[3])
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Bounds[2 * k] = std::min(this->Bounds[2 * k], lo[k]);
-      this->Bounds[2 * k + 1] = std::max(this->Bounds[2 * k + 1], hi[k]);
-    }
-  }
-  // a particle: its centre grown by `grow` into the bounds, its radius into the mean
-  void AddParticle(const double center[3], double grow, double radius)
-  {
-    const double lo[3] = { center[0] - grow, center[1] - grow, center[2] - grow };
-    const double hi[3] = { center[0] + grow, center[1] + grow, center[2] + grow };
-    this->AddBox(lo, hi);
-    this->Count += 1.0;
-    this->RadiusSum += radius;
-  }
-  // over all processes (collective)
-  void Reduce(vtkMultiProcessController* controller)
-  {
-    double local[8] = { this->Count, this->RadiusSum, this->Bounds[0], this->Bounds[2],
-      this->Bounds[4], -this->Bounds[1], -this->Bounds[3], -this->Bounds[5] };
-    double global[8];
-    controller->AllReduce(local, global, 2, vtkCommunicator::SUM_OP);
-    controller->AllReduce(local + 2, global + 2, 6, vtkCommunicator::MIN_OP);
-    this->Count = global[0];
-    this->RadiusSum = global[1];
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Bounds[2 * k] = global[2 + k];
-      this->Bounds[2 * k + 1] = -global[5 + k];
-    }
-  }
-  double MeanRadius() const { return this->Count > 0.0 ? this->RadiusSum / this->Count : 0.0; }
-};
-
-// whether ok holds on every process (collective)
-bool OnEveryProcess(vtkMultiProcessController* controller, bool ok)
-{
-  int local = ok ? 1 : 0;
-  int global = local;
-  controller->AllReduce(&local, &global, 1, vtkCommunicator::MIN_OP);
-  return global != 0;
-}
-
-// the values summed over the processes, in place (collective)
-void SumOverProcesses(vtkMultiProcessController* controller, std::vector<float>& values)
-{
-  std::vector<float> total(values.size());
-  controller->AllReduce(
-    values.data(), total.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::SUM_OP);
-  values.swap(total);
-}
-}
 
 //------------------------------------------------------------------------------
 vtkParticleRepresentation::vtkParticleRepresentation()
@@ -580,8 +511,8 @@ int vtkParticleRepresentation::ProcessViewRequest(
     }
     this->Mapper->SetClipBox(clipBox);
     this->Mapper->SetInputDataObject(particles);
-    this->UpdateDistributedDensityVolume(inInfo);
-    this->UpdateDistributedAmbientVolume(inInfo);
+    this->DistributedVolumes->Update(inInfo, this->Technique == SPHERES, this->Actor, this->Mapper,
+      this->ProcessedData, this->EffectiveRadiusArray(this->ProcessedData));
     this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
     // an empty filter output): draw nothing, without the mapper's "no points" warning.
@@ -617,7 +548,7 @@ bool vtkParticleRepresentation::PartitionParticles(
   key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
       << ";"
       << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor() << ";" << reach;
-  if (!StaleOnAnyProcess(key.str(), this->PartitionKey))
+  if (!vtkParticleProcessReduction::StaleOnAnyProcess(key.str(), this->PartitionKey))
   {
     return needed && this->Partitioned;
   }
@@ -651,7 +582,7 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
   // what vtkTransparentSphereMapper::GetEffectiveColumnLayers counts, over all processes: drawn
   // particles (finite centre, radius > 0 before the scale factor) and the union of the sphere
   // bounds
-  GlobalParticleExtent extent;
+  vtkParticleProcessReduction::Extent extent;
   vtkPolyData* particles = this->ProcessedData;
   const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
   const std::string radiusArray = this->EffectiveRadiusArray(particles);
@@ -687,209 +618,9 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
   this->ApplyMapperSettings();
 }
 
-//------------------------------------------------------------------------------
-bool vtkParticleRepresentation::IsDistributedRender(vtkInformation* inInfo)
-{
-  // Every process renders (distributed rendering): all of them are in REQUEST_RENDER together,
-  // so sums over the processes are safe. A client that renders gathered data alone does not
-  // need them (its passes voxelise everything).
-  auto controller = vtkMultiProcessController::GetGlobalController();
-  auto view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
-  const bool lod =
-    inInfo->Has(vtkPVRenderView::USE_LOD()) && inInfo->Get(vtkPVRenderView::USE_LOD());
-  return controller && controller->GetNumberOfProcesses() > 1 && view &&
-    (lod ? view->GetUseDistributedRenderingForLODRender()
-         : view->GetUseDistributedRenderingForRender());
-}
 
-//------------------------------------------------------------------------------
-bool vtkParticleRepresentation::StaleOnAnyProcess(const std::string& key, std::string& stored)
-{
-  int stale = key != stored ? 1 : 0;
-  int anyStale = stale;
-  vtkMultiProcessController::GetGlobalController()->AllReduce(
-    &stale, &anyStale, 1, vtkCommunicator::MAX_OP);
-  stored = key;
-  return anyStale != 0;
-}
 
-//------------------------------------------------------------------------------
-void vtkParticleRepresentation::UpdateDistributedAmbientVolume(vtkInformation* inInfo)
-{
-  auto view = vtkParticleRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
-  if (!IsDistributedRender(inInfo) || !view)
-  {
-    this->Mapper->SetDistributedAmbientVolume(nullptr);
-    return;
-  }
-  auto controller = vtkMultiProcessController::GetGlobalController();
-  vtkVoxelConeAOPass* pass = view->GetVoxelConeAOPass();
-  const bool needed = pass &&
-    view->GetAmbientOcclusion() == vtkParticleRenderView::VOXEL_CONE_TRACING &&
-    this->Technique == SPHERES;
-  vtkParticleAmbientVolume* settings = needed ? pass->GetAmbientVolume() : nullptr;
-  // what the voxels depend on: the spheres (data, radii, matrix), their colours and opacities
-  // (mapper, lookup table, property) and the volume's settings
-  vtkPolyData* input = this->Mapper->GetInput();
-  std::ostringstream key;
-  key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";"
-      << this->Mapper->GetMTime() << ";"
-      << (this->Mapper->GetLookupTable() ? this->Mapper->GetLookupTable()->GetMTime() : 0) << ";"
-      << this->Actor->GetProperty()->GetMTime() << ";" << this->Actor->GetMatrix()->GetMTime()
-      << ";" << (settings ? settings->GetMTime() : 0);
-  if (!StaleOnAnyProcess(key.str(), this->AmbientVolumeKey))
-  {
-    this->Mapper->SetDistributedAmbientVolume(needed ? this->AmbientVolume.Get() : nullptr);
-    return;
-  }
-  if (!needed)
-  {
-    this->Mapper->SetDistributedAmbientVolume(nullptr);
-    return;
-  }
-  // this process's own spheres as the pass would gather them (ghost copies left out)
-  std::vector<double> centers;
-  std::vector<double> radii;
-  std::vector<double> colors;
-  std::vector<double> opacities;
-  if (input && input->GetNumberOfPoints() > 0)
-  {
-    this->Mapper->GetBounds(); // prepares the radii
-    vtkParticleAmbientVolume::GatherSpheres(
-      this->Actor, this->Mapper, true, centers, radii, colors, opacities);
-  }
-  // the grid of all processes' spheres: bounds and mean radius of the drawn ones (as
-  // vtkParticleAmbientVolume sets it up from one process's)
-  GlobalParticleExtent extent;
-  for (size_t i = 0; i < radii.size(); ++i)
-  {
-    const double* c = &centers[3 * i];
-    const double r = radii[i];
-    if (r > 0.0 && std::isfinite(r) && std::isfinite(c[0] + c[1] + c[2]) && opacities[i] > 0.0)
-    {
-      extent.AddParticle(c, r, r);
-    }
-  }
-  extent.Reduce(controller);
-  vtkParticleAmbientVolume* volume = this->AmbientVolume;
-  volume->SetResolution(settings->GetResolution());
-  volume->SetMaximumResolution(settings->GetMaximumResolution());
-  volume->SetSubGridSamples(settings->GetSubGridSamples());
-  volume->SetAmbientEmission(settings->GetAmbientEmission());
-  volume->SetMaximumMemory(settings->GetMaximumMemory());
-  const bool ok = extent.Count > 0.0 &&
-    volume->VoxeliseLevelZero(
-      centers, radii, colors, opacities, extent.Bounds, extent.MeanRadius());
-  if (!OnEveryProcess(controller, ok))
-  {
-    this->Mapper->SetDistributedAmbientVolume(nullptr);
-    return;
-  }
-  // level 0 summed over the processes (extinction and emission add up); the pass builds the mips
-  SumOverProcesses(controller, volume->GetMutableLevelZero());
-  volume->Modified();
-  this->Mapper->SetDistributedAmbientVolume(volume);
-}
 
-//------------------------------------------------------------------------------
-void vtkParticleRepresentation::UpdateDistributedDensityVolume(vtkInformation* inInfo)
-{
-  auto controller = vtkMultiProcessController::GetGlobalController();
-  auto view = vtkParticleRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
-  // only when the view's ambient occlusion is the density volume
-  const bool distributed = IsDistributedRender(inInfo);
-  vtkDensityVolumeAOPass* pass = view ? view->GetDensityVolumeAOPass() : nullptr;
-  const bool needed = distributed && pass &&
-    view->GetAmbientOcclusion() == vtkParticleRenderView::DENSITY_VOLUME &&
-    this->Technique == SPHERES;
-  if (!distributed)
-  {
-    this->Mapper->SetDistributedDensityVolume(nullptr);
-    return;
-  }
-  vtkParticleDensityVolume* settings = needed ? pass->GetDensityVolume() : nullptr;
-  std::ostringstream key;
-  key.precision(17);
-  const std::string radiusArray = this->EffectiveRadiusArray(this->ProcessedData);
-  key << needed << ";" << this->ProcessedData.GetPointer() << ";"
-      << (this->ProcessedData ? this->ProcessedData->GetMTime() : 0) << ";" << radiusArray << ";"
-      << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleVC(this->Actor) << ";"
-      << (settings ? settings->GetMTime() : 0);
-  vtkMatrix4x4* matrix = this->Actor->GetMatrix();
-  for (int i = 0; i < 16; ++i)
-  {
-    key << ";" << matrix->GetData()[i];
-  }
-  if (!StaleOnAnyProcess(key.str(), this->DensityVolumeKey))
-  {
-    this->Mapper->SetDistributedDensityVolume(needed ? this->DensityVolume.Get() : nullptr);
-    return;
-  }
-  if (!needed)
-  {
-    this->Mapper->SetDistributedDensityVolume(nullptr);
-    return;
-  }
-
-  // this process's particles (each is in exactly one process's piece) in world coordinates,
-  // radii as drawn; what vtkParticleDensityVolume::EndParticles gathers on one process
-  vtkPolyData* particles = this->ProcessedData;
-  const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
-  vtkDataArray* radiusValues = (n > 0 && !radiusArray.empty())
-    ? particles->GetPointData()->GetArray(radiusArray.c_str())
-    : nullptr;
-  if (radiusValues && radiusValues->GetNumberOfComponents() != 1)
-  {
-    radiusValues = nullptr;
-  }
-  const double scale = this->Mapper->GetRadiusScaleVC(this->Actor);
-  const double constant = this->Mapper->GetRadius();
-  vtkNew<vtkDoubleArray> positions;
-  positions->SetNumberOfComponents(3);
-  positions->Allocate(3 * n);
-  vtkNew<vtkFloatArray> radii;
-  radii->Allocate(n);
-  GlobalParticleExtent extent; // of the centres
-  const double* m = matrix->GetData();
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double q[3];
-    particles->GetPoint(i, q);
-    const double r = (radiusValues ? radiusValues->GetComponent(i, 0) : constant) * scale;
-    double p[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
-    }
-    if (!(r > 0.0) || !std::isfinite(r) || !std::isfinite(p[0] + p[1] + p[2]))
-    {
-      continue;
-    }
-    positions->InsertNextTuple(p);
-    radii->InsertNextValue(static_cast<float>(r));
-    extent.AddParticle(p, 0.0, r);
-  }
-  extent.Reduce(controller);
-  vtkParticleDensityVolume* volume = this->DensityVolume;
-  volume->SetResolution(settings->GetResolution());
-  volume->SetMaximumResolution(settings->GetMaximumResolution());
-  volume->SetMaximumVoxelCount(settings->GetMaximumVoxelCount());
-  volume->SetSplatMode(settings->GetSplatMode());
-  volume->SetDensityFactor(settings->GetDensityFactor());
-  // (the grid depends on global values only: the same on every process)
-  const bool ok = extent.Count > 0.0 && volume->SetUpGrid(extent.Bounds, extent.MeanRadius()) &&
-    volume->ComputeSumsOnCPU(positions, radii);
-  if (!OnEveryProcess(controller, ok))
-  {
-    this->Mapper->SetDistributedDensityVolume(nullptr);
-    return;
-  }
-  // the sum over the processes, then g and the clamp (Eq. 5)
-  SumOverProcesses(controller, volume->GetMutableVolume());
-  volume->FinishSums();
-  volume->Modified();
-  this->Mapper->SetDistributedDensityVolume(volume);
-}
 
 //------------------------------------------------------------------------------
 vtkPolyData* vtkParticleRepresentation::WithoutGhosts(

@@ -23,9 +23,9 @@
  * DATA_IS_REDISTRIBUTABLE, whose appended-XML path Debian's expat breaks in VTK 9.2), and the
  * mapper clips its drawing to the box (vtkParticleSphereMapper::SetClipBox), so the processes'
  * images composite to the single-process picture. The column-opacity layer estimate is taken
- * over all processes. With the Particle Render View's density-volume AO, REQUEST_RENDER (when
- * every process renders) sums the processes' density volumes over the global bounds and hands
- * the result to the mapper (SetDistributedDensityVolume). Opaque spheres stay where they are.
+ * over all processes. With the Particle Render View's density-volume or voxel-cone AO,
+ * REQUEST_RENDER (when every process renders) builds the AO volume of all processes' particles
+ * and puts it on the actor (vtkParticleDistributedVolumes). Opaque spheres stay where they are.
  *
  * View protocol (like vtkPointGaussianRepresentation): REQUEST_UPDATE hands the particle
  * polydata to the view (vtkPVView::SetPiece), reports the bounds of the spheres (the points'
@@ -61,8 +61,7 @@ class vtkActor;
 class vtkDataArray;
 class vtkDataObject;
 class vtkDoubleArray;
-class vtkParticleAmbientVolume;
-class vtkParticleDensityVolume;
+class vtkParticleDistributedVolumes;
 class vtkParticlePartition;
 class vtkUnsignedCharArray;
 class vtkParticleSphereMapper;
@@ -286,31 +285,8 @@ protected:
    * set as the mapper's ColumnLayers. Collective (RequestData).
    */
   void UpdateGlobalColumnLayers(const double sphereBounds[6]);
-  /**
-   * Distributed rendering with the view's density-volume AO (vtkDensityVolumeAOPass): the
-   * volume of every process's particles over the global bounds, each process splatting its own
-   * (vtkParticleDensityVolume::ComputeSumsOnCPU) and the voxel sums added over the processes
-   * (all-reduce), given to the mapper (SetDistributedDensityVolume). In REQUEST_RENDER, only
-   * when every process renders (distributed rendering), again only when the data, the radii,
-   * the actor's matrix or the pass's volume settings changed. Not in a render pass: IceT may
-   * run those zero or several times per frame.
-   */
-  void UpdateDistributedDensityVolume(vtkInformation* inInfo);
-  vtkNew<vtkParticleDensityVolume> DensityVolume;
-  std::string DensityVolumeKey;
-  /**
-   * The same for the view's voxel-cone AO (vtkVoxelConeAOPass): level 0 of an ambient volume
-   * over all processes' spheres (own particles, not ghost copies; colours and opacities as
-   * drawn), summed over the processes; the pass builds the mips
-   * (vtkParticleSphereMapper::SetDistributedAmbientVolume).
-   */
-  void UpdateDistributedAmbientVolume(vtkInformation* inInfo);
-  vtkNew<vtkParticleAmbientVolume> AmbientVolume;
-  std::string AmbientVolumeKey;
-  // every process renders this frame (distributed rendering; see UpdateDistributedDensityVolume)
-  static bool IsDistributedRender(vtkInformation* inInfo);
-  // whether key differs from stored on any process (collective); stores key
-  static bool StaleOnAnyProcess(const std::string& key, std::string& stored);
+  // the AO volumes of all processes' particles (distributed rendering, REQUEST_RENDER)
+  vtkNew<vtkParticleDistributedVolumes> DistributedVolumes;
   double GlobalColumnLayers = 0.0;
   // `particles` without its ghost copies (cached)
   vtkPolyData* WithoutGhosts(vtkPolyData* particles, vtkUnsignedCharArray* ghosts);

@@ -1,0 +1,2753 @@
+#include "vtkSNDFRenderPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDataSet.h"
+#include "vtkFloatArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkLightsPass.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
+#include "vtkParticleAmbientLightPass.h"
+#include "vtkParticleComputeProgram.h"
+#include "vtkParticleGBufferGuard.h"
+#include "vtkParticleShaderHooks.h"
+#include "vtkParticleStageTimer.h"
+#include "vtkParticleViewport.h"
+#include "vtkParticleShaders.h"
+#include "vtkParticleSphereMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkSMPTools.h"
+#include "vtkSNDFTileCache.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
+
+#include "vtkParticleCompat.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <unordered_map>
+#include <string>
+#include <vector>
+
+namespace
+{
+// the colour attachments of the G-buffer (0: colour as drawn; see SNDFAccumulate.glsl)
+const unsigned int NumberOfAttachments = 3;
+// sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
+// the bins per axis, at least 8)
+const int TableSubsamplesPerAxis = 512;
+// rows of the lighting table per bin (SNDFBins.glsl): D, S, their slopes in u.x and u.y, the centroid
+const int TableRows = 7;
+
+// sample passes in one Render() from which it reports progress
+const int ProgressSamples = 8;
+
+// the radical inverse in base b of k (Halton sequence)
+double RadicalInverse(unsigned int k, unsigned int base)
+{
+  double inverse = 1.0 / base;
+  double f = inverse;
+  double value = 0.0;
+  while (k > 0)
+  {
+    value += f * (k % base);
+    k /= base;
+    f *= inverse;
+  }
+  return value;
+}
+
+// the sub-pixel offset of sample k in [-0.5, 0.5)^2: the Halton (2, 3) point shifted so that
+// sample 0 lies at the pixel centre
+void JitterOffset(int k, double offset[2])
+{
+  for (int a = 0; a < 2; ++a)
+  {
+    double v = RadicalInverse(static_cast<unsigned int>(k), a == 0 ? 2u : 3u) + 0.5;
+    offset[a] = v - std::floor(v) - 0.5;
+  }
+}
+
+void AppendMatrix(std::vector<double>& state, vtkMatrix4x4* m)
+{
+  if (m)
+  {
+    state.insert(state.end(), m->GetData(), m->GetData() + 16);
+  }
+}
+
+// a particle mapper whose opaque spheres the pass samples: one that draws sphere glyphs through
+// the core's opaque path (the core, and the translucent mapper of ParaView's Particles
+// representation, whose actor's translucency is checked separately), not one that draws a
+// surface through its own targets (metaballs)
+bool IsSampledParticleMapper(vtkAbstractMapper* mapper)
+{
+  auto* particles = vtkParticleSphereMapper::SafeDownCast(mapper);
+  return particles && particles->GetDrawsSphereGlyphs();
+}
+
+// whether the mapper colours by scalars (VTK's vtkMapper::MapScalars decides the same way): its
+// shader's diffuse and ambient colours are then the scalars' (vtkOpenGLPolyDataMapper), not the
+// property's; an input that is not a data set counts as coloured by scalars
+bool UsesScalarColours(vtkMapper* mapper)
+{
+  if (!mapper->GetScalarVisibility())
+  {
+    return false;
+  }
+  vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  int cellFlag = 0;
+  return !input ||
+    vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+      mapper->GetArrayId(), mapper->GetArrayName(), cellFlag) != nullptr;
+}
+
+// The colours the samples of a particle actor hold, as far as a colour map makes them: its
+// mapper's mapped scalars (vtkMapper::MapScalars, as vtkParticleSphereMapper colours), null for
+// the property's colour.
+vtkUnsignedCharArray* MappedColours(vtkActor* actor)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  return UsesScalarColours(mapper) ? mapper->MapScalars(1.0) : nullptr;
+}
+
+// Where a particle actor's colours come from a lookup table of one value per particle (as
+// vtkMapper::MapScalars maps them): the point array, the table and the component it maps (-1:
+// the magnitude). False for direct colours (unsigned char scalars in the default colour mode, the
+// direct mode), cell scalars and the RGB vector mode.
+bool ColourCoordinateSource(
+  vtkActor* actor, vtkDataArray*& array, vtkScalarsToColors*& table, int& component)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  vtkDataSet* input = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!input || !UsesScalarColours(mapper))
+  {
+    return false;
+  }
+  table = mapper->GetLookupTable();
+  int cellFlag = 0;
+  array = vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  if (!table || !array || cellFlag != 0 ||
+    array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return false;
+  }
+  const int mode = mapper->GetColorMode();
+  if (mode == VTK_COLOR_MODE_DIRECT_SCALARS ||
+    (mode == VTK_COLOR_MODE_DEFAULT && vtkUnsignedCharArray::SafeDownCast(array)))
+  {
+    return false;
+  }
+  const int n = array->GetNumberOfComponents();
+  component = 0;
+  if (n > 1)
+  {
+    if (table->GetVectorMode() == vtkScalarsToColors::COMPONENT)
+    {
+      component = std::min(std::max(table->GetVectorComponent(), 0), n - 1);
+    }
+    else if (table->GetVectorMode() == vtkScalarsToColors::MAGNITUDE &&
+      table->GetVectorComponent() == 0 &&
+      (table->GetVectorSize() == -1 || table->GetVectorSize() >= n))
+    {
+      component = -1;
+    }
+    else
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The 3 x 3 matrix M with M o = n for each pair (o, n) of `pairs` (old and new colour, three
+// values each): least squares through the pseudo-inverse of sum o o^T (minimum norm where the
+// old colours span fewer than three dimensions). False unless every pair is met within
+// `tolerance` and no entry of M exceeds 16 in magnitude (the bins' 16-bit mean colours are
+// multiplied by it: at most 16 * 3 * 2 / 65535 = 0.37 / 255 of quantisation error).
+bool FitColourMatrix(const std::vector<std::array<double, 6>>& pairs, double m[3][3], double tolerance)
+{
+  double g[3][3] = { { 0.0 } };
+  double b[3][3] = { { 0.0 } };
+  for (const auto& pair : pairs)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        g[i][j] += pair[i] * pair[j];
+        b[i][j] += pair[i] * pair[3 + j];
+      }
+    }
+  }
+  double eigenvalues[3];
+  double vectors[3][3];
+  double* gRows[3] = { g[0], g[1], g[2] };
+  double* vRows[3] = { vectors[0], vectors[1], vectors[2] };
+  vtkMath::Jacobi(gRows, eigenvalues, vRows); // (eigenvalues decreasing, vectors in columns)
+  double inverse[3][3] = { { 0.0 } };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (eigenvalues[k] <= 1e-10 * std::max(eigenvalues[0], 1e-300))
+    {
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        inverse[i][j] += vectors[i][k] * vectors[j][k] / eigenvalues[k];
+      }
+    }
+  }
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      // M^T = G^+ B
+      m[row][column] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        m[row][column] += inverse[column][k] * b[k][row];
+      }
+      if (!(std::abs(m[row][column]) <= 16.0))
+      {
+        return false;
+      }
+    }
+  }
+  for (const auto& pair : pairs)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      const double mapped = m[row][0] * pair[0] + m[row][1] * pair[1] + m[row][2] * pair[2];
+      if (!(std::abs(mapped - pair[3 + row]) <= tolerance))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkSNDFRenderPass::vtkInternals
+{
+public:
+  explicit vtkInternals(vtkObject* owner)
+    : Hooks(owner)
+  {
+  }
+
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
+  // the view-sized objects, made anew for each size
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Target;
+  vtkSmartPointer<vtkTextureObject> Attachments[NumberOfAttachments];
+  vtkSmartPointer<vtkTextureObject> Depth;
+  vtkSmartPointer<vtkTextureObject> Image;
+  vtkSmartPointer<vtkTextureObject> ImageDepth;
+  vtkNew<vtkOpenGLFramebufferObject> TableTarget;
+  vtkNew<vtkTextureObject> Table;
+  std::unique_ptr<vtkOpenGLQuadHelper> TableQuad;
+  std::string TableQuadSource;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  vtkNew<vtkParticleComputeProgram> Accumulate;
+  vtkNew<vtkParticleComputeProgram> Resolve;
+  // the error estimate: the picture at the last check, the difference program and its sums
+  vtkSmartPointer<vtkTextureObject> Checkpoint;
+  vtkNew<vtkParticleComputeProgram> Difference;
+  vtkSmartPointer<vtkOpenGLBufferObject> Totals = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  int CheckedSamples = 0;
+  vtkNew<vtkSNDFTileCache> Cache;
+  vtkParticleShaderHooks Hooks;
+  vtkTimeStamp ShaderTime;
+  vtkNew<vtkLightsPass> Lights;
+
+  int Width = 0;
+  int Height = 0;
+  bool HaveTable = false;
+  int TableBins = 0;
+  // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
+  // position, focal point and parallel scale in parallel projection), and its virtual plane:
+  // the view rotation, the camera's offset from the focal point, the focal point's distance
+  // along the view, the size of a level-0 texel and the plane position of texel (0, 0)'s
+  // lower-left corner.
+  std::vector<double> FixedState;
+  bool FrameValid = false;
+  double Rotation[3][3] = { { 0.0 } };
+  double Offset[3] = { 0.0, 0.0, 0.0 };
+  double Along = 0.0;
+  double TexelSize = 1.0;
+  double Plane[2] = { 0.0, 0.0 };
+  // A view between two levels of the S-MIP (PlaceView()): its pixels are Scale texels of the
+  // placed level wide, the window's lower-left corner lies at Offset in the rectangle of Size
+  // texels that is sampled and shaded (SNDFBoxFilter.glsl makes the window's pixels).
+  struct Between
+  {
+    bool Active = false;
+    double Scale = 1.0;
+    double Offset[2] = { 0.0, 0.0 };
+    int Size[2] = { 0, 0 };
+  };
+  vtkSmartPointer<vtkTextureObject> DisplayImage;
+  vtkSmartPointer<vtkTextureObject> DisplayDepth;
+  vtkNew<vtkParticleComputeProgram> BoxFilter;
+  // the view of the last MapView() and its size in texels, and the view of the last frame
+  // (mapped or plain)
+  int PlacedSize[2] = { 0, 0 };
+  vtkSNDFTileCache::Placement Placement;
+  bool Placed = false;
+  vtkSNDFTileCache::Placement ShownView;
+  bool Shown = false;
+  // jittered sample passes since the frame started (the Halton index of the next one)
+  int Sequence = 0;
+  std::vector<double> TableKey;
+  std::vector<double> ResolveKey;
+  std::set<std::string> Warned;
+  std::string ProgressText;
+  // Material re-shading (class description): with one particle actor the samples store its
+  // colours without the property's coefficients, and the shade applies them. RawMaterial is
+  // this frame's mode (SetShaderParameters): 0 the colours as drawn, 1 the diffuse colour
+  // without diffuseIntensity (colours from scalars), 2 white for the diffuse colour and the
+  // ambient term left to the shade (the property's colours). Per particle mapper, what its
+  // shader's colour code showed when it was built (PostReplaceShaderValues): whether it can
+  // write raw colours (VTK's intensities declared) and whether its colours are the
+  // property's; a mapper whose shader disagrees with the prediction samples its material.
+  struct ColourSource
+  {
+    bool Raw = false;
+    bool Solid = false;
+  };
+  std::map<vtkAbstractMapper*, ColourSource> ColourSources;
+  int RawMaterial = 0;
+  // Colour-map changes (class description, "Colour"): per particle actor (in the order of the
+  // view's props) the mapped scalar colours its samples hold (null: the property's colour) and
+  // the array's modification time then; the colour key, the lookup tables' modification times.
+  struct SampledColours
+  {
+    vtkSmartPointer<vtkUnsignedCharArray> Colours;
+    vtkMTimeType Time = 0;
+    // the diffuse colour stored is Scale * the mapped colour (Scale: the diffuse coefficient,
+    // or 1 where the shade applies it, RawMaterial 1), or Solid where there are no scalars
+    double Scale = 1.0;
+    double Solid[3] = { 0.0, 0.0, 0.0 };
+  };
+  std::vector<SampledColours> Colours;
+  std::vector<double> ColourKey;
+  // Colour coordinates (class description, "Colour"), for up to MaximumCoordinateActors particle
+  // actors each coloured through a lookup table or by its property's colour (at least one
+  // through a table): per actor, each particle's value (as the table sees it) in [0, 1] over the
+  // array's finite range, in a float texture buffer the sample pass reads by particle id; the
+  // sample holds t' = (a + Margin + (1 - 2 Margin) t) / K for actor a of K (CoordinateOffset,
+  // CoordinateScale; a solid actor t = 0) in prDiffuse.a (MomentsInShader: the shader variant
+  // with it). Ramp is the stored colour as a function of t' (RampPerActor RGBA entries per
+  // actor) for the maps the samples hold.
+  static constexpr int RampPerActor = 4096;
+  static constexpr int MaximumCoordinateActors = 4;
+  struct ColourCoordinates
+  {
+    bool Valid = false;
+    bool Solid = false; // the property's colour: no texture, t = 0
+    vtkWeakPointer<vtkDataArray> Array;
+    vtkMTimeType Time = 0;
+    int Component = 0;
+    double Range[2] = { 0.0, 0.0 };
+    // the distinct values (an indexed table maps t to the nearest; found when first needed,
+    // empty beyond 4096 values)
+    bool HaveCategories = false;
+    std::vector<double> Categories;
+    vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+    vtkSmartPointer<vtkTextureObject> Texture;
+  };
+  std::vector<ColourCoordinates> Coordinates;
+  std::vector<vtkProp*> CoordinateProps;
+  std::vector<float> Ramp;
+  vtkSmartPointer<vtkTextureObject> Ramps;
+  // a one-value buffer texture that solid actors' draws read
+  vtkSmartPointer<vtkOpenGLBufferObject> SolidBuffer;
+  vtkSmartPointer<vtkTextureObject> SolidTexture;
+  bool MomentsInShader = false;
+
+  double Margin() const { return this->Coordinates.size() > 1 ? 0.02 : 0.0; }
+
+  // Whether the particle actors can keep colour coordinates: 1 to MaximumCoordinateActors
+  // actors, each coloured through a lookup table (ColourCoordinateSource) or by its property's
+  // colour, at least one through a table.
+  static bool CoordinateActors(const std::vector<vtkActor*>& particles)
+  {
+    if (particles.empty() || particles.size() > MaximumCoordinateActors)
+    {
+      return false;
+    }
+    bool table = false;
+    for (vtkActor* actor : particles)
+    {
+      vtkDataArray* array = nullptr;
+      vtkScalarsToColors* lut = nullptr;
+      int component = 0;
+      if (ColourCoordinateSource(actor, array, lut, component))
+      {
+        table = true;
+      }
+      else if (UsesScalarColours(actor->GetMapper()))
+      {
+        return false; // direct colours, cell scalars, RGB vector mode
+      }
+    }
+    return table;
+  }
+
+  // The colour coordinates of the particle actors up to date (an actor's computed again only when
+  // its array, the array's modification time or the component changed); false where they cannot
+  // be kept: non-finite values (NaN or Inf: the table's NaN and out-of-range colours are not a
+  // function of the clamped value), more particles than a texture buffer holds. For actors that
+  // pass CoordinateActors() (Render() checks it first).
+  bool UpdateCoordinates(
+    const std::vector<vtkActor*>& particles, vtkOpenGLRenderWindow* context, vtkObject* owner)
+  {
+    this->Coordinates.resize(particles.size());
+    this->CoordinateProps.assign(particles.begin(), particles.end());
+    bool solid = false;
+    for (std::size_t a = 0; a < particles.size(); ++a)
+    {
+      if (!this->UpdateActorCoordinates(this->Coordinates[a], particles[a], context, owner))
+      {
+        return false;
+      }
+      solid = solid || this->Coordinates[a].Solid;
+    }
+    if (solid && !this->SolidTexture)
+    {
+      this->SolidBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+      this->SolidTexture = vtkSmartPointer<vtkTextureObject>::New();
+      this->SolidTexture->SetContext(context);
+      const std::vector<float> zero(1, 0.0f);
+      if (!this->SolidBuffer->Upload(zero, vtkOpenGLBufferObject::TextureBuffer) ||
+        !this->SolidTexture->CreateTextureBuffer(1, 1, VTK_FLOAT, this->SolidBuffer))
+      {
+        this->SolidTexture = nullptr;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  bool UpdateActorCoordinates(
+    ColourCoordinates& c, vtkActor* actor, vtkOpenGLRenderWindow* context, vtkObject* owner)
+  {
+    vtkDataArray* array = nullptr;
+    vtkScalarsToColors* table = nullptr;
+    int component = 0;
+    if (!ColourCoordinateSource(actor, array, table, component))
+    {
+      c.Solid = true; // (CoordinateActors: the property's colour)
+      c.Valid = true;
+      return true;
+    }
+    if (!c.Solid && c.Array == array && c.Time == array->GetMTime() && c.Component == component)
+    {
+      return c.Valid;
+    }
+    c.Solid = false;
+    c.Valid = false;
+    c.Array = array;
+    c.Time = array->GetMTime();
+    c.Component = component;
+    c.HaveCategories = false;
+    c.Categories.clear();
+    const vtkIdType n = array->GetNumberOfTuples();
+    GLint limit = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
+    if (n < 1 || n > static_cast<vtkIdType>(limit))
+    {
+      if (n > 0 && this->FirstWarning("coordinates " + std::to_string(n)))
+      {
+        vtkWarningWithObjectMacro(owner, << n << " particles exceed the context's texture buffer "
+                                         << "size (" << limit << "): a new colour map samples "
+                                         << "again unless its colours are linear in the old ones.");
+      }
+      return false;
+    }
+    const int comps = array->GetNumberOfComponents();
+    std::vector<double> values(static_cast<std::size_t>(n));
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      std::vector<double> tuple(static_cast<std::size_t>(comps));
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (component >= 0)
+        {
+          values[i] = array->GetComponent(i, component);
+          continue;
+        }
+        array->GetTuple(i, tuple.data());
+        double sum = 0.0;
+        for (double v : tuple)
+        {
+          sum += v * v;
+        }
+        values[i] = std::sqrt(sum);
+      }
+    });
+    double lo = VTK_DOUBLE_MAX;
+    double hi = -VTK_DOUBLE_MAX;
+    for (double v : values)
+    {
+      if (!std::isfinite(v))
+      {
+        return false;
+      }
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    c.Range[0] = lo;
+    c.Range[1] = hi;
+    std::vector<float> t(values.size());
+    const double scale = hi > lo ? 1.0 / (hi - lo) : 0.0;
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        t[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - lo) * scale)));
+      }
+    });
+    if (!c.Buffer)
+    {
+      c.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    }
+    if (c.Texture)
+    {
+      c.Texture->ReleaseGraphicsResources(context);
+    }
+    c.Texture = vtkSmartPointer<vtkTextureObject>::New();
+    c.Texture->SetContext(context);
+    c.Valid = c.Buffer->Upload(t, vtkOpenGLBufferObject::TextureBuffer) &&
+      c.Texture->CreateTextureBuffer(static_cast<unsigned int>(n), 1, VTK_FLOAT, c.Buffer);
+    return c.Valid;
+  }
+
+  // Where the sample pass reads the coordinate of `prop`'s particles and how it places it in
+  // [0, 1] (t' = offset + scale t); null where `prop` keeps none.
+  vtkTextureObject* CoordinateSource(vtkProp* prop, float& offset, float& scale, int& solid) const
+  {
+    const auto found = std::find(this->CoordinateProps.begin(), this->CoordinateProps.end(), prop);
+    if (found == this->CoordinateProps.end() ||
+      this->Coordinates.size() != this->CoordinateProps.size())
+    {
+      return nullptr;
+    }
+    const std::size_t a = static_cast<std::size_t>(found - this->CoordinateProps.begin());
+    const double k = static_cast<double>(this->Coordinates.size());
+    offset = static_cast<float>((a + this->Margin()) / k);
+    scale = static_cast<float>((1.0 - 2.0 * this->Margin()) / k);
+    solid = this->Coordinates[a].Solid ? 1 : 0;
+    return solid ? this->SolidTexture.Get() : this->Coordinates[a].Texture.Get();
+  }
+
+  void DeactivateCoordinates()
+  {
+    for (ColourCoordinates& c : this->Coordinates)
+    {
+      if (c.Texture)
+      {
+        c.Texture->Deactivate();
+      }
+    }
+    if (this->SolidTexture)
+    {
+      this->SolidTexture->Deactivate();
+    }
+  }
+
+  void ReleaseCoordinates(vtkWindow* w)
+  {
+    for (ColourCoordinates& c : this->Coordinates)
+    {
+      if (c.Texture)
+      {
+        c.Texture->ReleaseGraphicsResources(w);
+      }
+      if (c.Buffer)
+      {
+        c.Buffer->ReleaseGraphicsResources();
+      }
+    }
+    this->Coordinates.clear();
+    this->CoordinateProps.clear();
+    this->Ramp.clear();
+    for (auto* texture : { &this->Ramps, &this->SolidTexture })
+    {
+      if (*texture)
+      {
+        (*texture)->ReleaseGraphicsResources(w);
+      }
+      *texture = nullptr;
+    }
+    if (this->SolidBuffer)
+    {
+      this->SolidBuffer->ReleaseGraphicsResources();
+    }
+    this->SolidBuffer = nullptr;
+  }
+
+  // The distinct values of an actor's coordinate array (at most 4096; false beyond).
+  static bool FindCategories(ColourCoordinates& c)
+  {
+    if (!c.HaveCategories && c.Array)
+    {
+      c.HaveCategories = true;
+      std::set<double> seen;
+      const int comps = c.Array->GetNumberOfComponents();
+      std::vector<double> tuple(static_cast<std::size_t>(comps));
+      for (vtkIdType i = 0; i < c.Array->GetNumberOfTuples() && seen.size() <= 4096; ++i)
+      {
+        double v = 0.0;
+        if (c.Component >= 0)
+        {
+          v = c.Array->GetComponent(i, c.Component);
+        }
+        else
+        {
+          c.Array->GetTuple(i, tuple.data());
+          for (double x : tuple)
+          {
+            v += x * x;
+          }
+          v = std::sqrt(v);
+        }
+        seen.insert(v);
+      }
+      if (seen.size() <= 4096)
+      {
+        c.Categories.assign(seen.begin(), seen.end());
+      }
+    }
+    return !c.Categories.empty();
+  }
+
+  // The stored colours (SampledColours `stored`: the scale times the table's colour, or the solid
+  // colour) at RampPerActor values of t per actor (the whole [0, 1] of t'), through the actors'
+  // lookup tables as they map now; alpha the table's (1 for a solid colour). An indexed
+  // (categorical) table maps each value to the colour of the nearest value the particles have:
+  // the quadrature's nodes (SNDFRecolour.glsl) fall near them, not on them. Empty where an
+  // indexed table meets more than 4096 distinct values.
+  std::vector<float> MakeRamp(
+    const std::vector<vtkActor*>& particles, const std::vector<SampledColours>& stored)
+  {
+    const int k = static_cast<int>(this->Coordinates.size());
+    if (k < 1 || particles.size() != this->Coordinates.size() || stored.size() != particles.size())
+    {
+      return std::vector<float>();
+    }
+    for (int a = 0; a < k; ++a)
+    {
+      if (!this->Coordinates[a].Solid &&
+        particles[a]->GetMapper()->GetLookupTable()->GetIndexedLookup() &&
+        !FindCategories(this->Coordinates[a]))
+      {
+        return std::vector<float>();
+      }
+    }
+    const int size = RampPerActor * k;
+    const double margin = this->Margin();
+    std::vector<float> ramp(4 * static_cast<std::size_t>(size));
+    for (int i = 0; i < size; ++i)
+    {
+      const double global = k * (i / (size - 1.0));
+      const int a = std::min(k - 1, static_cast<int>(global));
+      const double local = std::min(1.0, std::max(0.0, (global - a - margin) / (1.0 - 2.0 * margin)));
+      const ColourCoordinates& c = this->Coordinates[a];
+      float* entry = &ramp[4 * static_cast<std::size_t>(i)];
+      if (c.Solid)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          entry[j] = static_cast<float>(stored[a].Solid[j]);
+        }
+        entry[3] = 1.0f;
+        continue;
+      }
+      vtkScalarsToColors* table = particles[a]->GetMapper()->GetLookupTable();
+      double v = c.Range[0] + (c.Range[1] - c.Range[0]) * local;
+      if (table->GetIndexedLookup())
+      {
+        auto above = std::lower_bound(c.Categories.begin(), c.Categories.end(), v);
+        if (above == c.Categories.end() ||
+          (above != c.Categories.begin() && v - *(above - 1) < *above - v))
+        {
+          --above;
+        }
+        v = *above;
+      }
+      const unsigned char* rgba = table->MapValue(v);
+      for (int j = 0; j < 3; ++j)
+      {
+        entry[j] = static_cast<float>(stored[a].Scale * rgba[j] / 255.0);
+      }
+      entry[3] = static_cast<float>(rgba[3] / 255.0);
+    }
+    return ramp;
+  }
+
+  // What the diffuse colour of an actor's samples is (see SampledColours), in modes 0 and 1.
+  SampledColours StoredColours(vtkActor* actor) const
+  {
+    SampledColours stored;
+    stored.Colours = MappedColours(actor);
+    stored.Time = stored.Colours ? stored.Colours->GetMTime() : 0;
+    vtkProperty* p = actor->GetProperty();
+    stored.Scale = this->RawMaterial == 1 ? 1.0 : p->GetDiffuse();
+    for (int c = 0; c < 3; ++c)
+    {
+      stored.Solid[c] = stored.Scale * p->GetDiffuseColor()[c];
+    }
+    return stored;
+  }
+
+  // The colours the particle actors' samples are taken with from now on (a restart, a recolour);
+  // the ramp of the colour coordinates with them.
+  void KeepColours(const std::vector<vtkActor*>& particles)
+  {
+    this->Colours.clear();
+    for (vtkActor* actor : particles)
+    {
+      this->Colours.push_back(this->StoredColours(actor));
+    }
+    this->Ramp.clear();
+    if (this->MomentsInShader)
+    {
+      this->Ramp = this->MakeRamp(particles, this->Colours);
+    }
+  }
+
+  // A new colour map (class description, "Colour"): 0 where the mapped colours did not change,
+  // 1 where the cached bins were recoloured (RecolourLinear, else RecolourMap), -1 where the
+  // samples must be taken again.
+  int Recolour(const std::vector<vtkActor*>& particles, bool coloured)
+  {
+    const int linear = this->RecolourLinear(particles, coloured);
+    return linear >= 0 ? linear : this->RecolourMap(particles, coloured);
+  }
+
+  // Any new colour maps of the particle actors' colour coordinates where the cache keeps their
+  // moments: the old and the new ramp to SNDFRecolour.glsl (mode 1). -1 where a coordinate
+  // itself changed (another array, component or values, an actor now coloured otherwise), the
+  // opacities changed, the ambient term of a table-coloured actor or a voxel-cone light carries
+  // the colours (`coloured`), or there are no moments.
+  int RecolourMap(const std::vector<vtkActor*>& particles, bool coloured)
+  {
+    if (!this->Cache->GetMoments() || !this->MomentsInShader || this->Ramp.empty() || coloured ||
+      particles.size() != this->Coordinates.size() ||
+      !std::equal(particles.begin(), particles.end(), this->CoordinateProps.begin()))
+    {
+      return -1;
+    }
+    std::vector<SampledColours> now;
+    for (std::size_t a = 0; a < particles.size(); ++a)
+    {
+      const ColourCoordinates& c = this->Coordinates[a];
+      vtkDataArray* array = nullptr;
+      vtkScalarsToColors* table = nullptr;
+      int component = 0;
+      const bool source = ColourCoordinateSource(particles[a], array, table, component);
+      if (!c.Valid || source == c.Solid)
+      {
+        return -1;
+      }
+      if (!c.Solid &&
+        (array != c.Array || array->GetMTime() != c.Time || component != c.Component ||
+          particles[a]->GetProperty()->GetAmbient() != 0.0))
+      {
+        return -1;
+      }
+      now.push_back(this->StoredColours(particles[a])); // (maps: the table's range)
+      if (!c.Solid && !now.back().Colours)
+      {
+        return -1;
+      }
+    }
+    const std::vector<float> ramp = this->MakeRamp(particles, now);
+    if (ramp.empty() || ramp.size() != this->Ramp.size())
+    {
+      return -1; // an indexed table with more than 4096 values
+    }
+    const std::size_t size = ramp.size() / 4;
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      if (ramp[4 * i + 3] != this->Ramp[4 * i + 3])
+      {
+        return -1; // the opacities changed
+      }
+    }
+    std::vector<float> ramps = this->Ramp;
+    ramps.insert(ramps.end(), ramp.begin(), ramp.end());
+    // the old maps' quadrature error of a bin carried into the new maps through the least-squares
+    // linear map from the old ramp's colours to the new one's (both centred; 0 where that has
+    // entries beyond +-16)
+    double centre[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centre[k] += this->Ramp[4 * i + k] / static_cast<double>(size);
+        centre[3 + k] += ramp[4 * i + k] / static_cast<double>(size);
+      }
+    }
+    std::vector<std::array<double, 6>> pairs(size);
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        pairs[i][k] = this->Ramp[4 * i + k] - centre[k];
+        pairs[i][3 + k] = ramp[4 * i + k] - centre[3 + k];
+      }
+    }
+    double residual[3][3];
+    if (!FitColourMatrix(pairs, residual, std::numeric_limits<double>::infinity()))
+    {
+      std::fill(&residual[0][0], &residual[0][0] + 9, 0.0);
+    }
+    if (!this->Ramps)
+    {
+      this->Ramps = vtkSmartPointer<vtkTextureObject>::New();
+    }
+    this->Ramps->SetContext(this->Context);
+    const int width = static_cast<int>(size);
+    if (!this->Ramps->Create2DFromRaw(width, 2, 4, VTK_FLOAT, ramps.data()) ||
+      this->Cache->RecolourMap(this->Ramps, width, residual) <= 0)
+    {
+      return -1;
+    }
+    this->ResolveKey.clear();
+    this->KeepColours(particles);
+    return 1;
+  }
+
+  // A new colour map whose new colours are a linear function of the old ones, c' = M c for every
+  // particle: the cached tiles' bin colours multiplied by M (1); 0 where the mapped colours did
+  // not change, -1 where M does not exist. `coloured`: an object-space ambient light in the chain
+  // that carries the particles' colours (the voxel-cone pass), drawn into the colour target.
+  int RecolourLinear(const std::vector<vtkActor*>& particles, bool coloured)
+  {
+    if (particles.size() != this->Colours.size())
+    {
+      return -1;
+    }
+    // the distinct (old, new) colour pairs in the units of the stored diffuse colour
+    std::vector<std::array<double, 6>> pairs;
+    bool changed = false;
+    for (std::size_t a = 0; a < particles.size(); ++a)
+    {
+      const SampledColours now = this->StoredColours(particles[a]);
+      const SampledColours& then = this->Colours[a];
+      vtkProperty* p = particles[a]->GetProperty();
+      // (every actor's colours make pairs, the unchanged ones too: M must keep them)
+      if (!now.Colours && !then.Colours)
+      {
+        // the property's colour: one pair (its ambient term is the ambient colour's)
+        if (!std::equal(now.Solid, now.Solid + 3, then.Solid))
+        {
+          if (coloured)
+          {
+            return -1;
+          }
+          changed = true;
+        }
+        pairs.push_back({ then.Solid[0], then.Solid[1], then.Solid[2], now.Solid[0], now.Solid[1],
+          now.Solid[2] });
+        continue;
+      }
+      if (!now.Colours || !then.Colours || now.Colours->GetNumberOfComponents() != 4 ||
+        then.Colours->GetNumberOfComponents() != 4 ||
+        now.Colours->GetNumberOfTuples() != then.Colours->GetNumberOfTuples())
+      {
+        return -1;
+      }
+      if (now.Colours == then.Colours && now.Time != then.Time)
+      {
+        return -1; // mapped anew into the same array: the old colours are gone
+      }
+      if (now.Colours != then.Colours || now.Scale != then.Scale)
+      {
+        if (p->GetAmbient() != 0.0 || coloured)
+        {
+          return -1; // colour-dependent light in the colour target, which keeps no bins
+        }
+        changed = true;
+      }
+      std::unordered_map<std::uint32_t, std::uint32_t> seen;
+      const unsigned char* o = then.Colours->GetPointer(0);
+      const unsigned char* n = now.Colours->GetPointer(0);
+      const vtkIdType count = now.Colours->GetNumberOfTuples();
+      for (vtkIdType i = 0; i < count; ++i, o += 4, n += 4)
+      {
+        if (o[3] != n[3])
+        {
+          return -1; // the opacity changed too
+        }
+        const std::uint32_t key = o[0] | (o[1] << 8) | (o[2] << 16);
+        const std::uint32_t value = n[0] | (n[1] << 8) | (n[2] << 16);
+        const auto found = seen.emplace(key, value);
+        if (!found.second && found.first->second != value)
+        {
+          return -1; // one old colour, two new ones: not a function of the colour
+        }
+        if (found.second && seen.size() > 4096)
+        {
+          return -1; // a continuous map: not worth the fit
+        }
+      }
+      for (const auto& pair : seen)
+      {
+        std::array<double, 6> entry;
+        for (int c = 0; c < 3; ++c)
+        {
+          entry[c] = then.Scale / 255.0 * ((pair.first >> (8 * c)) & 0xFFu);
+          entry[3 + c] = now.Scale / 255.0 * ((pair.second >> (8 * c)) & 0xFFu);
+        }
+        pairs.push_back(entry);
+      }
+    }
+    if (!changed)
+    {
+      return 0;
+    }
+    double matrix[3][3];
+    if (!FitColourMatrix(pairs, matrix, 0.05 / 255.0))
+    {
+      return -1;
+    }
+    this->Cache->Recolour(matrix);
+    this->ResolveKey.clear();
+    this->KeepColours(particles);
+    return 1;
+  }
+
+  // GPU times of the last timed Render() per stage (sample, accumulate, shade)
+  vtkParticleStageTimer Timer{ 3 };
+
+  // The lower-left corner of a width x height parallel view in the coordinates of the frame's
+  // rotation (right, up) and the distance of its focal point along the view: VTK's orthographic
+  // window spans (WindowCenter -/+ 1) * (parallel scale * aspect, parallel scale) around the
+  // focal point.
+  void Corner(vtkCamera* camera, int width, int height, double corner[2], double& along) const
+  {
+    const double* focal = camera->GetFocalPoint();
+    double plane[3] = { 0.0, 0.0, 0.0 };
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        plane[row] += this->Rotation[row][a] * focal[a];
+      }
+    }
+    const double* centre = camera->GetWindowCenter();
+    const double scale = camera->GetParallelScale();
+    corner[0] = plane[0] + (centre[0] - 1.0) * scale * width / height;
+    corner[1] = plane[1] + (centre[1] - 1.0) * scale;
+    along = plane[2];
+  }
+
+  // Starts the S-MIP's frame at this view: its pixels are the level-0 texels.
+  void StartFrame(vtkCamera* camera, int width, int height)
+  {
+    vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Rotation[row][a] = view->GetElement(row, a);
+      }
+      this->Offset[row] = camera->GetPosition()[row] - camera->GetFocalPoint()[row];
+    }
+    this->TexelSize = camera->GetParallelProjection() ? 2.0 * camera->GetParallelScale() / height : 1.0;
+    this->Corner(camera, width, height, this->Plane, this->Along);
+    this->Placement = vtkSNDFTileCache::Placement();
+    this->FrameValid = true;
+  }
+
+  // Where a parallel view of the frame lies in the S-MIP: false unless its pixels are the
+  // texels of a level (pixel size 2^L level-0 texels; the camera moved in the view plane only,
+  // the direction kept). Its grid is placed to 1/256 level-0 texel.
+  //
+  // A parallel view whose pixel size is not a power of two times the level-0 texel lies between
+  // two levels (ZoomBetweenLevels; otherwise false): it is placed at the finer of the two, L
+  // (its pixels 1 to 2 texels of L wide: the coarser level, magnified, measured mean 5.9 /255
+  // from the super-sampled view on the test crystal, where the plain image is 9.6), on the
+  // phase-0 grid of that level, with a rectangle of texels that covers the window and a texel
+  // more on each side; the samples go into those texels and the window shows their box filter
+  // (`between`). False where the rectangle needs more than `slots` tiles.
+  bool PlaceView(vtkCamera* camera, int width, int height, int slots, bool allowBetween,
+    vtkSNDFTileCache::Placement& placed, Between& between) const
+  {
+    between = Between();
+    if (!camera->GetParallelProjection())
+    {
+      placed = vtkSNDFTileCache::Placement();
+      return true;
+    }
+    const double pixel = 2.0 * camera->GetParallelScale() / height;
+    const double lod = std::log2(pixel / this->TexelSize);
+    if (!std::isfinite(lod))
+    {
+      return false;
+    }
+    between.Active = std::abs(lod - std::round(lod)) > 1e-6;
+    if (between.Active && !allowBetween)
+    {
+      return false;
+    }
+    // (between two levels: the finer one, its texels at most a pixel wide)
+    const long level = between.Active ? static_cast<long>(std::floor(lod)) : std::lround(lod);
+    if (level < vtkSNDFTileCache::MinimumLevel || level > vtkSNDFTileCache::MaximumLevel)
+    {
+      return false;
+    }
+    double reach = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      reach += this->Offset[a] * this->Offset[a];
+    }
+    reach = std::sqrt(reach);
+    for (int a = 0; a < 3; ++a)
+    {
+      const double offset = camera->GetPosition()[a] - camera->GetFocalPoint()[a];
+      if (std::abs(offset - this->Offset[a]) > 1e-9 * reach + 1e-6 * this->TexelSize)
+      {
+        return false;
+      }
+    }
+    double corner[2];
+    double along;
+    this->Corner(camera, width, height, corner, along);
+    if (std::abs(along - this->Along) > 1e-3 * this->TexelSize)
+    {
+      return false;
+    }
+    placed.Level = static_cast<int>(level);
+    const long long texel = 1LL << (level + 8);
+    for (int a = 0; a < 2; ++a)
+    {
+      // in 1/256 of a level-0 texel
+      const double position = 256.0 * (corner[a] - this->Plane[a]) / this->TexelSize;
+      if (!(std::abs(position) < 1e15))
+      {
+        return false;
+      }
+      if (between.Active)
+      {
+        const double at = position / static_cast<double>(texel); // in texels of the level
+        placed.Phase[a] = 0;
+        placed.Origin[a] = static_cast<long long>(std::floor(at)) - 1;
+        between.Offset[a] = at - static_cast<double>(placed.Origin[a]);
+        continue;
+      }
+      // (a grid of 1/256 pixel: the texels lie within 1/512 level-0 pixel of the view's pixels)
+      const long long whole = std::llround(position);
+      placed.Phase[a] = ((whole % texel) + texel) % texel;
+      placed.Origin[a] = (whole - placed.Phase[a]) / texel;
+    }
+    if (between.Active)
+    {
+      between.Scale = pixel / (this->TexelSize * std::ldexp(1.0, static_cast<int>(level)));
+      between.Size[0] = static_cast<int>(std::ceil(between.Offset[0] + width * between.Scale)) + 1;
+      between.Size[1] = static_cast<int>(std::ceil(between.Offset[1] + height * between.Scale)) + 1;
+      if (vtkSNDFTileCache::GetTilesForView(between.Size[0], between.Size[1]) > slots)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // The parallel scale and window centre of a camera whose texelsX x texelsY pixels are the
+  // texels of the rectangle of a view between two levels (`placed`: on the level's phase-0 grid,
+  // its lower-left texel at Origin); the aspect ratio is texelsX / texelsY.
+  void SamplingWindow(vtkCamera* camera, const vtkSNDFTileCache::Placement& placed, int texelsX,
+    int texelsY, double& scale, double centre[2]) const
+  {
+    const double texel = this->TexelSize * std::ldexp(1.0, placed.Level);
+    scale = 0.5 * texelsY * texel;
+    const double aspect = static_cast<double>(texelsX) / texelsY;
+    const double* focal = camera->GetFocalPoint();
+    for (int a = 0; a < 2; ++a)
+    {
+      double plane = 0.0; // the focal point in the frame's rotation
+      for (int k = 0; k < 3; ++k)
+      {
+        plane += this->Rotation[a][k] * focal[k];
+      }
+      const double corner = this->Plane[a] + static_cast<double>(placed.Origin[a]) * texel;
+      centre[a] = (corner - plane) / (scale * (a == 0 ? aspect : 1.0)) + 1.0;
+    }
+  }
+
+  // true the first time `what` is reported
+  bool FirstWarning(const std::string& what) { return this->Warned.insert(what).second; }
+
+  void ReleaseTextures(vtkWindow* w)
+  {
+    if (this->Target)
+    {
+      this->Target->ReleaseGraphicsResources(w);
+    }
+    for (auto& attachment : this->Attachments)
+    {
+      if (attachment)
+      {
+        attachment->ReleaseGraphicsResources(w);
+      }
+      attachment = nullptr;
+    }
+    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth, &this->Checkpoint,
+           &this->DisplayImage, &this->DisplayDepth })
+    {
+      if (*texture)
+      {
+        (*texture)->ReleaseGraphicsResources(w);
+      }
+      *texture = nullptr;
+    }
+    this->Target = nullptr;
+    this->Width = 0;
+    this->Height = 0;
+  }
+
+  void NewTextures()
+  {
+    this->Target = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    for (auto& attachment : this->Attachments)
+    {
+      attachment = vtkSmartPointer<vtkTextureObject>::New();
+    }
+    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
+    this->Image = vtkSmartPointer<vtkTextureObject>::New();
+    this->ImageDepth = vtkSmartPointer<vtkTextureObject>::New();
+    this->Checkpoint = vtkSmartPointer<vtkTextureObject>::New();
+  }
+
+  // The G-buffer and the shaded texels for a width x height rectangle of texels (the window's
+  // pixels, or the rectangle of a view between two levels).
+  void AllocateTargets(vtkOpenGLRenderWindow* context, int width, int height)
+  {
+    this->ReleaseTextures(context);
+    this->NewTextures();
+    this->Target->SetContext(context);
+    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+    {
+      vtkTextureObject* t = this->Attachments[a];
+      t->SetContext(context);
+      if (a > 0)
+      {
+        t->SetInternalFormat(GL_RGBA16F);
+        t->SetFormat(GL_RGBA);
+        t->SetDataType(GL_FLOAT);
+        t->Allocate2D(width, height, 4, VTK_FLOAT);
+      }
+      else
+      {
+        // 8 bits, as the window: the background and other geometry come out exactly as drawn
+        // without the pass (a particle's ambient term is quantised per sample, < 0.5/255)
+        t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+      }
+    }
+    this->Depth->SetContext(context);
+    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    AllocateImage(this->Image, context, width, height, false);
+    AllocateImage(this->Checkpoint, context, width, height, false);
+    AllocateImage(this->ImageDepth, context, width, height, true);
+    vtkOpenGLState* ostate = context->GetState();
+    ostate->PushFramebufferBindings();
+    this->Target->Bind();
+    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+    {
+      this->Target->AddColorAttachment(a, this->Attachments[a]);
+    }
+    this->Target->AddDepthAttachment(this->Depth);
+    ostate->PopFramebufferBindings();
+    this->Width = width;
+    this->Height = height;
+  }
+
+  // The window's picture of a view between two levels (SNDFBoxFilter.glsl).
+  void AllocateDisplay(vtkOpenGLRenderWindow* context, int width, int height)
+  {
+    for (auto* image : { &this->DisplayImage, &this->DisplayDepth })
+    {
+      if (*image && (*image)->GetHandle() && static_cast<int>((*image)->GetWidth()) == width &&
+        static_cast<int>((*image)->GetHeight()) == height)
+      {
+        continue;
+      }
+      if (*image)
+      {
+        (*image)->ReleaseGraphicsResources(context);
+      }
+      *image = vtkSmartPointer<vtkTextureObject>::New();
+      AllocateImage(*image, context, width, height, image == &this->DisplayDepth);
+    }
+  }
+
+  // a float picture: RGBA, or one depth channel
+  static void AllocateImage(
+    vtkTextureObject* image, vtkOpenGLRenderWindow* context, int width, int height, bool depth)
+  {
+    image->SetContext(context);
+    image->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
+    image->SetFormat(depth ? GL_RED : GL_RGBA);
+    image->SetDataType(GL_FLOAT);
+    image->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
+  }
+};
+
+vtkStandardNewMacro(vtkSNDFRenderPass);
+
+//------------------------------------------------------------------------------
+vtkSNDFRenderPass::vtkSNDFRenderPass()
+  : Internals(new vtkInternals(this))
+{
+  this->Internals->ShaderTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkSNDFRenderPass::~vtkSNDFRenderPass()
+{
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::SetBinsPerAxis(int bins)
+{
+  if (bins != 4 && bins != 8 && bins != 16)
+  {
+    vtkErrorMacro(<< "BinsPerAxis must be 4, 8 or 16, not " << bins << "; it stays "
+                  << this->BinsPerAxis << ".");
+    return;
+  }
+  if (bins != this->BinsPerAxis)
+  {
+    this->BinsPerAxis = bins;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::Restart()
+{
+  this->Internals->FrameValid = false;
+  this->NumberOfSamples = 0;
+}
+
+//------------------------------------------------------------------------------
+vtkSNDFTileCache* vtkSNDFRenderPass::GetTileCache()
+{
+  return this->Internals->Cache;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSNDFRenderPass::GetProgressText()
+{
+  return this->Internals->ProgressText.c_str();
+}
+
+//------------------------------------------------------------------------------
+double vtkSNDFRenderPass::GetLastSampleSeconds()
+{
+  return this->Internals->Timer.Seconds(0);
+}
+
+//------------------------------------------------------------------------------
+double vtkSNDFRenderPass::GetLastAccumulateSeconds()
+{
+  return this->Internals->Timer.Seconds(1);
+}
+
+//------------------------------------------------------------------------------
+double vtkSNDFRenderPass::GetLastShadeSeconds()
+{
+  return this->Internals->Timer.Seconds(2);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkSNDFRenderPass::GetShaderStageMTime()
+{
+  return this->Internals->ShaderTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::PreReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (IsSampledParticleMapper(mapper))
+  {
+    return true; // PostReplaceShaderValues writes the particle samples
+  }
+  // every other shader replaces the particle sample with "no particle" (VTK declares an output
+  // per gl_FragData index it finds; outputs not written would be undefined). Alpha 1: VTK
+  // blends opaque geometry too (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), so a write with alpha 0 would
+  // leave the particle sample behind it in place.
+  const std::string tag = "//VTK::DepthPeeling::Impl";
+  vtkShaderProgram::Substitute(fragmentShader, tag,
+    "gl_FragData[1] = vec4(0.0, 0.0, -1.0, 1.0);\n  gl_FragData[2] = vec4(0.0, 0.0, 0.0, 1.0);\n  " +
+      tag,
+    false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+
+  if (!IsSampledParticleMapper(mapper))
+  {
+    return true;
+  }
+  vtkParticleShaderHooks& hooks = this->Internals->Hooks;
+  hooks.Begin(vertexShader, geometryShader, fragmentShader);
+  // the sample: the view-space normal (facing the viewer), the ambient visibility plus 2 (it
+  // marks a particle sample: the delegate's clear may fill the target with the background
+  // colour, components in [0, 1]) and the diffuse colour; the colour target keeps the shading
+  // that needs no normal (the occluded ambient colour and what the AO source adds)
+  // Where the shade applies the material (RawMaterial, SetShaderParameters) the sample keeps
+  // the diffuse colour without diffuseIntensity (1), or white and no ambient term where the
+  // colours are the property's (2). VTK's colour code (ReplaceShaderColor) computes
+  // diffuseColor = diffuseIntensity * (vertex colour, texture colour or diffuseColorUniform).
+  vtkInternals::ColourSource source;
+  const std::string& fs = fragmentShader;
+  source.Raw = fs.find("uniform float diffuseIntensity") != std::string::npos;
+  source.Solid = fs.find("diffuseIntensity * diffuseColorUniform") != std::string::npos &&
+    fs.find("diffuseIntensity * vertexColorVSOutput") == std::string::npos &&
+    fs.find("diffuseIntensity * texColor") == std::string::npos;
+  this->Internals->ColourSources[mapper] = source;
+  const std::string raw = source.Raw
+    ? "    if (prRawMaterial == 1)\n"
+      "    {\n"
+      "      prSampleDiffuse = diffuseColor / max(diffuseIntensity, 1.0e-30);\n"
+      "    }\n"
+      "    else if (prRawMaterial == 2)\n"
+      "    {\n"
+      "      prSampleDiffuse = vec3(1.0);\n"
+      "      prSampleAmbient = prAmbientLight;\n"
+      "    }\n"
+    : "";
+  // with the colour coordinates' moments kept (class description, "Colour") the particle's
+  // coordinate goes into the diffuse target's alpha (blending is off there during the sample pass)
+  const bool coordinates = this->Internals->MomentsInShader;
+  // (t' = offset + scale t, t read by particle id; a solid actor reads t = 0 from a one-value
+  // buffer: vtkInternals::CoordinateSource)
+  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec",
+    coordinates ? "uniform int prRawMaterial;\nuniform samplerBuffer prColourCoordinates;\n"
+                  "uniform float prCoordinateOffset;\nuniform float prCoordinateScale;\n"
+                  "uniform int prCoordinateSolid;"
+                : "uniform int prRawMaterial;");
+  const std::string coordinate = coordinates
+    ? "prCoordinateOffset + prCoordinateScale * texelFetch(prColourCoordinates, "
+      "prCoordinateSolid != 0 ? 0 : particleIdVSOutput * particleIdStride).r"
+    : "1.0";
+  hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
+    "vec3 prSampleDiffuse = diffuseColor;\n"
+    "    vec3 prSampleAmbient = prAmbientOcclusion * ambientColor + prAmbientLight;\n" + raw +
+      "    gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), 1.0);\n"
+      "    gl_FragData[2] = vec4(prSampleDiffuse, " + coordinate + ");\n"
+      "    gl_FragData[0] = vec4(prSampleAmbient, 1.0);");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (IsSampledParticleMapper(mapper) && program->IsUniformUsed("prRawMaterial"))
+  {
+    program->SetUniformi("prRawMaterial", this->Internals->RawMaterial);
+  }
+  float offset = 0.0f;
+  float scale = 1.0f;
+  int solid = 0;
+  vtkTextureObject* coordinates = IsSampledParticleMapper(mapper)
+    ? this->Internals->CoordinateSource(prop, offset, scale, solid)
+    : nullptr;
+  if (coordinates && program->IsUniformUsed("prColourCoordinates"))
+  {
+    // (active until the sample pass ends: DeactivateCoordinates)
+    coordinates->Activate();
+    program->SetUniformi("prColourCoordinates", coordinates->GetTextureUnit());
+    program->SetUniformf("prCoordinateOffset", offset);
+    program->SetUniformf("prCoordinateScale", scale);
+    program->SetUniformi("prCoordinateSolid", solid);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// What the stages of one Render() share: the scene, the view, the bins and the placement of
+// the view in the S-MIP, the material of the shade.
+struct vtkSNDFRenderPass::vtkFrame
+{
+  const vtkRenderState* RenderState = nullptr;
+  vtkOpenGLRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkCamera* Camera = nullptr;
+  std::vector<vtkActor*> Particles; // the sampled particle actors
+  std::string Unsupported;          // why the view cannot be sampled ("": it can)
+  std::vector<double> State;        // what the samples depend on (a change restarts them)
+  std::vector<double> ColourKey;    // what their colours depend on (a change recolours them)
+  double DiffuseScale[3] = { 1.0, 1.0, 1.0 };
+  double AmbientTerm[3] = { 0.0, 0.0, 0.0 };
+  int Width = 0;
+  int Height = 0;
+  int X0 = 0;
+  int Y0 = 0;
+  int Bins = 0;
+  int Slots = 0;
+  bool Moments = false;
+  bool ColouredLight = false;
+  vtkSNDFTileCache::Placement Placement;
+  vtkInternals::Between BetweenLevels;
+  bool SameFrame = false;
+  int TexelsX = 0;
+  int TexelsY = 0;
+  vtkProperty* Material = nullptr;
+  double Specular[3] = { 0.0, 0.0, 0.0 };
+  vtkTextureObject* Shown = nullptr; // the shaded picture the composite draws
+  vtkTextureObject* ShownDepth = nullptr;
+};
+
+namespace
+{
+// The lighting table's fragment shader (Eqs. 12-14): per bin and row, the least-squares plane of
+// the lit value over the part of the bin inside the disk.
+std::string LightingTableMain()
+{
+  return
+      "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), float(prTableRows)));\n"
+      "  int prRow = prTexel.y;\n"
+      "  int prLight = (prRow == 1 || prRow == 4 || prRow == 5) ? 1 : 0;\n"
+      "  float prN = 0.0;\n"
+      "  vec2 prU = vec2(0.0);\n"
+      "  vec3 prUU = vec3(0.0);\n"
+      "  vec3 prF = vec3(0.0);\n"
+      "  vec3 prUFx = vec3(0.0);\n"
+      "  vec3 prUFy = vec3(0.0);\n"
+      "  for (int i = 0; i < prSubsamples; ++i)\n"
+      "  {\n"
+      "    for (int j = 0; j < prSubsamples; ++j)\n"
+      "    {\n"
+      "      vec2 prUV = (vec2(i, j) + 0.5) / float(prSubsamples);\n"
+      "      vec3 prNormal;\n"
+      "      if (prSNDFBinPoint(prTexel.x, prBins, prUV, prNormal))\n"
+      "      {\n"
+      "        vec3 prValue = prRow == 6 ? vec3(0.0) : prLightSum(prNormal, prLight);\n"
+      "        prN += 1.0;\n"
+      "        prU += prUV;\n"
+      "        prUU += vec3(prUV.x * prUV.x, prUV.x * prUV.y, prUV.y * prUV.y);\n"
+      "        prF += prValue;\n"
+      "        prUFx += prUV.x * prValue;\n"
+      "        prUFy += prUV.y * prValue;\n"
+      "      }\n"
+      "    }\n"
+      "  }\n"
+      "  vec3 prOut = vec3(0.0);\n"
+      "  if (prN == 0.0)\n"
+      "  {\n"
+      "    // a bin outside the disk holds no sample; give it the normal of the rim point nearest\n"
+      "    // to its centre and no slope\n"
+      "    vec3 prCentre;\n"
+      "    prSNDFBinPoint(prTexel.x, prBins, vec2(0.5), prCentre);\n"
+      "    vec2 prRim = normalize(prCentre.xy) * 0.9999;\n"
+      "    vec3 prValue = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), prLight);\n"
+      "    prOut = prRow < 2 ? prValue : (prRow == 6 ? vec3(0.5, 0.5, 0.0) : vec3(0.0));\n"
+      "  }\n"
+      "  else\n"
+      "  {\n"
+      "    // least-squares plane f = mean + slope . (u - centroid) over bin ∩ disk (the\n"
+      "    // covariance regularised by 1e-4: a sliver of a bin at the rim gets no slope across it)\n"
+      "    vec2 prMeanU = prU / prN;\n"
+      "    vec3 prMeanF = prF / prN;\n"
+      "    float prCxx = prUU.x / prN - prMeanU.x * prMeanU.x + 1.0e-4;\n"
+      "    float prCxy = prUU.y / prN - prMeanU.x * prMeanU.y;\n"
+      "    float prCyy = prUU.z / prN - prMeanU.y * prMeanU.y + 1.0e-4;\n"
+      "    vec3 prCxf = prUFx / prN - prMeanU.x * prMeanF;\n"
+      "    vec3 prCyf = prUFy / prN - prMeanU.y * prMeanF;\n"
+      "    float prDet = prCxx * prCyy - prCxy * prCxy;\n"
+      "    vec3 prSlopeX = (prCyy * prCxf - prCxy * prCyf) / prDet;\n"
+      "    vec3 prSlopeY = (prCxx * prCyf - prCxy * prCxf) / prDet;\n"
+      "    prOut = prRow < 2 ? prMeanF\n"
+      "      : (prRow == 6 ? vec3(prMeanU, 0.0)\n"
+      "      : ((prRow == 2 || prRow == 4) ? prSlopeX : prSlopeY));\n"
+      "  }\n"
+      "  gl_FragData[0] = vec4(prOut, 1.0);\n";
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass: nothing is rendered.");
+    return;
+  }
+  // Each stage returns false when it has drawn the frame itself, without S-NDFs (a view the
+  // pass cannot sample, the frame of a change, a failure), after saying why where that helps.
+  vtkFrame frame;
+  frame.RenderState = s;
+  this->CollectScene(frame);
+  if (!this->CheckSupport(frame) || !this->ChooseBins(frame))
+  {
+    return;
+  }
+  this->DescribeView(frame);
+  this->PrepareContext(frame);
+  if (!this->KeepOrRestartSamples(frame) || !this->ShowChangeFrame(frame) ||
+    !this->PrepareTargets(frame))
+  {
+    return;
+  }
+  this->ChooseMaterial(frame);
+  if (!this->UpdateLightingTable(frame) || !this->MapTiles(frame))
+  {
+    return;
+  }
+  this->TakeSamples(frame);
+  this->Shade(frame);
+  this->Composite(frame);
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::RenderPlain(const vtkRenderState* s)
+{
+  // the view as the delegate draws it; the samples restart with the next S-NDF frame
+  vtkInternals& internals = *this->Internals;
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->NumberOfSamples = 0;
+  this->ActiveBinsPerAxis = 0;
+  this->ErrorTargetReached = false;
+  internals.FrameValid = false;
+  internals.Shown = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::CollectScene(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  std::vector<vtkActor*>& particles = frame.Particles;
+  std::string& unsupported = frame.Unsupported;
+  std::vector<double>& state = frame.State;
+  std::vector<double>& colourKey = frame.ColourKey;
+  double(&diffuseScale)[3] = frame.DiffuseScale;
+  double(&ambientTerm)[3] = frame.AmbientTerm;
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  frame.Renderer = ren;
+  frame.Context = ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
+
+  // the scene: the sampled particle props, the reason to render plainly, the sampling state
+  // The renderer's props, not those of the render state: the renderer leaves out the props
+  // outside the view, and a pan to empty space and back keeps the S-MIP.
+  std::vector<vtkProp*> props;
+  if (ren)
+  {
+    vtkCollectionSimpleIterator pit;
+    vtkPropCollection* viewProps = ren->GetViewProps();
+    viewProps->InitTraversal(pit);
+    while (vtkProp* prop = viewProps->GetNextProp(pit))
+    {
+      props.push_back(prop);
+    }
+  }
+  for (vtkProp* prop : props)
+  {
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+    state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
+    if (vtkParticleSphereMapper::SafeDownCast(mapper))
+    {
+      if (!IsSampledParticleMapper(mapper))
+      {
+        unsupported = std::string("a ") + mapper->GetClassName() +
+          " is in the view (it draws through its own targets)";
+      }
+      else if (actor->HasTranslucentPolygonalGeometry())
+      {
+        unsupported = "a particle actor is translucent (S-NDFs shade opaque spheres)";
+      }
+      particles.push_back(actor);
+      // the actor's placement and its material but for the specular settings (they re-shade);
+      // the ambient and diffuse settings are added below unless the shade applies them
+      AppendMatrix(state, actor->GetMatrix());
+      vtkProperty* p = actor->GetProperty();
+      state.push_back(p->GetOpacity());
+      state.push_back(p->GetLighting());
+    }
+    else
+    {
+      // Other opaque geometry is sampled with the particles: its colour goes into the colour
+      // target and its fragments mark the other targets "no particle" (PreReplaceShaderValues).
+      // Translucent geometry would have to attenuate the particle samples behind it, and props
+      // that are not actors (volumes, images, 2D actors) do not take the marking.
+      if (!actor || !mapper)
+      {
+        unsupported = std::string("a ") + prop->GetClassName() +
+          " is in the view (S-NDFs are drawn for views of particles and opaque polygonal props)";
+      }
+      else if (actor->HasTranslucentPolygonalGeometry())
+      {
+        unsupported = std::string("translucent geometry (") + mapper->GetClassName() +
+          ") is in the view (S-NDFs are drawn for views of particles and opaque polygonal props)";
+      }
+      state.push_back(static_cast<double>(prop->GetMTime()));
+      state.push_back(static_cast<double>(prop->GetRedrawMTime()));
+    }
+    if (mapper)
+    {
+      // a particle mapper's lookup table goes into the colour key: a new colour map keeps the
+      // samples where it can (vtkInternals::Recolour)
+      if (vtkParticleSphereMapper::SafeDownCast(mapper))
+      {
+        state.push_back(static_cast<double>(mapper->vtkAbstractMapper::GetMTime()));
+        colourKey.push_back(static_cast<double>(mapper->GetLookupTable()->GetMTime()));
+      }
+      else
+      {
+        state.push_back(static_cast<double>(mapper->GetMTime()));
+      }
+      vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+      state.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
+    }
+  }
+  // The particle material (class description, "Material"): with one particle actor the shade
+  // applies the diffuse coefficient (mode 1) or the whole ambient and diffuse material where the
+  // colours are the property's (mode 2); what the samples hold restarts when it changes.
+  internals.RawMaterial = 0;
+  if (particles.size() == 1)
+  {
+    vtkMapper* mapper = particles[0]->GetMapper();
+    const auto known = internals.ColourSources.find(mapper);
+    const bool seen = known != internals.ColourSources.end();
+    if (!seen || known->second.Raw)
+    {
+      if (!UsesScalarColours(mapper) && (!seen || known->second.Solid))
+      {
+        internals.RawMaterial = 2;
+      }
+      else if (particles[0]->GetProperty()->GetDiffuse() > 0.0)
+      {
+        internals.RawMaterial = 1;
+      }
+    }
+  }
+  state.push_back(internals.RawMaterial);
+  for (vtkActor* actor : particles)
+  {
+    vtkProperty* p = actor->GetProperty();
+    if (internals.RawMaterial == 2)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        diffuseScale[c] = p->GetDiffuse() * p->GetDiffuseColor()[c];
+        ambientTerm[c] = p->GetAmbient() * p->GetAmbientColor()[c];
+      }
+      continue;
+    }
+    // the ambient term is drawn into the colour target (sampled); the diffuse colour the samples
+    // hold goes into the colour key (vtkInternals::Recolour)
+    state.push_back(p->GetAmbient());
+    if (p->GetAmbient() != 0.0)
+    {
+      state.insert(state.end(), p->GetAmbientColor(), p->GetAmbientColor() + 3);
+    }
+    colourKey.insert(colourKey.end(), p->GetDiffuseColor(), p->GetDiffuseColor() + 3);
+    if (internals.RawMaterial == 1)
+    {
+      diffuseScale[0] = diffuseScale[1] = diffuseScale[2] = p->GetDiffuse();
+    }
+    else
+    {
+      colourKey.push_back(p->GetDiffuse());
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::CheckSupport(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  vtkOpenGLRenderer* ren = frame.Renderer;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  std::vector<vtkActor*>& particles = frame.Particles;
+  std::string& unsupported = frame.Unsupported;
+  int& width = frame.Width;
+  int& height = frame.Height;
+  int& x0 = frame.X0;
+  int& y0 = frame.Y0;
+  if (particles.empty() || !ren || !context)
+  {
+    this->RenderPlain(s);
+    return false;
+  }
+  // a screen-space AO pass inside: it darkens the composited pixels after the scene, where the
+  // samples cannot take it (they need the occlusion per fragment, as the object-space passes give)
+  for (vtkRenderPass* inner = this->DelegatePass; inner && unsupported.empty();)
+  {
+    auto* ambient = vtkParticleAmbientLightPass::SafeDownCast(inner);
+    if (ambient && ambient->GetOcclusionSpace() == vtkParticleAmbientLightPass::SCREEN_SPACE)
+    {
+      unsupported = std::string(inner->GetClassName()) +
+        " is in the pass chain (S-NDF samples take ambient occlusion per fragment: the "
+        "density-volume or voxel-cone pass)";
+    }
+    auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
+    inner = wrapping ? wrapping->GetDelegatePass() : nullptr;
+  }
+  bool drawn = false; // a particle actor in the view
+  for (int i = 0; i < s->GetPropArrayCount() && !drawn; ++i)
+  {
+    drawn = std::find(particles.begin(), particles.end(), s->GetPropArray()[i]) != particles.end();
+  }
+  if (!drawn)
+  {
+    // no particle in the view (panned off): the plain image is exact (converged); the S-MIP
+    // stays for the way back
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->NumberOfSamples = this->TargetSamples;
+    internals.Shown = false;
+    internals.Placed = false;
+    return false;
+  }
+  if (!unsupported.empty())
+  {
+    if (internals.FirstWarning(unsupported))
+    {
+      vtkWarningMacro(<< "S-NDF shading is off while " << unsupported
+                      << "; the view is rendered as without it.");
+    }
+    this->RenderPlain(s);
+    return false;
+  }
+  std::string reason;
+  if (!vtkParticleComputeProgram::IsSupported(context, &reason))
+  {
+    if (internals.FirstWarning(reason))
+    {
+      vtkErrorMacro(<< "S-NDF shading needs compute shaders: " << reason
+                    << ". The view is rendered as without it.");
+    }
+    this->RenderPlain(s);
+    return false;
+  }
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width < 1 || height < 1)
+  {
+    this->RenderPlain(s);
+    return false;
+  }
+  std::string part;
+  if (!vtkParticleViewport::FillsTarget(s, part))
+  {
+    if (internals.FirstWarning("viewport"))
+    {
+      vtkWarningMacro(<< "S-NDF shading needs a renderer that fills its window (this one covers "
+                      << part << "): the view is rendered as without it.");
+    }
+    this->RenderPlain(s);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::ChooseBins(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  std::vector<vtkActor*>& particles = frame.Particles;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  int& bins = frame.Bins;
+  int& slots = frame.Slots;
+  bool& moments = frame.Moments;
+  // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up
+  // to eight views' worth of tiles where the limit allows (a zoom out by one level over a view
+  // sampled whole needs five: four of the finer level, one of the coarser)
+  // With particle actors coloured through lookup tables (vtkInternals::CoordinateActors) the bins
+  // keep the moments of their colour coordinate (KeepColourCoordinates) where the memory holds
+  // them with the bins asked for.
+  const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
+  moments = this->KeepColourCoordinates && vtkInternals::CoordinateActors(particles);
+  auto slotsFor = [&](int b) {
+    return static_cast<int>(std::min({ 8.0 * viewTiles,
+      std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b, moments)),
+      static_cast<double>(internals.Cache->GetMaximumSlots(context, b, moments)) }));
+  };
+  if (moments && slotsFor(this->BinsPerAxis) < viewTiles)
+  {
+    moments = false;
+    if (internals.FirstWarning("moments " + std::to_string(width) + "x" + std::to_string(height)))
+    {
+      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) does not hold the "
+                      << "colour coordinates' moments for this " << width << " x " << height
+                      << " view: a new colour map samples again unless its colours are linear "
+                         "in the old ones (KeepColourCoordinates).");
+    }
+  }
+  bins = this->BinsPerAxis;
+  while (bins >= 4 && slotsFor(bins) < viewTiles)
+  {
+    bins /= 2;
+  }
+  if (bins < 4)
+  {
+    const std::string what = "memory " + std::to_string(width) + "x" + std::to_string(height);
+    if (internals.FirstWarning(what))
+    {
+      vtkWarningMacro(<< "The S-MIP cache of a " << width << " x " << height << " view needs "
+                      << viewTiles * vtkSNDFTileCache::GetTileBytes(4) / 1048576.0
+                      << " MB for its " << viewTiles << " tiles even with 4 x 4 bins, more than "
+                      << "MaximumMemory (" << this->MaximumMemory << " MB) or the GPU's "
+                      << "shader-storage limits hold (" << internals.Cache->GetMaximumSlots(context, 4)
+                      << " tiles): the view is rendered as without S-NDF shading.");
+    }
+    this->RenderPlain(s);
+    return false;
+  }
+  if (bins != this->BinsPerAxis)
+  {
+    const std::string what = "bins " + std::to_string(width) + "x" + std::to_string(height) +
+      " " + std::to_string(bins);
+    if (internals.FirstWarning(what))
+    {
+      vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) and the GPU's "
+                      << "shader-storage limits hold the S-MIP tiles of this " << width << " x "
+                      << height << " view with " << bins << " x " << bins << " bins only, not "
+                      << this->BinsPerAxis << " x " << this->BinsPerAxis << ".");
+    }
+  }
+  slots = slotsFor(bins);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::DescribeView(vtkFrame& frame)
+{
+  vtkOpenGLRenderer* ren = frame.Renderer;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  std::vector<double>& state = frame.State;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  const int x0 = frame.X0;
+  const int y0 = frame.Y0;
+  const int bins = frame.Bins;
+  const int slots = frame.Slots;
+  const bool moments = frame.Moments;
+  bool& colouredLight = frame.ColouredLight;
+  // The view: camera, size, bins, background. The camera's values are compared in single
+  // precision: vtkWindowToImageFilter restores the view angle with a last-bit difference. In
+  // parallel projection the position, focal point and parallel scale are left out: a view
+  // whose pixels are the texels of an S-MIP level keeps the samples (PlaceView()).
+  vtkCamera* camera = ren->GetActiveCamera();
+  frame.Camera = camera;
+  const bool parallel = camera->GetParallelProjection() != 0;
+  std::vector<double> view;
+  if (!parallel)
+  {
+    view.insert(view.end(), camera->GetPosition(), camera->GetPosition() + 3);
+    view.insert(view.end(), camera->GetFocalPoint(), camera->GetFocalPoint() + 3);
+    view.push_back(camera->GetParallelScale());
+  }
+  view.insert(view.end(), camera->GetViewUp(), camera->GetViewUp() + 3);
+  view.insert(view.end(), camera->GetClippingRange(), camera->GetClippingRange() + 2);
+  view.insert(view.end(), camera->GetWindowCenter(), camera->GetWindowCenter() + 2);
+  view.push_back(camera->GetViewAngle());
+  view.push_back(camera->GetParallelProjection());
+  AppendMatrix(view, camera->GetModelTransformMatrix());
+  for (double v : view)
+  {
+    state.push_back(static_cast<float>(v));
+  }
+  state.push_back(width);
+  state.push_back(height);
+  state.push_back(x0);
+  state.push_back(y0);
+  state.push_back(bins);
+  state.push_back(slots);
+  state.push_back(moments);
+  state.insert(state.end(), ren->GetBackground(), ren->GetBackground() + 3);
+  state.insert(state.end(), ren->GetBackground2(), ren->GetBackground2() + 3);
+  state.push_back(ren->GetGradientBackground());
+  state.push_back(ren->GetTexturedBackground());
+  state.push_back(ren->GetBackgroundAlpha());
+  state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(context)));
+  // the passes inside this one (an AO pass put into the chain or changed samples anew), and
+  // whether one adds an ambient light that carries the particles' colours (vtkInternals::Recolour)
+  colouredLight = false;
+  vtkRenderPass* inner = this->DelegatePass;
+  for (int depth = 0; inner && depth < 16; ++depth)
+  {
+    auto* ambient = vtkParticleAmbientLightPass::SafeDownCast(inner);
+    colouredLight = colouredLight || (ambient && ambient->GetAddsColouredAmbientLight());
+    state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(inner)));
+    state.push_back(static_cast<double>(inner->GetMTime()));
+    auto* wrapping = vtkImageProcessingPass::SafeDownCast(inner);
+    inner = wrapping ? wrapping->GetDelegatePass() : nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::PrepareContext(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  std::vector<vtkActor*>& particles = frame.Particles;
+  const bool moments = frame.Moments;
+  if (internals.Context != context)
+  {
+    if (internals.Context)
+    {
+      this->ReleaseGraphicsResources(internals.Context);
+    }
+    internals.Context = context;
+  }
+  // the colour coordinates (computed again when their array changed) and the shader variant
+  // that writes them
+  const bool coordinates = moments && internals.UpdateCoordinates(particles, context, this);
+  if (coordinates != internals.MomentsInShader)
+  {
+    internals.MomentsInShader = coordinates;
+    internals.ShaderTime.Modified();
+  }
+  const bool timing = this->CollectTimings;
+  internals.Timer.StartFrame(timing);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  vtkCamera* camera = frame.Camera;
+  std::vector<vtkActor*>& particles = frame.Particles;
+  std::vector<double>& state = frame.State;
+  std::vector<double>& colourKey = frame.ColourKey;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  const int bins = frame.Bins;
+  const int slots = frame.Slots;
+  const bool moments = frame.Moments;
+  const bool colouredLight = frame.ColouredLight;
+  vtkSNDFTileCache::Placement& placement = frame.Placement;
+  vtkInternals::Between& between = frame.BetweenLevels;
+  bool& sameFrame = frame.SameFrame;
+  // the same frame (a pan or zoom by levels of the S-MIP keeps the samples), or a restart
+  sameFrame = internals.FrameValid && state == internals.FixedState &&
+    internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
+    internals.Cache->GetMoments() == moments &&
+    internals.PlaceView(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
+  // a new colour map: the samples are recoloured where the new colours are a linear function of
+  // the old ones, else taken again
+  if (sameFrame && colourKey != internals.ColourKey)
+  {
+    const int recoloured = internals.Recolour(particles, colouredLight);
+    sameFrame = recoloured >= 0;
+    if (sameFrame)
+    {
+      internals.ColourKey = colourKey;
+      this->NumberOfRecolours += recoloured;
+    }
+  }
+  if (!sameFrame)
+  {
+    if (internals.Cache->GetNumberOfSlots() != slots || internals.Cache->GetBins() != bins ||
+      internals.Cache->GetMoments() != moments)
+    {
+      if (!internals.Cache->Allocate(context, bins, slots, moments))
+      {
+        vtkErrorMacro(<< "Could not allocate "
+                      << slots * vtkSNDFTileCache::GetTileBytes(bins, moments) / 1048576.0
+                      << " MB for the S-MIP cache: the view is rendered as without S-NDFs.");
+        internals.ReleaseTextures(context);
+        this->RenderPlain(s);
+        return false;
+      }
+      this->MemoryBytes = internals.Cache->GetBytes();
+    }
+    internals.Cache->Clear();
+    internals.StartFrame(camera, width, height);
+    internals.FixedState = state;
+    internals.ColourKey = colourKey;
+    internals.KeepColours(particles);
+    internals.Placed = false;
+    internals.Sequence = 0;
+    internals.ResolveKey.clear();
+    placement = internals.Placement;
+    between = vtkInternals::Between();
+    this->NumberOfSamples = 0;
+    internals.CheckedSamples = 0;
+    this->ErrorTargetReached = false;
+    this->EstimatedError = -1.0;
+    ++this->NumberOfRestarts;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::ShowChangeFrame(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  const int bins = frame.Bins;
+  const bool sameFrame = frame.SameFrame;
+  vtkSNDFTileCache::Placement& placement = frame.Placement;
+  vtkInternals::Between& between = frame.BetweenLevels;
+  int& texelsX = frame.TexelsX;
+  int& texelsY = frame.TexelsY;
+  // the texels sampled and shaded: the window's pixels, or the rectangle of a view between two
+  // levels (its window pixels are their box filter)
+  texelsX = between.Active ? between.Size[0] : width;
+  texelsY = between.Active ? between.Size[1] : height;
+  // The frame of a change (e.g. each frame of an interaction: a restart, a pan off the grids in
+  // the cache) is the plain image: one S-NDF sample would shade with bin means, coarser than the
+  // exact normal. Sampling starts with the next frame -- unless this render is to converge
+  // (ConvergeOnRender). A view with tiles in the cache shows them at once.
+  const bool changed = !sameFrame || !internals.Shown || !(placement == internals.ShownView);
+  internals.ShownView = placement;
+  internals.Shown = true;
+  if (changed && !this->ConvergeOnRender &&
+    internals.Cache->CountAvailable(placement, texelsX, texelsY) == 0)
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->ActiveBinsPerAxis = bins;
+    this->NumberOfSamples = 0;
+    this->ErrorTargetReached = false;
+    return false;
+  }
+  this->ActiveBinsPerAxis = bins;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::PrepareTargets(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  vtkInternals::Between& between = frame.BetweenLevels;
+  if (!internals.Accumulate->IsBuilt())
+  {
+    internals.Accumulate->SetSource(internals.Cache->GetShaderSource("SNDFAccumulate"));
+    internals.Resolve->SetSource(internals.Cache->GetShaderSource("SNDFResolve"));
+    internals.BoxFilter->SetSource(vtkParticleShaders::Get("SNDFBoxFilter"));
+    if (!internals.Accumulate->Build(context) || !internals.Resolve->Build(context) ||
+      !internals.BoxFilter->Build(context))
+    {
+      this->RenderPlain(s);
+      return false;
+    }
+  }
+  if (texelsX != internals.Width || texelsY != internals.Height || !internals.Depth ||
+    !internals.Depth->GetHandle())
+  {
+    internals.AllocateTargets(context, texelsX, texelsY);
+  }
+  if (between.Active)
+  {
+    internals.AllocateDisplay(context, width, height);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::ChooseMaterial(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  std::vector<vtkActor*>& particles = frame.Particles;
+  vtkProperty*& material = frame.Material;
+  double(&specular)[3] = frame.Specular;
+  // the lighting table (Eqs. 12-14) for the renderer's lights and the first particle actor's
+  // specular power
+  material = particles[0]->GetProperty();
+  for (vtkActor* actor : particles)
+  {
+    vtkProperty* p = actor->GetProperty();
+    if ((p->GetSpecular() != material->GetSpecular() ||
+          p->GetSpecularPower() != material->GetSpecularPower()) &&
+      internals.FirstWarning("specular"))
+    {
+      vtkWarningMacro(<< "The particle actors differ in their specular material; S-NDF shading "
+                         "uses the first one's.");
+    }
+  }
+  // the specular colour of the shade
+  material->GetSpecularColor(specular);
+  for (double& c : specular)
+  {
+    c *= material->GetSpecular();
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkSNDFRenderPass::LightingTableKey(vtkFrame& frame)
+{
+  vtkOpenGLRenderer* ren = frame.Renderer;
+  vtkCamera* camera = frame.Camera;
+  vtkProperty*& material = frame.Material;
+  const int bins = frame.Bins;
+  // (the view distance places positional lights only (prViewDistance), and to six digits: a
+  // pan moves position and focal point together, changing the distance by rounding errors,
+  // and a new table would rebake every cached tile)
+  const double distance = camera->GetDistance();
+  const double distanceKey = ren->GetLightingComplexity() > 2 && distance > 0.0
+    ? std::round(1e6 * distance / std::pow(10.0, std::floor(std::log10(distance))))
+    : 0.0;
+  std::vector<double> tableKey = { static_cast<double>(ren->GetLightingComplexity()),
+    static_cast<double>(ren->GetLightingCount()), material->GetSpecularPower(),
+    static_cast<double>(bins), distanceKey };
+  vtkLightCollection* lights = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  // what the table depends on: each light's colour, its direction in view coordinates and,
+  // for positional lights, its position there and its cone (a pan moves neither the view
+  // direction nor a directional light's: the tiles keep their shading)
+  vtkMatrix4x4* modelView = camera->GetModelViewTransformMatrix();
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch())
+    {
+      continue;
+    }
+    double colour[3];
+    light->GetDiffuseColor(colour);
+    double position[4] = { 0.0, 0.0, 0.0, 1.0 };
+    double focal[4] = { 0.0, 0.0, 0.0, 1.0 };
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    double positionVC[4];
+    double focalVC[4];
+    modelView->MultiplyPoint(position, positionVC);
+    modelView->MultiplyPoint(focal, focalVC);
+    tableKey.push_back(light->GetIntensity());
+    tableKey.insert(tableKey.end(), colour, colour + 3);
+    // (the direction to six digits: a pan there and back moves a headlight by rounding errors)
+    double direction[3] = { focalVC[0] - positionVC[0], focalVC[1] - positionVC[1],
+      focalVC[2] - positionVC[2] };
+    const double length = vtkMath::Norm(direction);
+    for (double d : direction)
+    {
+      tableKey.push_back(length > 0.0 ? std::round(1e6 * d / length) : 0.0);
+    }
+    tableKey.push_back(light->GetPositional());
+    if (light->GetPositional())
+    {
+      tableKey.insert(tableKey.end(), positionVC, positionVC + 3);
+      tableKey.insert(tableKey.end(), light->GetAttenuationValues(), light->GetAttenuationValues() + 3);
+      tableKey.push_back(light->GetExponent());
+      tableKey.push_back(light->GetConeAngle());
+    }
+  }
+  return tableKey;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::UpdateLightingTable(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  vtkOpenGLRenderer* ren = frame.Renderer;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  vtkOpenGLState* ostate = frame.Context->GetState();
+  vtkCamera* camera = frame.Camera;
+  vtkProperty*& material = frame.Material;
+  const int bins = frame.Bins;
+  // the renderer's light geometry (lights that follow the camera), uniforms and complexity are
+  // brought up to date by its lights pass, which does not run when nothing is sampled
+  internals.Timer.Begin(2);
+  internals.Lights->Render(s);
+  const std::vector<double> tableKey = this->LightingTableKey(frame);
+  if (tableKey == internals.TableKey && internals.HaveTable)
+  {
+    return true;
+  }
+  const std::string uniforms = ren->GetLightingUniforms();
+  const int complexity = ren->GetLightingComplexity();
+  const int count = ren->GetLightingCount();
+  std::string body = "vec3 prLightSum(vec3 normalVCVSOutput, int row)\n{\n"
+                     "  float specularPower = prSpecularPower;\n"
+                     "  vec4 vertexVC = vec4(0.0, 0.0, -prViewDistance, 1.0);\n" +
+    vtkParticleSphereMapper::GetLightSumCode(complexity, count) +
+    "  return row == 0 ? diffuse : specular;\n}\n";
+  const std::string source = uniforms + "\n" + body;
+  if (!internals.TableQuad || source != internals.TableQuadSource)
+  {
+    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
+      vtkParticleShaders::Get("SNDFLightingTable") + "\n" + source);
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", LightingTableMain());
+    internals.TableQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, fs.c_str(), nullptr));
+    internals.TableQuadSource = source;
+  }
+  vtkOpenGLQuadHelper* quad = internals.TableQuad.get();
+  if (!quad->Program)
+  {
+    internals.Timer.End();
+    vtkErrorMacro(<< "The S-NDF lighting table shader did not build.");
+    this->RenderPlain(s);
+    return false;
+  }
+  if (internals.TableBins != bins || !internals.Table->GetHandle())
+  {
+    internals.Table->SetContext(context);
+    internals.Table->SetInternalFormat(GL_RGBA32F);
+    internals.Table->SetFormat(GL_RGBA);
+    internals.Table->SetDataType(GL_FLOAT);
+    internals.Table->Allocate2D(bins * bins, TableRows, 4, VTK_FLOAT);
+    internals.TableTarget->SetContext(context);
+    ostate->PushFramebufferBindings();
+    internals.TableTarget->Bind();
+    internals.TableTarget->AddColorAttachment(0, internals.Table);
+    internals.TableTarget->ActivateDrawBuffers(1);
+    ostate->PopFramebufferBindings();
+    internals.TableBins = bins;
+  }
+  context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  ren->UpdateLightingUniforms(quad->Program);
+  quad->Program->SetUniformi("prBins", bins);
+  quad->Program->SetUniformi("prTableRows", TableRows);
+  quad->Program->SetUniformi("prSubsamples", std::max(32, TableSubsamplesPerAxis / bins));
+  quad->Program->SetUniformf("prSpecularPower", static_cast<float>(material->GetSpecularPower()));
+  quad->Program->SetUniformf("prViewDistance", static_cast<float>(camera->GetDistance()));
+  ostate->PushFramebufferBindings();
+  internals.TableTarget->Bind();
+  internals.TableTarget->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglViewport(0, 0, bins * bins, TableRows);
+    ostate->vtkglScissor(0, 0, bins * bins, TableRows);
+    quad->Render();
+  }
+  ostate->PopFramebufferBindings();
+  internals.TableKey = tableKey;
+  internals.HaveTable = true;
+  ++this->NumberOfTableBuilds;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::MapTiles(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  vtkSNDFTileCache::Placement& placement = frame.Placement;
+  // the view's tiles of the S-MIP: found in the cache, averaged from a finer level, or new;
+  // rebaked where shaded with an older table (re-lighting)
+  const long long changes =
+    internals.Cache->GetNumberOfDownsampledTiles() + internals.Cache->GetNumberOfClearedTiles();
+  if (!internals.Cache->MapView(placement, texelsX, texelsY, internals.Table,
+        static_cast<long long>(this->NumberOfTableBuilds)))
+  {
+    internals.Timer.End();
+    vtkErrorMacro(<< "The S-MIP cache does not hold the view's tiles.");
+    this->RenderPlain(s);
+    return false;
+  }
+  const bool moved = !internals.Placed || !(placement == internals.Placement) ||
+    internals.PlacedSize[0] != texelsX || internals.PlacedSize[1] != texelsY;
+  if (moved && internals.Placed)
+  {
+    ++(placement.Level == internals.Placement.Level ? this->NumberOfPans : this->NumberOfZooms);
+  }
+  if (moved || changes != internals.Cache->GetNumberOfDownsampledTiles() +
+        internals.Cache->GetNumberOfClearedTiles())
+  {
+    // a pan or zoom brought other texels into the view: count the fewest samples a pixel holds
+    this->NumberOfSamples = static_cast<int>(std::min<unsigned int>(
+      internals.Cache->CountMinimumSamples(texelsX, texelsY), static_cast<unsigned int>(this->TargetSamples)));
+    internals.CheckedSamples = 0;
+    this->ErrorTargetReached = false;
+    this->EstimatedError = -1.0;
+  }
+  internals.Placement = placement;
+  internals.PlacedSize[0] = texelsX;
+  internals.PlacedSize[1] = texelsY;
+  internals.Placed = true;
+  internals.Timer.End();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::ResolveView(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  vtkSNDFTileCache::Placement& placement = frame.Placement;
+  double(&specular)[3] = frame.Specular;
+  double(&diffuseScale)[3] = frame.DiffuseScale;
+  double(&ambientTerm)[3] = frame.AmbientTerm;
+  std::vector<double> resolveKey = { static_cast<double>(this->NumberOfSamplePasses),
+    static_cast<double>(placement.Level), static_cast<double>(placement.Origin[0]),
+    static_cast<double>(placement.Origin[1]), static_cast<double>(placement.Phase[0]),
+    static_cast<double>(placement.Phase[1]), static_cast<double>(texelsX),
+    static_cast<double>(texelsY),
+    static_cast<double>(internals.Cache->GetNumberOfDownsampledTiles()),
+    static_cast<double>(internals.Cache->GetNumberOfClearedTiles()),
+    static_cast<double>(this->NumberOfTableBuilds), specular[0], specular[1], specular[2],
+    diffuseScale[0], diffuseScale[1], diffuseScale[2], ambientTerm[0], ambientTerm[1],
+    ambientTerm[2] };
+  if (resolveKey == internals.ResolveKey)
+  {
+    return;
+  }
+  vtkParticleComputeProgram* resolve = internals.Resolve;
+  resolve->Use();
+  resolve->SetUniform2i("prSize", texelsX, texelsY);
+  resolve->SetUniform3f("prSpecularColour", static_cast<float>(specular[0]),
+    static_cast<float>(specular[1]), static_cast<float>(specular[2]));
+  resolve->SetUniform3f("prDiffuseScale", static_cast<float>(diffuseScale[0]),
+    static_cast<float>(diffuseScale[1]), static_cast<float>(diffuseScale[2]));
+  resolve->SetUniform3f("prAmbientTerm", static_cast<float>(ambientTerm[0]),
+    static_cast<float>(ambientTerm[1]), static_cast<float>(ambientTerm[2]));
+  internals.Cache->BindView(resolve);
+  glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
+  {
+    resolve->Dispatch(4, 4, internals.Cache->BindViewPart(resolve, part));
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  vtkParticleComputeProgram::UseNone();
+  internals.ResolveKey = resolveKey;
+  ++this->NumberOfResolves;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  const unsigned int groupsX = static_cast<unsigned int>((texelsX + 15) / 16);
+  const unsigned int groupsY = static_cast<unsigned int>((texelsY + 15) / 16);
+  // The error estimate (ErrorTarget): the picture I_N after N samples against I_M, the one at
+  // the last check (M <= N / 2): the mean |I_N - I_M| * sqrt(M / (N - M)) over the view
+  // estimates the mean error of I_N (for independent samples I_N - I_M has the variance of
+  // I_N's error times (N - M) / M). Checked at N >= 4 and N >= 2 M.
+  const int n = this->NumberOfSamples;
+  const int m = internals.CheckedSamples;
+  if (!(this->ErrorTarget > 0.0) || n < 2 || (m > 0 && (n < 4 || n < 2 * m)))
+  {
+    return;
+  }
+  this->ResolveView(frame);
+  if (m > 0)
+  {
+    if (!internals.Difference->IsBuilt())
+    {
+      internals.Difference->SetSource(vtkParticleShaders::Get("SNDFImageDifference"));
+      internals.Difference->Build(context);
+    }
+    std::vector<unsigned int> totals(1024, 0u);
+    if (!internals.Totals->GetHandle())
+    {
+      vtkParticleComputeProgram::AllocateStorage(internals.Totals, totals.size() * 4);
+    }
+    vtkParticleComputeProgram::UploadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
+    vtkParticleComputeProgram* difference = internals.Difference;
+    difference->Use();
+    difference->SetUniform2i("prSize", texelsX, texelsY);
+    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    vtkParticleComputeProgram::BindStorage(1, internals.Totals);
+    difference->Dispatch(groupsX, groupsY);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    vtkParticleComputeProgram::UseNone();
+    vtkParticleComputeProgram::DownloadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
+    double total = 0.0;
+    for (unsigned int t : totals)
+    {
+      total += t;
+    }
+    // mean over pixels and channels, in 1/255
+    const double mean = total / (64.0 * 3.0 * texelsX * texelsY);
+    this->EstimatedError = mean * std::sqrt(static_cast<double>(m) / (n - m));
+    this->ErrorTargetReached = this->EstimatedError <= this->ErrorTarget;
+  }
+  glCopyImageSubData(internals.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
+    internals.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
+  internals.CheckedSamples = n;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::TakeSamples(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkCamera* camera = frame.Camera;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  vtkSNDFTileCache::Placement& placement = frame.Placement;
+  vtkInternals::Between& between = frame.BetweenLevels;
+  // sample passes
+  const int missing = this->ErrorTargetReached ? 0 : this->TargetSamples - this->NumberOfSamples;
+  const int samples = this->ConvergeOnRender ? missing : std::min(this->SamplesPerFrame, missing);
+  // a render of many sample passes (ConvergeOnRender, a large SamplesPerFrame) reports them
+  const bool reporting = samples >= ProgressSamples;
+  if (reporting)
+  {
+    internals.ProgressText = "S-NDF shading: " + std::to_string(this->TargetSamples) +
+      " samples per pixel";
+    double fraction = 0.0;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  }
+  // the camera of the sample passes: the view's, or one whose pixels are the texels of a view
+  // between two levels (restored after them)
+  double viewCentre[2];
+  camera->GetWindowCenter(viewCentre);
+  const double viewScale = camera->GetParallelScale();
+  const bool viewExplicit = camera->GetUseExplicitAspectRatio();
+  const double viewAspect = camera->GetExplicitAspectRatio();
+  double centre[2] = { viewCentre[0], viewCentre[1] };
+  if (between.Active && samples > 0)
+  {
+    double scale = viewScale;
+    internals.SamplingWindow(camera, placement, texelsX, texelsY, scale, centre);
+    camera->SetParallelScale(scale);
+    camera->SetExplicitAspectRatio(static_cast<double>(texelsX) / texelsY);
+    camera->UseExplicitAspectRatioOn();
+  }
+  for (int k = 0; k < samples; ++k)
+  {
+    double offset[2];
+    JitterOffset(internals.Sequence++, offset);
+    camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / texelsX, centre[1] + 2.0 * offset[1] / texelsY);
+
+    this->RenderSampleTargets(frame);
+    camera->SetWindowCenter(viewCentre[0], viewCentre[1]);
+    ++this->NumberOfSamplePasses;
+
+    this->AccumulateSamples(frame);
+    ++this->NumberOfSamples;
+    this->CheckError(frame);
+    if (reporting)
+    {
+      double fraction = this->ErrorTargetReached ? 1.0 : static_cast<double>(k + 1) / samples;
+      this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+    }
+    if (this->ErrorTargetReached)
+    {
+      break;
+    }
+  }
+  if (between.Active && samples > 0)
+  {
+    camera->SetParallelScale(viewScale);
+    camera->SetExplicitAspectRatio(viewAspect);
+    camera->SetUseExplicitAspectRatio(viewExplicit);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::RenderSampleTargets(vtkFrame& frame)
+{
+  // one sample pass: the scene, jittered, into the sample targets
+  vtkInternals& internals = *this->Internals;
+  const vtkRenderState* s = frame.RenderState;
+  vtkOpenGLRenderer* ren = frame.Renderer;
+  vtkOpenGLState* ostate = frame.Context->GetState();
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  internals.Timer.Begin(0);
+  ostate->PushFramebufferBindings();
+  internals.Target->Bind();
+  internals.Target->ActivateDrawBuffers(NumberOfAttachments);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    ostate->vtkglViewport(0, 0, texelsX, texelsY);
+    ostate->vtkglScissor(0, 0, texelsX, texelsY);
+    ren->Clear();
+    const GLfloat zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    for (unsigned int a = 1; a < NumberOfAttachments; ++a)
+    {
+      glClearBufferfv(GL_COLOR, static_cast<GLint>(a), zero);
+    }
+    vtkRenderState sampleState(ren);
+    sampleState.SetFrameBuffer(internals.Target);
+    sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    // the particle targets take each fragment as it is (every shader writes alpha 1 there:
+    // blending, which VTK keeps on for opaque geometry too, would only add a read-modify-write
+    // of two 16-bit float targets per fragment); no FXAA over them (nor over the S-NDF
+    // picture, which is box-filtered over each pixel already)
+    {
+      vtkParticleGBufferGuard guard(ren, NumberOfAttachments);
+      this->PreRender(&sampleState);
+      this->DelegatePass->Render(&sampleState);
+      this->PostRender(&sampleState);
+    }
+    internals.DeactivateCoordinates(); // (SetShaderParameters activated them)
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  }
+  ostate->PopFramebufferBindings();
+  internals.Timer.End();
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::AccumulateSamples(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  const int bins = frame.Bins;
+  // into the S-NDFs
+  internals.Timer.Begin(1);
+  vtkParticleComputeProgram* accumulate = internals.Accumulate;
+  accumulate->Use();
+  const char* samplers[NumberOfAttachments] = { "prColour", "prNormal", "prDiffuse" };
+  for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+  {
+    internals.Attachments[a]->Activate();
+    accumulate->SetUniformi(samplers[a], internals.Attachments[a]->GetTextureUnit());
+  }
+  internals.Depth->Activate();
+  accumulate->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
+  internals.Table->Activate();
+  accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
+  accumulate->SetUniform2i("prSize", texelsX, texelsY);
+  accumulate->SetUniformi("prBins", bins);
+  accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
+  accumulate->SetUniformi(
+    "prMoments", internals.MomentsInShader && internals.Cache->GetMoments() ? 1 : 0);
+  internals.Cache->BindView(accumulate);
+  for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
+  {
+    accumulate->Dispatch(4, 4, internals.Cache->BindViewPart(accumulate, part));
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+  {
+    internals.Attachments[a]->Deactivate();
+  }
+  internals.Depth->Deactivate();
+  internals.Table->Deactivate();
+  vtkParticleComputeProgram::UseNone();
+  internals.Timer.End();
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::Shade(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const int width = frame.Width;
+  const int height = frame.Height;
+  const int texelsX = frame.TexelsX;
+  const int texelsY = frame.TexelsY;
+  vtkInternals::Between& between = frame.BetweenLevels;
+  // shade when samples, table or specular colour changed
+  internals.Timer.Begin(2);
+  this->ResolveView(frame);
+  // a view between two levels: each window pixel the box filter of the shaded texels under it
+  frame.Shown = internals.Image;
+  frame.ShownDepth = internals.ImageDepth;
+  if (between.Active)
+  {
+    vtkParticleComputeProgram* filter = internals.BoxFilter;
+    filter->Use();
+    filter->SetUniform2i("prSize", width, height);
+    filter->SetUniform2i("prTexelSize", texelsX, texelsY);
+    filter->SetUniformf("prScale", static_cast<float>(between.Scale));
+    filter->SetUniform2f("prOffset", static_cast<float>(between.Offset[0]),
+      static_cast<float>(between.Offset[1]));
+    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(2, internals.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(3, internals.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    filter->Dispatch(static_cast<unsigned int>((width + 15) / 16), static_cast<unsigned int>((height + 15) / 16));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    for (GLuint unit = 0; unit < 4; ++unit)
+    {
+      glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    }
+    vtkParticleComputeProgram::UseNone();
+    frame.Shown = internals.DisplayImage;
+    frame.ShownDepth = internals.DisplayDepth;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::Composite(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLRenderWindow* context = frame.Context;
+  vtkOpenGLState* ostate = frame.Context->GetState();
+  vtkTextureObject* shown = frame.Shown;
+  vtkTextureObject* shownDepth = frame.ShownDepth;
+  // the composite: colour and depth into the render state's target, over the whole viewport
+  if (!internals.CompositeQuad)
+  {
+    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
+      "uniform sampler2D prImage;\nuniform sampler2D prImageDepth;\n");
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl",
+      "gl_FragData[0] = texture(prImage, texCoord);\n"
+      "  gl_FragDepth = texture(prImageDepth, texCoord).r;\n");
+    internals.CompositeQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, fs.c_str(), nullptr));
+  }
+  vtkOpenGLQuadHelper* composite = internals.CompositeQuad.get();
+  if (composite->Program)
+  {
+    context->GetShaderCache()->ReadyShaderProgram(composite->Program);
+    shown->Activate();
+    shownDepth->Activate();
+    composite->Program->SetUniformi("prImage", shown->GetTextureUnit());
+    composite->Program->SetUniformi("prImageDepth", shownDepth->GetTextureUnit());
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglDisable(GL_BLEND);
+    composite->Render();
+    shown->Deactivate();
+    shownDepth->Deactivate();
+  }
+  internals.Timer.End();
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::GetLightingTable(vtkFloatArray* table)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!table || !internals.HaveTable || !internals.Table->GetHandle())
+  {
+    return false;
+  }
+  const int n = internals.TableBins * internals.TableBins;
+  std::vector<float> texels(static_cast<std::size_t>(n) * TableRows * 4);
+  internals.Table->Bind();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, texels.data());
+  table->SetNumberOfComponents(3);
+  table->SetNumberOfTuples(TableRows * n);
+  for (int t = 0; t < TableRows * n; ++t)
+  {
+    table->SetTypedTuple(t, &texels[4 * static_cast<std::size_t>(t)]);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.ReleaseTextures(w);
+  internals.Table->ReleaseGraphicsResources(w);
+  internals.TableTarget->ReleaseGraphicsResources(w);
+  internals.HaveTable = false;
+  internals.TableBins = 0;
+  if (internals.TableQuad)
+  {
+    internals.TableQuad->ReleaseGraphicsResources(w);
+    internals.TableQuad.reset();
+  }
+  if (internals.CompositeQuad)
+  {
+    internals.CompositeQuad->ReleaseGraphicsResources(w);
+    internals.CompositeQuad.reset();
+  }
+  internals.Accumulate->ReleaseGraphicsResources(w);
+  internals.Resolve->ReleaseGraphicsResources(w);
+  internals.BoxFilter->ReleaseGraphicsResources(w);
+  internals.Difference->ReleaseGraphicsResources(w);
+  vtkParticleComputeProgram::ReleaseStorage(
+    internals.Totals, vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
+  internals.CheckedSamples = 0;
+  internals.Cache->ReleaseGraphicsResources(w);
+  // the colour coordinates are uploaded again when next needed
+  internals.ReleaseCoordinates(w);
+  internals.FrameValid = false;
+  internals.Placed = false;
+  internals.FixedState.clear();
+  internals.TableKey.clear();
+  internals.ColourSources.clear();
+  internals.ResolveKey.clear();
+  this->NumberOfSamples = 0;
+  this->MemoryBytes = 0.0;
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
+  os << indent << "TargetSamples: " << this->TargetSamples << "\n";
+  os << indent << "BinsPerAxis: " << this->BinsPerAxis << "\n";
+  os << indent << "MaximumMemory: " << this->MaximumMemory << " MB\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "ActiveBinsPerAxis: " << this->ActiveBinsPerAxis << "\n";
+  os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";
+  os << indent << "ConvergeOnRender: " << this->ConvergeOnRender << "\n";
+  os << indent << "ZoomBetweenLevels: " << this->ZoomBetweenLevels << "\n";
+  os << indent << "ErrorTarget: " << this->ErrorTarget << "\n";
+  os << indent << "EstimatedError: " << this->EstimatedError << "\n";
+  os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+  os << indent << "NumberOfSamplePasses: " << this->NumberOfSamplePasses << "\n";
+  os << indent << "NumberOfRestarts: " << this->NumberOfRestarts << "\n";
+  os << indent << "NumberOfRecolours: " << this->NumberOfRecolours << "\n";
+  os << indent << "KeepColourCoordinates: " << this->KeepColourCoordinates << "\n";
+}

@@ -1,0 +1,122 @@
+/**
+ * @class   vtkParticleFrontToBackTarget
+ * @brief   off-screen front-to-back accumulation of translucent particles over the opaque image
+ *
+ * vtkParticleFrontToBackTarget is the render target of vtkTransparentSphereMapper's translucent
+ * stage (Staib et al. 2015, Sec. 5.2). Begin() finds the framebuffer that holds the opaque image
+ * (the one bound by the renderer, or the one a translucency pass -- VTK's dual depth peeling or
+ * order-independent pass -- saved on the vtkOpenGLState binding stack before redirecting drawing
+ * to its own buffers; VTK 9.2's passes offer no getter for it, so Begin() reads the top of that
+ * stack by popping it and pushing it back, the one place in the project that does), copies its
+ * depth into GetOpaqueDepthTexture(), and binds an RGBA32F
+ * accumulation buffer cleared to 0 with front-to-back "under" blending of premultiplied colours
+ * (C += (1 - A) c, A += (1 - A) a) and a depth buffer used only as the early-termination mask
+ * (cleared to 1; fragments are drawn at depth 0.5 with GL_LESS and no depth writes).
+ * MaskSaturatedPixels() sets the mask depth to 0 where the accumulated opacity exceeds a
+ * threshold, so that later draws are rejected by the early depth test (paper Sec. 5.2).
+ * End() blends the accumulation over the opaque image (C_out = C + (1 - A) C_opaque, float
+ * precision until this single 8-bit write, over an opaque image that is itself 8-bit: at most
+ * 1/255 in all) and restores the OpenGL state and bindings exactly.
+ *
+ * The accumulation is float so that hundreds of layers add up without 8-bit banding.
+ */
+#ifndef vtkParticleFrontToBackTarget_h
+#define vtkParticleFrontToBackTarget_h
+
+#include "vtkObject.h"
+#include "vtkParticleRenderingTranslucencyModule.h" // for export macro
+
+#include <vector> // for std::vector
+
+class vtkRenderer;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKPARTICLERENDERINGTRANSLUCENCY_EXPORT vtkParticleFrontToBackTarget : public vtkObject
+{
+public:
+  static vtkParticleFrontToBackTarget* New();
+  vtkTypeMacro(vtkParticleFrontToBackTarget, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Bind the accumulation buffer for drawing. savedByPass: a translucency pass pushed the
+   * framebuffer with the opaque image on the vtkOpenGLState draw-binding stack and bound its own
+   * (dual depth peeling, order-independent translucency); false: the opaque image is the bound
+   * framebuffer. Returns false (with an error) when the buffers cannot be created.
+   */
+  bool Begin(vtkRenderer* ren, bool savedByPass);
+
+  /**
+   * Depth of the opaque image (window depth, same size as the accumulation), valid between
+   * Begin() and End(). Sample it with texelFetch at gl_FragCoord.xy.
+   */
+  vtkTextureObject* GetOpaqueDepthTexture();
+
+  /**
+   * The RGBA32F accumulation itself (premultiplied, cleared to 0 by Begin()), valid between
+   * Begin() and End(), for a pass that writes it as an image (vtkParticleFragmentLists).
+   */
+  vtkTextureObject* GetAccumulationTexture();
+
+  /**
+   * Mask the pixels whose accumulated opacity exceeds threshold (see the class description).
+   * Rebinds the accumulation buffer and the drawing state afterwards.
+   */
+  void MaskSaturatedPixels(double threshold);
+
+  /**
+   * Blend the accumulation over the opaque image and restore the state saved by Begin().
+   */
+  void End();
+
+  /**
+   * Restore the drawing state of Begin() (blending, mask depth test) after a caller changed it.
+   */
+  void ActivateDrawingState();
+
+  ///@{
+  /**
+   * Size of the accumulation buffer (the renderer's viewport) and the number of masked pixels
+   * of the last MaskSaturatedPixels() (only counted with CountMaskedPixels, a read-back).
+   */
+  vtkGetVector2Macro(Size, int);
+  vtkSetMacro(CountMaskedPixels, bool);
+  vtkGetMacro(NumberOfMaskedPixels, long long);
+  ///@}
+
+  /**
+   * The accumulated RGBA (premultiplied, float) of the last frame, read back for tests:
+   * 4 * width * height floats, bottom-up. Valid between the last draw and End() only if
+   * KeepAccumulation is set; otherwise read right after End() from the retained copy.
+   */
+  bool GetAccumulation(std::vector<float>& rgba);
+
+  /**
+   * Forget the retained accumulation (for tests: after this, a frame that composites nothing
+   * leaves GetAccumulation() empty instead of returning an older frame's).
+   */
+  void ClearRetainedAccumulation();
+  vtkSetMacro(KeepAccumulation, bool);
+  vtkGetMacro(KeepAccumulation, bool);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkParticleFrontToBackTarget();
+  ~vtkParticleFrontToBackTarget() override;
+
+  int Size[2] = { 0, 0 };
+  bool CountMaskedPixels = false;
+  long long NumberOfMaskedPixels = 0;
+  bool KeepAccumulation = false;
+
+private:
+  vtkParticleFrontToBackTarget(const vtkParticleFrontToBackTarget&) = delete;
+  void operator=(const vtkParticleFrontToBackTarget&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif
