@@ -8,7 +8,8 @@
 //   median_draw_gpu_s ParticleRendering mappers: median GPU time of the sphere draw stage
 //   ratio_vs_peer     median_frame_s / median_frame_s of the peer (the first --mapper given)
 //
-// usage: prBenchmark --data particles.vtp [--mapper particle|particle-nocull|vtksphere|pointgaussian ...]
+// usage: prBenchmark --data particles.vtp [--mapper
+// particle|particle-nocull|vtksphere|pointgaussian ...]
 //                    [--frames 10] [--size 1024x768] [--csv out.csv] [--label text]
 //                    [--radius-array radius] [--color-array speed] [--screenshot DIR]
 // The CSV gets one row per mapper (header written when the file is new).
@@ -145,8 +146,9 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "usage: prBenchmark --data particles.vtp [--mapper particle|particle-nocull|vtksphere|"
-                 "pointgaussian ...] [--frames N] [--size WxH] [--csv out.csv] [--label text]\n";
+    std::cerr
+      << "usage: prBenchmark --data particles.vtp [--mapper particle|particle-nocull|vtksphere|"
+         "pointgaussian ...] [--frames N] [--size WxH] [--csv out.csv] [--label text]\n";
     return 2;
   }
   vtkSmartPointer<vtkPolyData> data = prBench::ReadParticles(o.Data);
@@ -192,10 +194,10 @@ int main(int argc, char* argv[])
     std::cout << ", ratio vs " << peer.Mapper << " " << ratio << "\n";
     if (csv.is_open())
     {
-      csv << o.Label << "," << data->GetNumberOfPoints() << "," << o.Width << "," << o.Height
-          << "," << o.Frames << "," << r.Mapper << "," << r.FirstFrame << "," << r.MedianFrame
-          << "," << r.MedianGPU << "," << r.Upload << "," << r.MedianDrawGPU << ","
-          << peer.Mapper << "," << ratio << "\n";
+      csv << o.Label << "," << data->GetNumberOfPoints() << "," << o.Width << "," << o.Height << ","
+          << o.Frames << "," << r.Mapper << "," << r.FirstFrame << "," << r.MedianFrame << ","
+          << r.MedianGPU << "," << r.Upload << "," << r.MedianDrawGPU << "," << peer.Mapper << ","
+          << ratio << "\n";
     }
   }
   return 0;

@@ -2,10 +2,11 @@
 // ParaView user gets today, all in the same process, window and OpenGL context, on the same data
 // and camera path, with the same constant opacity (the actor property's Opacity) and with
 // ParaView's translucency compositing (dual depth peeling, 4 peels, occlusion ratio 0):
-//   transparent     vtkTransparentSphereMapper, constant density, VolumeMix 0.5, no early termination
-//   transparent-et  the same with EarlyTermination on (--chunks depth chunks, default 20)
-//   vtksphere-ddp   vtkOpenGLSphereMapper (flat per-fragment opacity), composited by the peeling
-//   pointgaussian   vtkPointGaussianMapper with ParaView's Point Gaussian defaults ("Sphere" splat),
+//   transparent     vtkTransparentSphereMapper, constant density, VolumeMix 0.5, no early
+//   termination transparent-et  the same with EarlyTermination on (--chunks depth chunks, default
+//   20) vtksphere-ddp   vtkOpenGLSphereMapper (flat per-fragment opacity), composited by the
+//   peeling pointgaussian   vtkPointGaussianMapper with ParaView's Point Gaussian defaults
+//   ("Sphere" splat),
 //                   scaled by the radius array, composited by the peeling
 //
 // Timing mode (default): per mapper a first frame, then --frames frames orbiting the data (the
@@ -150,8 +151,8 @@ struct Setup
   vtkTransparentSphereMapper* Transparent = nullptr;
   vtkNew<vtkActor> Actor;
 
-  Setup(const std::string& kind, vtkPolyData* data, const Options& o,
-    const prBench::Coloring& coloring)
+  Setup(
+    const std::string& kind, vtkPolyData* data, const Options& o, const prBench::Coloring& coloring)
   {
     if (IsTransparent(kind))
     {
@@ -327,7 +328,8 @@ std::vector<Row> RunTiming(const std::string& kind, vtkPolyData* data, const Opt
   }
 
   vtkOpenGLRenderTimer timer;
-  auto measure = [&](Row& row, int frames, bool move) {
+  auto measure = [&](Row& row, int frames, bool move)
+  {
     std::vector<double> wall, gpu, sort, draw, composite;
     const vtkIdType sorts = tm ? tm->GetNumberOfSorts() : 0;
     for (int f = 0; f < frames; ++f)
@@ -376,7 +378,8 @@ std::vector<Row> RunTiming(const std::string& kind, vtkPolyData* data, const Opt
     tm->GetFrontToBackTarget()->SetCountMaskedPixels(true);
     window->Render();
     tm->GetFrontToBackTarget()->SetCountMaskedPixels(false);
-    const double fraction = static_cast<double>(tm->GetFrontToBackTarget()->GetNumberOfMaskedPixels()) /
+    const double fraction =
+      static_cast<double>(tm->GetFrontToBackTarget()->GetNumberOfMaskedPixels()) /
       (static_cast<double>(o.Width) * o.Height);
     for (Row& row : rows)
     {
@@ -485,7 +488,8 @@ int Timing(vtkPolyData* data, const Options& o, const prBench::Coloring& colorin
     {
       csv << "label,particles,width,height,opacity,mapper,camera,frames,first_frame_s,"
              "median_frame_s,median_gpu_s,upload_s,sort_gpu_s,draw_gpu_s,composite_gpu_s,"
-             "sorts_per_frame,masked_fraction,covered_fraction,empty_frame_s,one_particle_frame_s,rmse_vs_transparent,max_vs_transparent,peer,"
+             "sorts_per_frame,masked_fraction,covered_fraction,empty_frame_s,one_particle_frame_s,"
+             "rmse_vs_transparent,max_vs_transparent,peer,"
              "ratio_vs_peer\n";
     }
   }
@@ -517,12 +521,12 @@ int Timing(vtkPolyData* data, const Options& o, const prBench::Coloring& colorin
     std::cout << ", ratio vs " << o.Peer << " " << ratio << "\n";
     if (csv.is_open())
     {
-      csv << o.Label << "," << data->GetNumberOfPoints() << "," << o.Width << "," << o.Height
-          << "," << o.Opacity << "," << r.Mapper << "," << r.Camera << "," << r.Frames << ","
+      csv << o.Label << "," << data->GetNumberOfPoints() << "," << o.Width << "," << o.Height << ","
+          << o.Opacity << "," << r.Mapper << "," << r.Camera << "," << r.Frames << ","
           << r.FirstFrame << "," << r.MedianFrame << "," << r.MedianGPU << "," << r.Upload << ","
           << r.Sort << "," << r.Draw << "," << r.Composite << "," << r.SortsPerFrame << ","
-          << r.MaskedFraction << "," << r.CoveredFraction << "," << r.EmptyFrame << "," << r.OneParticleFrame << ","
-          << r.RMSEvsTransparent << "," << r.MaxvsTransparent << ","
+          << r.MaskedFraction << "," << r.CoveredFraction << "," << r.EmptyFrame << ","
+          << r.OneParticleFrame << "," << r.RMSEvsTransparent << "," << r.MaxvsTransparent << ","
           << o.Peer << "," << ratio << "\n";
     }
   }
@@ -530,7 +534,8 @@ int Timing(vtkPolyData* data, const Options& o, const prBench::Coloring& colorin
 }
 
 // ------------------------------------------------------------------------------ error mode
-int Errors(vtkPolyData* data, vtkIdType dropped, const Options& o, const prBench::Coloring& coloring)
+int Errors(
+  vtkPolyData* data, vtkIdType dropped, const Options& o, const prBench::Coloring& coloring)
 {
   vtkNew<vtkRenderWindow> window;
   window->SetSize(o.Width, o.Height);
@@ -575,10 +580,11 @@ int Errors(vtkPolyData* data, vtkIdType dropped, const Options& o, const prBench
            "max_vs_converged,reference_s\n";
   }
   std::cout << "particles " << data->GetNumberOfPoints() << " (" << dropped
-            << " intersecting dropped), " << o.Width << "x" << o.Height << ", opacity "
-            << o.Opacity << ", reference " << ref->GetLastRenderSeconds() << " s\n";
-  auto report = [&](const std::string& kind, int peels, vtkImageData* image,
-                  vtkImageData* converged) {
+            << " intersecting dropped), " << o.Width << "x" << o.Height << ", opacity " << o.Opacity
+            << ", reference " << ref->GetLastRenderSeconds() << " s\n";
+  auto report = [&](
+                  const std::string& kind, int peels, vtkImageData* image, vtkImageData* converged)
+  {
     const vtkParticleImageComparison::Result r = Compare(image, refImage);
     vtkParticleImageComparison::Result c;
     c.RMSE = c.MaxAbsError = -1;
@@ -586,8 +592,8 @@ int Errors(vtkPolyData* data, vtkIdType dropped, const Options& o, const prBench
     {
       c = Compare(image, converged);
     }
-    const double over =
-      static_cast<double>(r.NumberOfPixelsOverTolerance) / std::max<long long>(1, r.NumberOfComparedPixels);
+    const double over = static_cast<double>(r.NumberOfPixelsOverTolerance) /
+      std::max<long long>(1, r.NumberOfComparedPixels);
     std::cout << "  " << kind << " (" << peels << " peels): vs reference rmse " << r.RMSE * 255
               << "/255, max " << r.MaxAbsError * 255 << "/255, " << over * 100
               << " % of pixels > 2/255";

@@ -77,8 +77,8 @@ void pqParticleProgressiveRefinement::onViewAdded(pqView* view)
   }
   ViewState state;
   state.View = view;
-  state.Observer = proxy->AddObserver(
-    vtkCommand::EndEvent, this, &pqParticleProgressiveRefinement::onRenderEnded);
+  state.Observer =
+    proxy->AddObserver(vtkCommand::EndEvent, this, &pqParticleProgressiveRefinement::onRenderEnded);
   this->Views.insert(proxy, state);
 }
 
@@ -95,7 +95,8 @@ void pqParticleProgressiveRefinement::onViewRemoved(pqView* view)
 }
 
 //------------------------------------------------------------------------------
-void pqParticleProgressiveRefinement::onRenderEnded(vtkObject* caller, unsigned long, void* callData)
+void pqParticleProgressiveRefinement::onRenderEnded(
+  vtkObject* caller, unsigned long, void* callData)
 {
   auto it = this->Views.find(caller);
   if (it == this->Views.end() || !it.value().View)
@@ -147,10 +148,12 @@ void pqParticleProgressiveRefinement::onRenderEnded(vtkObject* caller, unsigned 
   }
   state.Asked = true;
   QPointer<pqView> view = state.View;
-  QTimer::singleShot(0, view, [view]() {
-    if (view)
+  QTimer::singleShot(0, view,
+    [view]()
     {
-      view->render();
-    }
-  });
+      if (view)
+      {
+        view->render();
+      }
+    });
 }

@@ -11,10 +11,10 @@
  * it goes on while the view's sample count (information property SNDFNumberOfSamples) grows and
  * stays below TargetSamples; a render that added no sample (the pass shows the plain image, e.g.
  * translucent particles) ends the loop. With a remote server, whose pass the client cannot see,
- * it renders ceil(TargetSamples / SamplesPerFrame) times after the render of a change. Interactive renders,
- * "S-NDF Converge Still Renders" (every still render converges by itself) and views with S-NDF
- * shading off are left alone. Every still render it did not ask for (a camera, data or setting
- * change) starts the count again.
+ * it renders ceil(TargetSamples / SamplesPerFrame) times after the render of a change. Interactive
+ * renders, "S-NDF Converge Still Renders" (every still render converges by itself) and views with
+ * S-NDF shading off are left alone. Every still render it did not ask for (a camera, data or
+ * setting change) starts the count again.
  *
  * In pvpython and pvbatch there is no such loop: Render() adds one step, or converges at once
  * with "S-NDF Converge Still Renders".

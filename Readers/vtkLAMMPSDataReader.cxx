@@ -243,8 +243,8 @@ int vtkLAMMPSDataReader::RequestData(
     };
     if (current == "Atoms")
     {
-      std::string style = Split(currentComment).empty() ? this->AtomStyle
-                                                        : Split(currentComment)[0];
+      std::string style =
+        Split(currentComment).empty() ? this->AtomStyle : Split(currentComment)[0];
       const auto it = AtomStyles().find(style);
       if (it == AtomStyles().end())
       {
@@ -315,7 +315,8 @@ int vtkLAMMPSDataReader::RequestData(
           if (isInt ? !ParseInt64(word.data(), word.data() + word.size(), integer)
                     : !ParseWord(word, value))
           {
-            return fail("'" + word + "' (" + col + ") is not " + (isInt ? "an integer" : "a number"));
+            return fail(
+              "'" + word + "' (" + col + ") is not " + (isInt ? "an integer" : "a number"));
           }
           if (col == "x" || col == "y" || col == "z")
           {
@@ -358,8 +359,8 @@ int vtkLAMMPSDataReader::RequestData(
       {
         if (section.empty())
         {
-          return fail("more lines in the Atoms section than the header's " +
-            std::to_string(atoms) + " atoms");
+          return fail("more lines in the Atoms section than the header's " + std::to_string(atoms) +
+            " atoms");
         }
       }
     }
@@ -404,7 +405,8 @@ int vtkLAMMPSDataReader::RequestData(
       {
         long long type;
         double mass;
-        if (words.size() < 2 || !ParseInt64(words[0].data(), words[0].data() + words[0].size(), type) ||
+        if (words.size() < 2 ||
+          !ParseInt64(words[0].data(), words[0].data() + words[0].size(), type) ||
           !ParseWord(words[1], mass))
         {
           return fail("expected 'type mass' in the Masses section");
@@ -456,9 +458,10 @@ int vtkLAMMPSDataReader::RequestData(
     vtkDataArray* diameter = arrays.count("diameter") ? arrays["diameter"].GetPointer() : nullptr;
     for (vtkIdType i = 0; i < n; ++i)
     {
-      radius->SetValue(i, static_cast<float>(diameter ? 0.5 * diameter->GetComponent(i, 0)
-          : type                                     ? this->GetTypeRadius(type->GetValue(i))
-                                                     : this->DefaultRadius));
+      radius->SetValue(i,
+        static_cast<float>(diameter ? 0.5 * diameter->GetComponent(i, 0)
+            : type                  ? this->GetTypeRadius(type->GetValue(i))
+                                    : this->DefaultRadius));
     }
     arrays["radius"] = radius;
   }
@@ -490,7 +493,8 @@ int vtkLAMMPSDataReader::RequestData(
     order.resize(static_cast<size_t>(n));
     std::iota(order.begin(), order.end(), 0);
     const vtkIdType* id = ids->GetPointer(0);
-    std::stable_sort(order.begin(), order.end(), [id](vtkIdType a, vtkIdType b) { return id[a] < id[b]; });
+    std::stable_sort(
+      order.begin(), order.end(), [id](vtkIdType a, vtkIdType b) { return id[a] < id[b]; });
   }
   auto place = [&order](vtkAbstractArray* a) -> vtkSmartPointer<vtkAbstractArray>
   { return order.empty() ? vtkSmartPointer<vtkAbstractArray>(a) : Permuted(a, order); };

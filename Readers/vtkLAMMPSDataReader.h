@@ -17,8 +17,9 @@
  * - other sections (Bonds, Pair Coeffs, ...) are skipped.
  * Point arrays: "id" (vtkIdTypeArray), "type", "mol" (vtkIntArray), "q", "diameter", "density",
  * "mu" (3 components), "image" (3 int components), "velocity", "mass", and "radius" (half the
- * diameter for sphere styles, else the per-type table of vtkLAMMPSReaderBase). The box is in the field data ("BoxBounds", "BoxTilt") and on output port
- * 1 as an outline. Atoms are in file order (SortById orders them by id).
+ * diameter for sphere styles, else the per-type table of vtkLAMMPSReaderBase). The box is in the
+ * field data ("BoxBounds", "BoxTilt") and on output port 1 as an outline. Atoms are in file order
+ * (SortById orders them by id).
  *
  * Bad input gets an error naming the file and the line (a header count that does not match the
  * section, a line with too few values, a non-number, an unknown atom style, velocities of ids

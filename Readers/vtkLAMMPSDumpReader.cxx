@@ -42,7 +42,6 @@ namespace
 {
 using namespace prReader;
 
-
 struct Snapshot
 {
   int File = 0;
@@ -59,17 +58,17 @@ struct Snapshot
 // Where a column goes.
 enum class Kind
 {
-  Point,     // a component of the points (double)
-  Float,     // a component of a float array
-  Int,       // a component of an int array
-  IdType,    // vtkIdType array (id)
-  String,    // a string array
+  Point,  // a component of the points (double)
+  Float,  // a component of a float array
+  Int,    // a component of an int array
+  IdType, // vtkIdType array (id)
+  String, // a string array
 };
 
 struct ColumnPlan
 {
   Kind Type = Kind::Float;
-  int Array = -1;     // index into Plan::Arrays
+  int Array = -1; // index into Plan::Arrays
   int Component = 0;
 };
 
@@ -90,8 +89,8 @@ enum Flavour
   ImageXYZ = 4,
   NumberOfFlavours = 5
 };
-const char* const FlavourColumns[NumberOfFlavours][3] = { { "x", "y", "z" },
-  { "xu", "yu", "zu" }, { "xs", "ys", "zs" }, { "xsu", "ysu", "zsu" }, { "ix", "iy", "iz" } };
+const char* const FlavourColumns[NumberOfFlavours][3] = { { "x", "y", "z" }, { "xu", "yu", "zu" },
+  { "xs", "ys", "zs" }, { "xsu", "ysu", "zsu" }, { "ix", "iy", "iz" } };
 const char* const FlavourArrays[NumberOfFlavours] = { "wrapped", "unwrapped", "scaled",
   "scaled_unwrapped", "image" };
 
@@ -99,7 +98,7 @@ struct Plan
 {
   std::vector<ColumnPlan> Columns;
   std::vector<ArrayPlan> Arrays;
-  int PointFlavour = -1;   // the flavour that becomes the points (-1: none: all points 0)
+  int PointFlavour = -1; // the flavour that becomes the points (-1: none: all points 0)
   bool UnwrapWithImage = false;
   bool Scaled = false;
   int IdArray = -1;
@@ -113,9 +112,8 @@ struct Plan
 // The array of LAMMPS's vector attributes, by the column name without its x/y/z suffix.
 const std::map<std::string, std::string>& VectorNames()
 {
-  static const std::map<std::string, std::string> names = { { "v", "velocity" },
-    { "f", "force" }, { "mu", "mu" }, { "omega", "omega" }, { "angmom", "angmom" },
-    { "tq", "torque" } };
+  static const std::map<std::string, std::string> names = { { "v", "velocity" }, { "f", "force" },
+    { "mu", "mu" }, { "omega", "omega" }, { "angmom", "angmom" }, { "tq", "torque" } };
   return names;
 }
 
@@ -182,9 +180,8 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
   }
   else if (positionSource == vtkLAMMPSDumpReader::UNWRAPPED)
   {
-    chosen = present[UnwrappedXYZ]
-      ? UnwrappedXYZ
-      : (present[ScaledUnwrappedXYZ] ? ScaledUnwrappedXYZ : -1);
+    chosen = present[UnwrappedXYZ] ? UnwrappedXYZ
+                                   : (present[ScaledUnwrappedXYZ] ? ScaledUnwrappedXYZ : -1);
     if (chosen < 0 && present[WrappedXYZ] && present[ImageXYZ])
     {
       chosen = WrappedXYZ;
@@ -309,8 +306,7 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
     {
       type = Kind::Int;
     }
-    else if (columns[i] == "element" ||
-      (i < firstRow.size() && !ParseWord(firstRow[i], value)))
+    else if (columns[i] == "element" || (i < firstRow.size() && !ParseWord(firstRow[i], value)))
     {
       type = Kind::String;
     }
@@ -648,15 +644,14 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
   const size_t first = steps.size();
   auto fail = [&](const std::string& what) -> bool
   {
-    const std::string where =
-      name + ", line " + std::to_string(lines.LineNumber()) + ": " + what;
+    const std::string where = name + ", line " + std::to_string(lines.LineNumber()) + ": " + what;
     if (steps.size() == first)
     {
       error = where;
       return false;
     }
-    warning += where + "; the " + std::to_string(steps.size() - first) +
-      " snapshot(s) before it are read. ";
+    warning +=
+      where + "; the " + std::to_string(steps.size() - first) + " snapshot(s) before it are read. ";
     return true;
   };
   auto next = [&](std::string& out) -> bool
@@ -675,8 +670,8 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
     Snapshot s;
     s.File = fileIndex;
     // optional ITEM: UNITS / ITEM: TIME blocks (dump_modify units/time)
-    while (StartsWith(line, "ITEM: UNITS") || (StartsWith(line, "ITEM: TIME") &&
-                                                !StartsWith(line, "ITEM: TIMESTEP")))
+    while (StartsWith(line, "ITEM: UNITS") ||
+      (StartsWith(line, "ITEM: TIME") && !StartsWith(line, "ITEM: TIMESTEP")))
     {
       if (!next(line) || !next(line))
       {
@@ -765,10 +760,9 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
     const long long skipped = lines.Skip(s.NumberOfAtoms);
     if (skipped < s.NumberOfAtoms)
     {
-      return fail("the file ends here, in the snapshot of timestep " +
-        std::to_string(s.Timestep) + " (atoms from line " + std::to_string(s.AtomsLine) +
-        "), which is truncated: " + std::to_string(skipped) + " of " +
-        std::to_string(s.NumberOfAtoms) + " atom lines");
+      return fail("the file ends here, in the snapshot of timestep " + std::to_string(s.Timestep) +
+        " (atoms from line " + std::to_string(s.AtomsLine) + "), which is truncated: " +
+        std::to_string(skipped) + " of " + std::to_string(s.NumberOfAtoms) + " atom lines");
     }
     s.EndOffset = lines.Offset();
     steps.push_back(std::move(s));
@@ -822,9 +816,9 @@ int vtkLAMMPSDumpReader::RequestInformation(
     std::stable_sort(internals.Steps.begin(), internals.Steps.end(),
       [](const Snapshot& a, const Snapshot& b) { return a.Timestep < b.Timestep; });
     const size_t before = internals.Steps.size();
-    internals.Steps.erase(std::unique(internals.Steps.begin(), internals.Steps.end(),
-                            [](const Snapshot& a, const Snapshot& b)
-                            { return a.Timestep == b.Timestep; }),
+    internals.Steps.erase(
+      std::unique(internals.Steps.begin(), internals.Steps.end(),
+        [](const Snapshot& a, const Snapshot& b) { return a.Timestep == b.Timestep; }),
       internals.Steps.end());
     if (internals.Steps.size() != before)
     {
@@ -877,8 +871,7 @@ int vtkLAMMPSDumpReader::RequestData(
   if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
   {
     const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    const auto it =
-      std::upper_bound(internals.TimeValues.begin(), internals.TimeValues.end(), t);
+    const auto it = std::upper_bound(internals.TimeValues.begin(), internals.TimeValues.end(), t);
     step = it == internals.TimeValues.begin()
       ? 0
       : static_cast<size_t>(it - internals.TimeValues.begin()) - 1;
@@ -905,8 +898,8 @@ int vtkLAMMPSDumpReader::RequestData(
   std::vector<std::string> firstRow;
   if (n > 0)
   {
-    LineReader lines(file, static_cast<size_t>(std::min<std::uint64_t>(
-                             s.EndOffset - s.AtomsOffset + 1, 1 << 16)));
+    LineReader lines(
+      file, static_cast<size_t>(std::min<std::uint64_t>(s.EndOffset - s.AtomsOffset + 1, 1 << 16)));
     std::string line;
     lines.Next(line);
     firstRow = Split(line);
@@ -983,8 +976,8 @@ int vtkLAMMPSDumpReader::RequestData(
     !std::getenv("VTK_SMP_BACKEND_IN_USE");
   while (consumed < total || carry > 0)
   {
-    const size_t want = static_cast<size_t>(
-      std::min<std::uint64_t>(total - consumed, buffer.size() - 1 - carry));
+    const size_t want =
+      static_cast<size_t>(std::min<std::uint64_t>(total - consumed, buffer.size() - 1 - carry));
     const long long got = want > 0 ? file.Read(buffer.data() + carry, want) : 0;
     if (got < 0 || static_cast<size_t>(got) != want)
     {
@@ -998,8 +991,7 @@ int vtkLAMMPSDumpReader::RequestData(
     size_t complete = length;
     if (consumed < total)
     {
-      const char* last = static_cast<const char*>(
-        memrchr(buffer.data(), '\n', length));
+      const char* last = static_cast<const char*>(memrchr(buffer.data(), '\n', length));
       if (!last)
       {
         if (length >= buffer.size() - 1)
@@ -1097,7 +1089,8 @@ int vtkLAMMPSDumpReader::RequestData(
     {
       carry = 0;
     }
-    this->UpdateProgress(0.1 + 0.85 * static_cast<double>(consumed) / std::max<std::uint64_t>(total, 1));
+    this->UpdateProgress(
+      0.1 + 0.85 * static_cast<double>(consumed) / std::max<std::uint64_t>(total, 1));
   }
   if (firstError.Row < 0 && row != n)
   {
@@ -1238,8 +1231,8 @@ int vtkLAMMPSDumpReader::RequestData(
     {
       order.resize(static_cast<size_t>(n));
       std::iota(order.begin(), order.end(), 0);
-      vtkSMPTools::Sort(order.begin(), order.end(),
-        [ids](vtkIdType a, vtkIdType b) { return ids[a] < ids[b]; });
+      vtkSMPTools::Sort(
+        order.begin(), order.end(), [ids](vtkIdType a, vtkIdType b) { return ids[a] < ids[b]; });
     }
   }
   else if (this->SortById && plan.IdArray < 0 && n > 0)

@@ -3,8 +3,8 @@
  * @brief   reads LAMMPS text dump files (atom, custom, xyz-like columns; gzip) as particles
  *
  * vtkLAMMPSDumpReader reads the snapshots of LAMMPS text dumps (`dump atom`, `dump custom`, and
- * their gzip variants) -- one file or a series of files -- and produces one vtkPolyData per time step
- * with a vertex cell per atom, so that ParaView treats the atoms as points and the Particles
+ * their gzip variants) -- one file or a series of files -- and produces one vtkPolyData per time
+ * step with a vertex cell per atom, so that ParaView treats the atoms as points and the Particles
  * representation draws them.
  *
  * Snapshots. A snapshot is the LAMMPS block
@@ -107,9 +107,9 @@ public:
 
   enum PositionSources
   {
-    AUTOMATIC = 0,       // wrapped, unwrapped, scaled, scaled unwrapped: the first present
-    WRAPPED = 1,         // x y z, or xs ys zs mapped through the box
-    UNWRAPPED = 2,       // xu yu zu, xsu ysu zsu mapped, or x y z with image flags
+    AUTOMATIC = 0, // wrapped, unwrapped, scaled, scaled unwrapped: the first present
+    WRAPPED = 1,   // x y z, or xs ys zs mapped through the box
+    UNWRAPPED = 2, // xu yu zu, xsu ysu zsu mapped, or x y z with image flags
   };
 
   ///@{

@@ -55,8 +55,8 @@ struct List
 // Read the list headers of the frame [begin, end) and skip their data; the frame's timestamp
 // (version >= 102, unless timestamp is false). Returns the bytes the frame's structure takes, or
 // 0 (and why) when it does not fit in the frame.
-std::uint64_t ScanFrame(prReader::InputFile& file, std::uint64_t begin, std::uint64_t end, int version,
-  bool timestamp, float& time, std::vector<List>& lists, std::string& why)
+std::uint64_t ScanFrame(prReader::InputFile& file, std::uint64_t begin, std::uint64_t end,
+  int version, bool timestamp, float& time, std::vector<List>& lists, std::string& why)
 {
   lists.clear();
   std::uint64_t at = begin;
@@ -249,7 +249,8 @@ int vtkMMPLDReader::RequestInformation(
     prReader::InputFile file;
     if (name.empty() || !file.Open(name))
     {
-      vtkErrorMacro(<< (name.empty() ? std::string("No file name.") : name + ": cannot open the file"));
+      vtkErrorMacro(<< (name.empty() ? std::string("No file name.")
+                                     : name + ": cannot open the file"));
       return 0;
     }
     const std::uint64_t size = vtksys::SystemTools::FileLength(name);
@@ -308,8 +309,7 @@ int vtkMMPLDReader::RequestInformation(
       if (end > size)
       {
         problems += "frame " + std::to_string(f) + " (bytes " + std::to_string(begin) + ".." +
-          std::to_string(end) + ") is truncated: the file has " + std::to_string(size) +
-          " bytes; ";
+          std::to_string(end) + ") is truncated: the file has " + std::to_string(size) + " bytes; ";
         break;
       }
       float time;
@@ -375,9 +375,8 @@ int vtkMMPLDReader::RequestData(
   {
     const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
     const auto it = std::upper_bound(this->TimeValues.begin(), this->TimeValues.end(), t);
-    index = it == this->TimeValues.begin()
-      ? 0
-      : static_cast<size_t>(it - this->TimeValues.begin()) - 1;
+    index =
+      it == this->TimeValues.begin() ? 0 : static_cast<size_t>(it - this->TimeValues.begin()) - 1;
   }
   for (int port = 0; port < 2; ++port)
   {
@@ -500,7 +499,8 @@ int vtkMMPLDReader::RequestData(
             for (int k = 0; k < 4; ++k)
             {
               const float value = std::isfinite(f[k]) ? f[k] : 0.0f;
-              rgba[k] = static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, value))));
+              rgba[k] = static_cast<unsigned char>(
+                std::lround(255.0f * std::min(1.0f, std::max(0.0f, value))));
             }
             break;
           }

@@ -182,8 +182,7 @@ public:
       }
       any = true;
       const char* start = this->Buffer.data() + this->Begin;
-      const char* nl =
-        static_cast<const char*>(std::memchr(start, '\n', this->End - this->Begin));
+      const char* nl = static_cast<const char*>(std::memchr(start, '\n', this->End - this->Begin));
       if (nl)
       {
         line.append(start, static_cast<size_t>(nl - start));
@@ -292,8 +291,8 @@ inline std::vector<std::string> Split(const std::string& s)
 // nan, inf) goes through std::from_chars.
 inline bool ParseDouble(const char* begin, const char* end, double& value)
 {
-  static const double powers[23] = { 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10,
-    1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22 };
+  static const double powers[23] = { 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22 };
   if (begin < end && *begin == '+')
   {
     ++begin;
@@ -370,7 +369,7 @@ struct Box
   double Lo[3] = { 0, 0, 0 };
   double Hi[3] = { 0, 0, 0 };
   double Tilt[3] = { 0, 0, 0 }; // xy xz yz
-  std::string Periodicity;       // e.g. "pp pp pp"
+  std::string Periodicity;      // e.g. "pp pp pp"
   bool Triclinic = false;
   double Length(int k) const { return this->Hi[k] - this->Lo[k]; }
 };
@@ -404,8 +403,8 @@ inline vtkSmartPointer<vtkPolyData> BoxOutline(const Box& box)
     points->InsertNextPoint(p);
   }
   vtkNew<vtkCellArray> lines;
-  const int edges[12][2] = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 0, 2 }, { 1, 3 },
-    { 4, 6 }, { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+  const int edges[12][2] = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 0, 2 }, { 1, 3 }, { 4, 6 },
+    { 5, 7 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
   for (const auto& e : edges)
   {
     const vtkIdType ids[2] = { e[0], e[1] };
@@ -477,7 +476,8 @@ inline vtkSmartPointer<vtkCellArray> VertexCells(vtkIdType n)
 
 //------------------------------------------------------------------------------
 // A new array of the same type and components with the tuples in the given order.
-inline vtkSmartPointer<vtkAbstractArray> Permuted(vtkAbstractArray* in, const std::vector<vtkIdType>& order)
+inline vtkSmartPointer<vtkAbstractArray> Permuted(
+  vtkAbstractArray* in, const std::vector<vtkIdType>& order)
 {
   vtkSmartPointer<vtkAbstractArray> out;
   out.TakeReference(in->NewInstance());

@@ -310,8 +310,8 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
     static_cast<float>(this->FetchDistance / dims[2]),
   };
   program->SetUniform3f("prFetchStep", fetchStep);
-  program->SetUniformf("prFetchDistance",
-    static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
+  program->SetUniformf(
+    "prFetchDistance", static_cast<float>(this->FetchDistance * volume->GetVoxelSize()));
   program->SetUniformf("prStrength", static_cast<float>(this->Strength));
   if (program->IsUniformUsed("prOwnDensity"))
   {
@@ -321,8 +321,8 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
     program->SetUniform3f("prVolumeDimensions", dimensions);
     const double voxel = volume->GetVoxelSize();
     program->SetUniformf("prOwnDensity",
-      static_cast<float>(volume->GetDensityFactor() * 4.0 / 3.0 * vtkMath::Pi() /
-        (voxel * voxel * voxel)));
+      static_cast<float>(
+        volume->GetDensityFactor() * 4.0 / 3.0 * vtkMath::Pi() / (voxel * voxel * voxel)));
     program->SetUniformi("prTrilinearSplat",
       volume->GetSplatMode() == vtkParticleDensityVolume::TRILINEAR_SPLAT ? 1 : 0);
   }
@@ -342,7 +342,8 @@ vtkInformationKeyMacro(vtkDensityVolumeAOPass, DISTRIBUTED_VOLUME, ObjectBase);
 //------------------------------------------------------------------------------
 void vtkDensityVolumeAOPass::SetDistributedVolume(vtkProp* prop, vtkParticleDensityVolume* volume)
 {
-  vtkParticleVolumeAOPass::SetPropVolume(prop, vtkDensityVolumeAOPass::DISTRIBUTED_VOLUME(), volume);
+  vtkParticleVolumeAOPass::SetPropVolume(
+    prop, vtkDensityVolumeAOPass::DISTRIBUTED_VOLUME(), volume);
 }
 
 //------------------------------------------------------------------------------
@@ -356,10 +357,11 @@ vtkParticleDensityVolume* vtkDensityVolumeAOPass::GetDistributedVolume(vtkProp* 
 void vtkDensityVolumeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "GenerationMode: "
-     << (this->GenerationMode == CPU_GENERATION ? "CPU" : "GPU") << "\n";
-  os << indent << "RetrievalMode: "
-     << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
+  os << indent << "GenerationMode: " << (this->GenerationMode == CPU_GENERATION ? "CPU" : "GPU")
+     << "\n";
+  os << indent
+     << "RetrievalMode: " << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere")
+     << "\n";
   os << indent << "FetchDistance: " << this->FetchDistance << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "ProgressThreshold: " << this->ProgressThreshold << "\n";

@@ -47,7 +47,8 @@
 
 class vtkParticleDensityVolume;
 
-class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkDensityVolumeAOPass : public vtkParticleVolumeAOPass
+class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkDensityVolumeAOPass
+  : public vtkParticleVolumeAOPass
 {
 public:
   static vtkDensityVolumeAOPass* New();

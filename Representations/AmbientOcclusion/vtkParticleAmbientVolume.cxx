@@ -1,26 +1,26 @@
 #include "vtkParticleAmbientVolume.h"
 
 #include "vtkActor.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
-#include "vtkObjectFactory.h"
-#include "vtkPointData.h"
-#include "vtkDataSetAttributes.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleEmissionModel.h"
 #include "vtkParticleMemory.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
@@ -76,7 +76,7 @@ class vtkParticleAmbientVolume::vtkInternals
 public:
   std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>> Props;
   std::vector<std::vector<float>> Levels;
-  bool LevelsValid = false; // Levels hold the last build's pyramid
+  bool LevelsValid = false;    // Levels hold the last build's pyramid
   std::vector<Sphere> Spheres; // the last PrepareSpheres(), voxel units
 
   // GPU voxelisation: the four compute stages, their buffers, the pyramid's float offsets
@@ -191,9 +191,9 @@ bool vtkParticleAmbientVolume::SetUpGrid(
     {
       vtkWarningMacro(<< "The ambient volume of " << wantedDims[0] << "x" << wantedDims[1] << "x"
                       << wantedDims[2] << " voxels (" << wantedBytes / 1048576.0
-                      << " MiB with its mips and their float accumulator) exceeds " << reason << ": reduced to " << dims[0]
-                      << "x" << dims[1] << "x" << dims[2] << " voxels (" << bytes / 1048576.0
-                      << " MiB).");
+                      << " MiB with its mips and their float accumulator) exceeds " << reason
+                      << ": reduced to " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                      << " voxels (" << bytes / 1048576.0 << " MiB).");
     }
     for (int k = 0; k < 3; ++k)
     {
@@ -240,8 +240,9 @@ bool vtkParticleAmbientVolume::PrepareSpheres(const std::vector<double>& centers
   const size_t n = radii.size();
   if (centers.size() != 3 * n || colors.size() != 3 * n || meanOpacities.size() != n)
   {
-    vtkErrorMacro(<< "Voxelise(): " << n << " radii need 3 centre coordinates, 3 colour "
-                                         "components and one opacity each.");
+    vtkErrorMacro(<< "Voxelise(): " << n
+                  << " radii need 3 centre coordinates, 3 colour "
+                     "components and one opacity each.");
     return false;
   }
   // bounds of the valid spheres and their mean radius
@@ -305,21 +306,23 @@ bool vtkParticleAmbientVolume::PrepareSpheres(const std::vector<double>& centers
   // (3 / (4 r)) <Theta> edge (number density times cross-section, see the class description)
   std::vector<Sphere>& spheres = this->Internals->Spheres;
   spheres.resize(valid.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(valid.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType j = begin; j < end; ++j)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(valid.size()),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const size_t i = valid[j];
-      Sphere& s = spheres[j];
-      for (int k = 0; k < 3; ++k)
+      for (vtkIdType j = begin; j < end; ++j)
       {
-        s.Center[k] = (centers[3 * i + k] - this->Origin[k]) / edge; // in voxel units
-        s.Color[k] = std::min(std::max(colors[3 * i + k], 0.0), 1.0);
+        const size_t i = valid[j];
+        Sphere& s = spheres[j];
+        for (int k = 0; k < 3; ++k)
+        {
+          s.Center[k] = (centers[3 * i + k] - this->Origin[k]) / edge; // in voxel units
+          s.Color[k] = std::min(std::max(colors[3 * i + k], 0.0), 1.0);
+        }
+        s.Radius = radii[i] / edge;
+        const double theta = std::min(std::max(meanOpacities[i], 0.0), 1.0);
+        s.Sigma = std::isfinite(theta) ? 0.75 / s.Radius * theta : 0.0;
       }
-      s.Radius = radii[i] / edge;
-      const double theta = std::min(std::max(meanOpacities[i], 0.0), 1.0);
-      s.Sigma = std::isfinite(theta) ? 0.75 / s.Radius * theta : 0.0;
-    }
-  });
+    });
 
   this->LastVoxeliseSeconds = vtkTimerLog::GetUniversalTime() - prepareStart;
   return true;
@@ -336,7 +339,8 @@ void vtkParticleAmbientVolume::DepositOnCPU()
   const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
   // spheres per z slab (each slab is then voxelised by one thread: no races)
   std::vector<vtkIdType> slabStart(nz + 1, 0);
-  auto zRange = [&](const Sphere& s, int& z0, int& z1) {
+  auto zRange = [&](const Sphere& s, int& z0, int& z1)
+  {
     z0 = std::max(0, static_cast<int>(std::floor(s.Center[2] - s.Radius)));
     z1 = std::min(nz - 1, static_cast<int>(std::floor(s.Center[2] + s.Radius)));
   };
@@ -370,7 +374,8 @@ void vtkParticleAmbientVolume::DepositOnCPU()
   // the overlap weights of one sphere (voxel units): the voxels it covers exactly (1), the
   // partial ones by the sub-grid, rescaled so that the sphere's whole volume is deposited
   const int s = this->SubGridSamples;
-  auto weightOfCell = [s](const Sphere& sp, int x, int y, int z) -> double {
+  auto weightOfCell = [s](const Sphere& sp, int x, int y, int z) -> double
+  {
     const double lo[3] = { double(x), double(y), double(z) };
     double nearest = 0.0;
     double farthest = 0.0;
@@ -417,90 +422,96 @@ void vtkParticleAmbientVolume::DepositOnCPU()
   // (computed once over all its voxels, then applied slab by slab)
   std::vector<double> partialScale(spheres.size(), 1.0);
   std::vector<char> lost(spheres.size(), 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(spheres.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType j = begin; j < end; ++j)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(spheres.size()),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const Sphere& sp = spheres[j];
-      int lo[3], hi[3];
-      for (int k = 0; k < 3; ++k)
+      for (vtkIdType j = begin; j < end; ++j)
       {
-        lo[k] = std::max(0, static_cast<int>(std::floor(sp.Center[k] - sp.Radius)));
-        hi[k] = std::min(this->Dimensions[k] - 1, static_cast<int>(std::floor(sp.Center[k] + sp.Radius)));
-      }
-      double full = 0.0;
-      double partial = 0.0;
-      for (int z = lo[2]; z <= hi[2]; ++z)
-      {
-        for (int y = lo[1]; y <= hi[1]; ++y)
+        const Sphere& sp = spheres[j];
+        int lo[3], hi[3];
+        for (int k = 0; k < 3; ++k)
         {
-          for (int x = lo[0]; x <= hi[0]; ++x)
+          lo[k] = std::max(0, static_cast<int>(std::floor(sp.Center[k] - sp.Radius)));
+          hi[k] = std::min(
+            this->Dimensions[k] - 1, static_cast<int>(std::floor(sp.Center[k] + sp.Radius)));
+        }
+        double full = 0.0;
+        double partial = 0.0;
+        for (int z = lo[2]; z <= hi[2]; ++z)
+        {
+          for (int y = lo[1]; y <= hi[1]; ++y)
           {
-            const double w = weightOfCell(sp, x, y, z);
-            (w < 0.0 ? partial : full) += std::abs(w);
+            for (int x = lo[0]; x <= hi[0]; ++x)
+            {
+              const double w = weightOfCell(sp, x, y, z);
+              (w < 0.0 ? partial : full) += std::abs(w);
+            }
           }
         }
+        const double volume = 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius;
+        if (partial > 0.0)
+        {
+          partialScale[j] = std::max(0.0, volume - full) / partial;
+        }
+        else if (full == 0.0)
+        {
+          lost[j] = 1; // smaller than the sub-grid and between its samples: all into its voxel
+        }
       }
-      const double volume = 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius;
-      if (partial > 0.0)
-      {
-        partialScale[j] = std::max(0.0, volume - full) / partial;
-      }
-      else if (full == 0.0)
-      {
-        lost[j] = 1; // smaller than the sub-grid and between its samples: all into its voxel
-      }
-    }
-  });
+    });
 
   std::vector<std::vector<float>>& levels = this->Internals->Levels;
   levels.resize(std::max<size_t>(1, levels.size()));
   std::vector<float>& level0 = levels[0];
   level0.assign(static_cast<size_t>(voxels) * 4, 0.0f);
-  vtkSMPTools::For(0, nz, [&](vtkIdType zBegin, vtkIdType zEnd) {
-    for (vtkIdType z = zBegin; z < zEnd; ++z)
+  vtkSMPTools::For(0, nz,
+    [&](vtkIdType zBegin, vtkIdType zEnd)
     {
-      for (vtkIdType e = slabStart[z]; e < slabStart[z + 1]; ++e)
+      for (vtkIdType z = zBegin; z < zEnd; ++z)
       {
-        const vtkIdType j = slabSpheres[e];
-        const Sphere& sp = spheres[j];
-        auto deposit = [&](int x, int y, double w) {
-          float* v = &level0[4 * ((static_cast<size_t>(z) * ny + y) * nx + x)];
-          const double sigma = w * sp.Sigma;
-          v[0] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[0]);
-          v[1] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[1]);
-          v[2] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[2]);
-          v[3] += static_cast<float>(sigma);
-        };
-        if (lost[j])
+        for (vtkIdType e = slabStart[z]; e < slabStart[z + 1]; ++e)
         {
-          const int cx = std::min(nx - 1, std::max(0, static_cast<int>(sp.Center[0])));
-          const int cy = std::min(ny - 1, std::max(0, static_cast<int>(sp.Center[1])));
-          const int cz = std::min(nz - 1, std::max(0, static_cast<int>(sp.Center[2])));
-          if (cz == z)
+          const vtkIdType j = slabSpheres[e];
+          const Sphere& sp = spheres[j];
+          auto deposit = [&](int x, int y, double w)
           {
-            deposit(cx, cy, 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius);
-          }
-          continue;
-        }
-        const int x0 = std::max(0, static_cast<int>(std::floor(sp.Center[0] - sp.Radius)));
-        const int x1 = std::min(nx - 1, static_cast<int>(std::floor(sp.Center[0] + sp.Radius)));
-        const int y0 = std::max(0, static_cast<int>(std::floor(sp.Center[1] - sp.Radius)));
-        const int y1 = std::min(ny - 1, static_cast<int>(std::floor(sp.Center[1] + sp.Radius)));
-        for (int y = y0; y <= y1; ++y)
-        {
-          for (int x = x0; x <= x1; ++x)
+            float* v = &level0[4 * ((static_cast<size_t>(z) * ny + y) * nx + x)];
+            const double sigma = w * sp.Sigma;
+            v[0] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[0]);
+            v[1] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[1]);
+            v[2] += static_cast<float>(sigma * this->AmbientEmission * sp.Color[2]);
+            v[3] += static_cast<float>(sigma);
+          };
+          if (lost[j])
           {
-            double w = weightOfCell(sp, x, y, static_cast<int>(z));
-            w = w < 0.0 ? -w * partialScale[j] : w;
-            if (w > 0.0)
+            const int cx = std::min(nx - 1, std::max(0, static_cast<int>(sp.Center[0])));
+            const int cy = std::min(ny - 1, std::max(0, static_cast<int>(sp.Center[1])));
+            const int cz = std::min(nz - 1, std::max(0, static_cast<int>(sp.Center[2])));
+            if (cz == z)
             {
-              deposit(x, y, w);
+              deposit(cx, cy, 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius);
+            }
+            continue;
+          }
+          const int x0 = std::max(0, static_cast<int>(std::floor(sp.Center[0] - sp.Radius)));
+          const int x1 = std::min(nx - 1, static_cast<int>(std::floor(sp.Center[0] + sp.Radius)));
+          const int y0 = std::max(0, static_cast<int>(std::floor(sp.Center[1] - sp.Radius)));
+          const int y1 = std::min(ny - 1, static_cast<int>(std::floor(sp.Center[1] + sp.Radius)));
+          for (int y = y0; y <= y1; ++y)
+          {
+            for (int x = x0; x <= x1; ++x)
+            {
+              double w = weightOfCell(sp, x, y, static_cast<int>(z));
+              w = w < 0.0 ? -w * partialScale[j] : w;
+              if (w > 0.0)
+              {
+                deposit(x, y, w);
+              }
             }
           }
         }
       }
-    }
-  });
+    });
   this->LastVoxeliseSeconds += vtkTimerLog::GetUniversalTime() - voxeliseStart;
 }
 
@@ -525,39 +536,41 @@ void vtkParticleAmbientVolume::BuildMips()
     const int sy = child[1] > 1 ? 2 : 1;
     const int sz = child[2] > 1 ? 2 : 1;
     const float norm = 1.0f / static_cast<float>(sx * sy * sz);
-    vtkSMPTools::For(0, dims[2], [&](vtkIdType zBegin, vtkIdType zEnd) {
-      for (vtkIdType z = zBegin; z < zEnd; ++z)
+    vtkSMPTools::For(0, dims[2],
+      [&](vtkIdType zBegin, vtkIdType zEnd)
       {
-        for (int y = 0; y < dims[1]; ++y)
+        for (vtkIdType z = zBegin; z < zEnd; ++z)
         {
-          for (int x = 0; x < dims[0]; ++x)
+          for (int y = 0; y < dims[1]; ++y)
           {
-            float sum[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-            for (int c = 0; c < sz; ++c)
+            for (int x = 0; x < dims[0]; ++x)
             {
-              for (int b = 0; b < sy; ++b)
+              float sum[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+              for (int c = 0; c < sz; ++c)
               {
-                for (int a = 0; a < sx; ++a)
+                for (int b = 0; b < sy; ++b)
                 {
-                  const size_t f = 4 *
-                    ((static_cast<size_t>(sz * z + c) * child[1] + (sy * y + b)) * child[0] +
-                      (sx * x + a));
-                  for (int k = 0; k < 4; ++k)
+                  for (int a = 0; a < sx; ++a)
                   {
-                    sum[k] += fine[f + k];
+                    const size_t f = 4 *
+                      ((static_cast<size_t>(sz * z + c) * child[1] + (sy * y + b)) * child[0] +
+                        (sx * x + a));
+                    for (int k = 0; k < 4; ++k)
+                    {
+                      sum[k] += fine[f + k];
+                    }
                   }
                 }
               }
-            }
-            float* out = &coarse[4 * ((static_cast<size_t>(z) * dims[1] + y) * dims[0] + x)];
-            for (int k = 0; k < 4; ++k)
-            {
-              out[k] = sum[k] * norm;
+              float* out = &coarse[4 * ((static_cast<size_t>(z) * dims[1] + y) * dims[0] + x)];
+              for (int k = 0; k < 4; ++k)
+              {
+                out[k] = sum[k] * norm;
+              }
             }
           }
         }
-      }
-    });
+      });
   }
   this->Internals->LevelsValid = true;
 }
@@ -675,10 +688,10 @@ void vtkParticleAmbientVolume::GatherSpheres(vtkActor* actor, vtkParticleSphereM
   radii.resize(offset + n, 0.0);
   colors.resize(3 * (offset + n), 1.0);
   opacities.resize(offset + n, 1.0);
-  auto ghosts = ownedOnly ? vtkUnsignedCharArray::SafeDownCast(
-                              mapper->GetInput()->GetPointData()->GetArray(
-                                vtkDataSetAttributes::GhostArrayName()))
-                          : nullptr;
+  auto ghosts = ownedOnly
+    ? vtkUnsignedCharArray::SafeDownCast(
+        mapper->GetInput()->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+    : nullptr;
   if (ghosts && ghosts->GetNumberOfTuples() < n)
   {
     ghosts = nullptr;
@@ -705,46 +718,48 @@ void vtkParticleAmbientVolume::GatherSpheres(vtkActor* actor, vtkParticleSphereM
   const int model = mapper->GetEmissionDensityModel();
   const double hollow = mapper->GetEmissionHollowFraction();
   vtkDataArray* xyz = points->GetData();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double q[3];
-      xyz->GetTuple(i, q);
-      for (int k = 0; k < 3; ++k)
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        centers[3 * (offset + i) + k] =
-          m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
-      }
-      // a ghost copy (another process's particle) is left out: radius 0
-      const bool ghost = ghosts && (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT);
-      radii[offset + i] = ghost ? 0.0 : r[i] * scale;
-      double theta = propertyOpacity;
-      if (mapped)
-      {
-        const unsigned char* c = mapped->GetPointer(4 * i);
+        double q[3];
+        xyz->GetTuple(i, q);
         for (int k = 0; k < 3; ++k)
         {
-          colors[3 * (offset + i) + k] = c[k] / 255.0;
+          centers[3 * (offset + i) + k] =
+            m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
         }
-        theta *= c[3] / 255.0;
-      }
-      else
-      {
-        for (int k = 0; k < 3; ++k)
+        // a ghost copy (another process's particle) is left out: radius 0
+        const bool ghost = ghosts && (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT);
+        radii[offset + i] = ghost ? 0.0 : r[i] * scale;
+        double theta = propertyOpacity;
+        if (mapped)
         {
-          colors[3 * (offset + i) + k] = propertyColor[k];
+          const unsigned char* c = mapped->GetPointer(4 * i);
+          for (int k = 0; k < 3; ++k)
+          {
+            colors[3 * (offset + i) + k] = c[k] / 255.0;
+          }
+          theta *= c[3] / 255.0;
         }
+        else
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            colors[3 * (offset + i) + k] = propertyColor[k];
+          }
+        }
+        if (thetaA)
+        {
+          theta *= thetaA->GetValue(i);
+        }
+        // the opaque core draws a flat opacity over the disc; the emission-absorption glyphs
+        // their profile
+        opacities[offset + i] =
+          profiled ? vtkParticleEmissionModel::MeanDiscOpacity(theta, model, hollow) : theta;
       }
-      if (thetaA)
-      {
-        theta *= thetaA->GetValue(i);
-      }
-      // the opaque core draws a flat opacity over the disc; the emission-absorption glyphs
-      // their profile
-      opacities[offset + i] =
-        profiled ? vtkParticleEmissionModel::MeanDiscOpacity(theta, model, hollow) : theta;
-    }
-  });
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -754,7 +769,8 @@ bool vtkParticleAmbientVolume::EndParticles(
   vtkInternals& internals = *this->Internals;
   if (internals.Props.empty() || !context || !texture)
   {
-    vtkErrorMacro(<< "EndParticles() needs particle props (AddParticles), a context and a texture.");
+    vtkErrorMacro(
+      << "EndParticles() needs particle props (AddParticles), a context and a texture.");
     return false;
   }
   // the spheres as drawn: world centres, radii, colours and mean disc opacities
@@ -781,8 +797,8 @@ bool vtkParticleAmbientVolume::BuildTexture(vtkOpenGLRenderWindow* context,
     vtkErrorMacro(<< "BuildTexture() needs a context and a texture.");
     return false;
   }
-  if (!this->PrepareSpheres(centers, radii, colors, meanOpacities,
-        vtkTextureObject::GetMaximumTextureSize3D(context)))
+  if (!this->PrepareSpheres(
+        centers, radii, colors, meanOpacities, vtkTextureObject::GetMaximumTextureSize3D(context)))
   {
     return false;
   }
@@ -822,7 +838,8 @@ bool vtkParticleAmbientVolume::AllocateTexture(
   // the grid did not change (a time series overwrites every level: no reallocation)
   const int* dims = this->Dimensions;
   if (texture->GetHandle() != 0 && texture->GetContext() == context &&
-    texture->GetTarget() == GL_TEXTURE_3D && texture->GetWidth() == static_cast<unsigned>(dims[0]) &&
+    texture->GetTarget() == GL_TEXTURE_3D &&
+    texture->GetWidth() == static_cast<unsigned>(dims[0]) &&
     texture->GetHeight() == static_cast<unsigned>(dims[1]) &&
     texture->GetDepth() == static_cast<unsigned>(dims[2]) &&
     texture->GetMaxLevel() == this->NumberOfLevels - 1 &&
@@ -887,12 +904,14 @@ bool vtkParticleAmbientVolume::UploadLevels(
     }
     const std::vector<float>& values = this->Internals->Levels[level];
     half.resize(values.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType b, vtkIdType e) {
-      for (vtkIdType i = b; i < e; ++i)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()),
+      [&](vtkIdType b, vtkIdType e)
       {
-        half[i] = vtkParticleAmbientVolume::FloatToHalf(values[i]);
-      }
-    });
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          half[i] = vtkParticleAmbientVolume::FloatToHalf(values[i]);
+        }
+      });
     glTexSubImage3D(GL_TEXTURE_3D, level, 0, 0, 0, size[0], size[1], size[2], GL_RGBA,
       GL_HALF_FLOAT, half.data());
   }
@@ -945,27 +964,29 @@ bool vtkParticleAmbientVolume::VoxeliseOnGPU(
   std::vector<float> geometry(4 * n);
   std::vector<float> material(4 * n);
   std::vector<std::uint64_t> itemStart(n + 1, 0);
-  auto zRange = [nz](const Sphere& sp, int& z0, int& z1) {
+  auto zRange = [nz](const Sphere& sp, int& z0, int& z1)
+  {
     z0 = std::max(0, static_cast<int>(std::floor(sp.Center[2] - sp.Radius)));
     z1 = std::min(nz - 1, static_cast<int>(std::floor(sp.Center[2] + sp.Radius)));
   };
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType j = begin; j < end; ++j)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const Sphere& sp = spheres[j];
-      for (int k = 0; k < 3; ++k)
+      for (vtkIdType j = begin; j < end; ++j)
       {
-        geometry[4 * j + k] = static_cast<float>(sp.Center[k]);
-        material[4 * j + k] =
-          static_cast<float>(sp.Sigma * this->AmbientEmission * sp.Color[k]);
+        const Sphere& sp = spheres[j];
+        for (int k = 0; k < 3; ++k)
+        {
+          geometry[4 * j + k] = static_cast<float>(sp.Center[k]);
+          material[4 * j + k] = static_cast<float>(sp.Sigma * this->AmbientEmission * sp.Color[k]);
+        }
+        geometry[4 * j + 3] = static_cast<float>(sp.Radius);
+        material[4 * j + 3] = static_cast<float>(sp.Sigma);
+        int z0, z1;
+        zRange(sp, z0, z1);
+        itemStart[j + 1] = static_cast<std::uint64_t>(std::max(0, z1 - z0 + 1));
       }
-      geometry[4 * j + 3] = static_cast<float>(sp.Radius);
-      material[4 * j + 3] = static_cast<float>(sp.Sigma);
-      int z0, z1;
-      zRange(sp, z0, z1);
-      itemStart[j + 1] = static_cast<std::uint64_t>(std::max(0, z1 - z0 + 1));
-    }
-  });
+    });
   for (size_t j = 0; j < n; ++j)
   {
     itemStart[j + 1] += itemStart[j];
@@ -980,19 +1001,21 @@ bool vtkParticleAmbientVolume::VoxeliseOnGPU(
     return false;
   }
   std::vector<std::uint32_t> itemData(2 * items);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType j = begin; j < end; ++j)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      int z0, z1;
-      zRange(spheres[j], z0, z1);
-      std::uint32_t* out = &itemData[2 * itemStart[j]];
-      for (int z = z0; z <= z1; ++z, out += 2)
+      for (vtkIdType j = begin; j < end; ++j)
       {
-        out[0] = static_cast<std::uint32_t>(j);
-        out[1] = static_cast<std::uint32_t>(z);
+        int z0, z1;
+        zRange(spheres[j], z0, z1);
+        std::uint32_t* out = &itemData[2 * itemStart[j]];
+        for (int z = z0; z <= z1; ++z, out += 2)
+        {
+          out[0] = static_cast<std::uint32_t>(j);
+          out[1] = static_cast<std::uint32_t>(z);
+        }
       }
-    }
-  });
+    });
 
   // the pyramid's levels in one float buffer
   std::vector<std::array<int, 3>> dims(this->NumberOfLevels);
@@ -1076,8 +1099,8 @@ bool vtkParticleAmbientVolume::VoxeliseOnGPU(
     mip->SetUniformui("coarseOffset", static_cast<unsigned int>(offsets[level]));
     glUniform3i(mip->GetUniformLocation("fineDimensions"), dims[level - 1][0], dims[level - 1][1],
       dims[level - 1][2]);
-    glUniform3i(mip->GetUniformLocation("coarseDimensions"), dims[level][0], dims[level][1],
-      dims[level][2]);
+    glUniform3i(
+      mip->GetUniformLocation("coarseDimensions"), dims[level][0], dims[level][1], dims[level][2]);
     mip->Dispatch(static_cast<unsigned int>((voxels + 255) / 256));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
@@ -1143,16 +1166,15 @@ bool vtkParticleAmbientVolume::ReadLevels(vtkOpenGLRenderWindow* context)
 void vtkParticleAmbientVolume::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& internals = *this->Internals;
-  for (vtkParticleComputeProgram* program :
-    { internals.Weights.Get(), internals.Deposit.Get(), internals.Mip.Get(),
-      internals.Store.Get() })
+  for (vtkParticleComputeProgram* program : { internals.Weights.Get(), internals.Deposit.Get(),
+         internals.Mip.Get(), internals.Store.Get() })
   {
     program->ReleaseGraphicsResources(window);
   }
-  const bool current = internals.Context &&
-    vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
-  for (auto* buffer : { &internals.Geometry, &internals.Material, &internals.Items,
-         &internals.Sums, &internals.Accumulator })
+  const bool current =
+    internals.Context && vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
+  for (auto* buffer : { &internals.Geometry, &internals.Material, &internals.Items, &internals.Sums,
+         &internals.Accumulator })
   {
     if ((*buffer)->GetHandle() != 0)
     {

@@ -61,9 +61,9 @@ class vtkParticleDensityVolume::vtkInternals
 public:
   vtkNew<vtkParticleComputeProgram> Splat;
   vtkNew<vtkParticleComputeProgram> Convert;
-  vtkNew<vtkOpenGLBufferObject> Counts;       // fixed-point sums per voxel
-  vtkNew<vtkOpenGLBufferObject> VolumeBuffer; // densities per voxel
-  size_t Capacity = 0; // voxels
+  vtkNew<vtkOpenGLBufferObject> Counts;          // fixed-point sums per voxel
+  vtkNew<vtkOpenGLBufferObject> VolumeBuffer;    // densities per voxel
+  size_t Capacity = 0;                           // voxels
   vtkWeakPointer<vtkOpenGLRenderWindow> Context; // of the buffers
 
   // the particle props of BeginParticles ... EndParticles
@@ -137,11 +137,12 @@ bool vtkParticleDensityVolume::SetUpGrid(
     vtkWarningMacro(<< "A density volume of " << std::ceil(longest / edge)
                     << " voxels along the longest axis exceeds the limit of " << axisLimit
                     << (axisLimit == this->MaximumResolution ? " (MaximumResolution)"
-                                                            : " (the GPU's largest 3D texture)")
+                                                             : " (the GPU's largest 3D texture)")
                     << ": using " << axisLimit << ".");
     edge = longest / axisLimit;
   }
-  auto count = [&](double e) {
+  auto count = [&](double e)
+  {
     double voxels = 1.0;
     for (int k = 0; k < 3; ++k)
     {
@@ -164,8 +165,8 @@ bool vtkParticleDensityVolume::SetUpGrid(
   this->VoxelSize = edge;
   for (int k = 0; k < 3; ++k)
   {
-    this->Dimensions[k] = std::max(1,
-      std::min(axisLimit, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
+    this->Dimensions[k] =
+      std::max(1, std::min(axisLimit, static_cast<int>(std::ceil(extent[k] / edge - 1e-9))));
     const double centre = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
     this->Origin[k] = centre - 0.5 * this->Dimensions[k] * edge;
   }
@@ -189,7 +190,8 @@ void vtkParticleDensityVolume::FinishSums()
   float* out = this->Volume.data();
   const double g = this->DensityFactor;
   vtkSMPTools::For(0, static_cast<vtkIdType>(this->Volume.size()),
-    [&](vtkIdType begin, vtkIdType end) {
+    [&](vtkIdType begin, vtkIdType end)
+    {
       for (vtkIdType i = begin; i < end; ++i)
       {
         out[i] = static_cast<float>(std::min(1.0, g * out[i]));
@@ -247,8 +249,8 @@ bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloa
 
   // each thread into its own partial volume (no races), then a sum over the voxels: threads + 1
   // volumes of floats. Checked first: a volume that does not fit is an error, not an abort.
-  const double bytes = static_cast<double>(voxels) * sizeof(float) *
-    (vtkSMPTools::GetEstimatedNumberOfThreads() + 1);
+  const double bytes =
+    static_cast<double>(voxels) * sizeof(float) * (vtkSMPTools::GetEstimatedNumberOfThreads() + 1);
   std::string why;
   if (!vtkParticleMemory::CanAllocate(bytes, why))
   {
@@ -260,7 +262,8 @@ bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloa
   }
   std::atomic<bool> outOfMemory(false);
   vtkSMPThreadLocal<std::vector<float>> partial;
-  auto splat = [&](vtkIdType begin, vtkIdType end) {
+  auto splat = [&](vtkIdType begin, vtkIdType end)
+  {
     std::vector<float>& local = partial.Local();
     if (local.empty())
     {
@@ -362,25 +365,26 @@ bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloa
       parts.push_back(local.data());
     }
   }
-  vtkSMPTools::For(0, voxels, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, voxels,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double sum = 0.0;
-      for (const float* part : parts)
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        sum += part[i];
+        double sum = 0.0;
+        for (const float* part : parts)
+        {
+          sum += part[i];
+        }
+        out[i] = static_cast<float>(sum);
       }
-      out[i] = static_cast<float>(sum);
-    }
-  });
+    });
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
-  vtkOpenGLBufferObject* positionBuffer, unsigned int positionStride,
-  const double bufferToGrid[16], vtkOpenGLBufferObject* radiusBuffer, double radiusScale,
-  vtkIdType count, bool accumulate)
+  vtkOpenGLBufferObject* positionBuffer, unsigned int positionStride, const double bufferToGrid[16],
+  vtkOpenGLBufferObject* radiusBuffer, double radiusScale, vtkIdType count, bool accumulate)
 {
   vtkInternals& internals = *this->Internals;
   const size_t voxels =
@@ -470,8 +474,8 @@ bool vtkParticleDensityVolume::ComputeOnGPU(vtkOpenGLRenderWindow* context,
   convert->SetUniformf("toDensity", static_cast<float>(this->DensityFactor / FixedPointScale));
   vtkParticleComputeProgram::BindStorage(3, internals.VolumeBuffer);
   convert->Dispatch(static_cast<unsigned int>((voxels + 255) / 256));
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
-    GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glMemoryBarrier(
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   for (unsigned int binding = 0; binding < 4; ++binding)
   {
     vtkParticleComputeProgram::BindStorage(binding, nullptr);
@@ -606,47 +610,49 @@ bool vtkParticleDensityVolume::GatherParticles(
     const double scale = item.second->GetRadiusScaleVC(item.first);
     const double* m = item.first->GetMatrix()->GetData();
     vtkSMPThreadLocal<Partial> partials;
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      Partial& partial = partials.Local();
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        const double radius = r[i] * scale;
-        double q[3];
-        if (xyz)
+        Partial& partial = partials.Local();
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          q[0] = xyz[3 * i];
-          q[1] = xyz[3 * i + 1];
-          q[2] = xyz[3 * i + 2];
-        }
-        else
-        {
-          points->GetTuple(i, q);
-        }
-        double p[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
-        }
-        if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
-        {
+          const double radius = r[i] * scale;
+          double q[3];
+          if (xyz)
+          {
+            q[0] = xyz[3 * i];
+            q[1] = xyz[3 * i + 1];
+            q[2] = xyz[3 * i + 2];
+          }
+          else
+          {
+            points->GetTuple(i, q);
+          }
+          double p[3];
           for (int k = 0; k < 3; ++k)
           {
-            partial.Bounds[2 * k] = std::min(partial.Bounds[2 * k], p[k]);
-            partial.Bounds[2 * k + 1] = std::max(partial.Bounds[2 * k + 1], p[k]);
+            p[k] = m[4 * k] * q[0] + m[4 * k + 1] * q[1] + m[4 * k + 2] * q[2] + m[4 * k + 3];
           }
-          partial.RadiusSum += radius;
-          ++partial.Valid;
-        }
-        if (outPositions)
-        {
-          for (int k = 0; k < 3; ++k)
+          if (radius > 0.0 && std::isfinite(p[0] + p[1] + p[2]))
           {
-            outPositions[3 * (offset + i) + k] = static_cast<float>(p[k]);
+            for (int k = 0; k < 3; ++k)
+            {
+              partial.Bounds[2 * k] = std::min(partial.Bounds[2 * k], p[k]);
+              partial.Bounds[2 * k + 1] = std::max(partial.Bounds[2 * k + 1], p[k]);
+            }
+            partial.RadiusSum += radius;
+            ++partial.Valid;
           }
-          outRadii[offset + i] = static_cast<float>(radius > 0.0 ? radius : 0.0);
+          if (outPositions)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              outPositions[3 * (offset + i) + k] = static_cast<float>(p[k]);
+            }
+            outRadii[offset + i] = static_cast<float>(radius > 0.0 ? radius : 0.0);
+          }
         }
-      }
-    });
+      });
     for (const Partial& partial : partials)
     {
       for (int k = 0; k < 3; ++k)
@@ -671,7 +677,8 @@ bool vtkParticleDensityVolume::EndParticles(
   this->LastBuiltOnGPU = false;
   if (internals.Props.empty() || !context || !texture)
   {
-    vtkErrorMacro(<< "EndParticles() needs particle props (AddParticles), a context and a texture.");
+    vtkErrorMacro(
+      << "EndParticles() needs particle props (AddParticles), a context and a texture.");
     return false;
   }
   onGPU = onGPU && vtkParticleComputeProgram::IsSupported(context, nullptr);
@@ -732,7 +739,8 @@ bool vtkParticleDensityVolume::EndParticles(
       vtkIdType count = 0;
       vtkNew<vtkMatrix4x4> bufferToModel;
       if (!generated ||
-        !item.second->GetParticleBuffers(positionBuffer, stride, radiusBuffer, count, bufferToModel))
+        !item.second->GetParticleBuffers(
+          positionBuffer, stride, radiusBuffer, count, bufferToModel))
       {
         generated = false; // not drawn yet (first frame): the CPU builds this one
         break;
@@ -795,8 +803,9 @@ void vtkParticleDensityVolume::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumResolution: " << this->MaximumResolution << "\n";
   os << indent << "MaximumVoxelCount: " << this->MaximumVoxelCount << "\n";
   os << indent << "DensityFactor: " << this->DensityFactor << "\n";
-  os << indent << "SplatMode: "
-     << (this->SplatMode == TRILINEAR_SPLAT ? "Trilinear" : "NearestVoxel") << "\n";
+  os << indent
+     << "SplatMode: " << (this->SplatMode == TRILINEAR_SPLAT ? "Trilinear" : "NearestVoxel")
+     << "\n";
   os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
      << this->Dimensions[2] << "\n";
   os << indent << "VoxelSize: " << this->VoxelSize << "\n";

@@ -168,9 +168,8 @@ public:
    * copies it to GetVolume() (for tests), CopyVolumeBufferToTexture() into a 3D texture.
    */
   bool ComputeOnGPU(vtkOpenGLRenderWindow* context, vtkOpenGLBufferObject* positionBuffer,
-    unsigned int positionStride, const double bufferToGrid[16],
-    vtkOpenGLBufferObject* radiusBuffer, double radiusScale, vtkIdType count,
-    bool accumulate = false);
+    unsigned int positionStride, const double bufferToGrid[16], vtkOpenGLBufferObject* radiusBuffer,
+    double radiusScale, vtkIdType count, bool accumulate = false);
   bool CopyVolumeBufferToTexture(vtkTextureObject* texture3D);
   vtkOpenGLBufferObject* GetVolumeBuffer();
   bool ReadVolumeBuffer();

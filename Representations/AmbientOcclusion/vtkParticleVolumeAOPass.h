@@ -35,7 +35,8 @@ class vtkParticleSphereMapper;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkParticleVolumeAOPass : public vtkParticleAmbientLightPass
+class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkParticleVolumeAOPass
+  : public vtkParticleAmbientLightPass
 {
 public:
   vtkTypeMacro(vtkParticleVolumeAOPass, vtkParticleAmbientLightPass);
@@ -92,7 +93,8 @@ protected:
    * The visible particle props of the render state and the state their volume depends on (the
    * mapper, its geometry time, radius scale, the actor's matrix, and what AppendPropState adds).
    */
-  void GatherParticleProps(const vtkRenderState* s, ParticleProps& props, std::vector<double>& state);
+  void GatherParticleProps(
+    const vtkRenderState* s, ParticleProps& props, std::vector<double>& state);
   virtual void AppendPropState(vtkActor*, vtkParticleSphereMapper*, std::vector<double>&) {}
 
   /**

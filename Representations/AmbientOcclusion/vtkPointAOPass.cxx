@@ -129,9 +129,8 @@ public:
 
   void ReleaseTextures(vtkWindow* w)
   {
-    for (vtkTextureObject* t :
-      { this->Colour.Get(), this->Normal.Get(), this->NormalDepth.Get(), this->Depth.Get(),
-        this->Occlusion.Get(), this->Blurred.Get() })
+    for (vtkTextureObject* t : { this->Colour.Get(), this->Normal.Get(), this->NormalDepth.Get(),
+           this->Depth.Get(), this->Occlusion.Get(), this->Blurred.Get() })
     {
       t->ReleaseGraphicsResources(w);
     }
@@ -150,7 +149,8 @@ public:
       return;
     }
     this->ReleaseTextures(context);
-    auto setUp = [&](vtkTextureObject* t) {
+    auto setUp = [&](vtkTextureObject* t)
+    {
       t->SetContext(context);
       t->SetMinificationFilter(vtkTextureObject::Nearest);
       t->SetMagnificationFilter(vtkTextureObject::Nearest);
@@ -197,8 +197,8 @@ public:
     this->Step = step;
   }
 
-  vtkOpenGLQuadHelper* Quad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& decl,
-    const std::string& impl)
+  vtkOpenGLQuadHelper* Quad(
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& decl, const std::string& impl)
   {
     if (!quad)
     {
@@ -284,8 +284,8 @@ bool vtkPointAOPass::PostReplaceShaderValues(
   const bool writesDepth = fragmentShader.find("gl_FragDepth =") != std::string::npos;
   code += writesDepth
     ? "#ifdef PR_NO_DEPTH_WRITE\n  gl_FragData[2] = vec4(-1.0, 0.0, 0.0, 1.0);\n#else\n"
-      "  gl_FragData[2] = vec4(clamp(gl_FragDepth, 0.0, 1.0) + " + key +
-      ", 0.0, 0.0, 1.0);\n#endif\n"
+      "  gl_FragData[2] = vec4(clamp(gl_FragDepth, 0.0, 1.0) + " +
+      key + ", 0.0, 0.0, 1.0);\n#endif\n"
     : "  gl_FragData[2] = vec4(gl_FragCoord.z + " + key + ", 0.0, 0.0, 1.0);\n";
   vtkShaderProgram::Substitute(fragmentShader, NormalTag, code, false);
   return true;
@@ -353,8 +353,8 @@ bool vtkPointAOPass::PrepareFrame(const vtkRenderState* s)
   {
     if (!internals.WarnedViewport)
     {
-      vtkWarningMacro(<< "PointAO needs a renderer that fills its window (this one covers "
-                      << part << "): it is drawn without ambient occlusion.");
+      vtkWarningMacro(<< "PointAO needs a renderer that fills its window (this one covers " << part
+                      << "): it is drawn without ambient occlusion.");
       internals.WarnedViewport = true;
     }
     return false;
@@ -571,9 +571,9 @@ void vtkPointAOPass::ComputeOcclusion()
   }
   vtkOpenGLState* ostate = internals.Context->GetState();
   internals.Timer.Begin(1);
-  vtkOpenGLQuadHelper* quad = internals.Quad(internals.OcclusionQuad,
-    vtkParticleShaders::Get("PointAO"),
-    "gl_FragData[0] = prPointAOTarget(ivec2(texCoord * vec2(prTargetSize)));\n");
+  vtkOpenGLQuadHelper* quad =
+    internals.Quad(internals.OcclusionQuad, vtkParticleShaders::Get("PointAO"),
+      "gl_FragData[0] = prPointAOTarget(ivec2(texCoord * vec2(prTargetSize)));\n");
   if (!quad)
   {
     vtkErrorMacro(<< "Could not build the PointAO shader: the image is drawn without it.");
@@ -737,9 +737,12 @@ void vtkPointAOPass::Composite()
     const int vertical[2] = { 0, 1 };
     program->SetUniform2i("prDirection", vertical);
     program->SetUniformf("prDepthTolerance", static_cast<float>(internals.BlurTolerance));
-    program->SetUniformf("prStrength", internals.Occlude ? static_cast<float>(this->Strength) : 0.0f);
+    program->SetUniformf(
+      "prStrength", internals.Occlude ? static_cast<float>(this->Strength) : 0.0f);
     program->SetUniformf("prBackgroundAlpha",
-      internals.Renderer->Transparent() ? 0.0f : static_cast<float>(internals.Renderer->GetBackgroundAlpha()));
+      internals.Renderer->Transparent()
+        ? 0.0f
+        : static_cast<float>(internals.Renderer->GetBackgroundAlpha()));
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(GL_ALWAYS);
     ostate->vtkglDepthMask(GL_TRUE);
@@ -791,8 +794,7 @@ void vtkPointAOPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     internals.FXAA->ReleaseGraphicsResources();
   }
-  internals.Timer.Release(
-    vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
+  internals.Timer.Release(vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context));
   this->Superclass::ReleaseGraphicsResources(w);
 }
 

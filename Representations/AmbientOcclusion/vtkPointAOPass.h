@@ -49,11 +49,11 @@
  *   projected size of a world unit): R_j = Radius * f(P) * (j^2 + j r0) / (L^2 + L r0), so the
  *   outermost level has radius Radius (like vtkSSAOPass's radius and the reference's AO
  *   distance) and r0 = BaseRadius shapes the spacing (r0 = 1: R_j = Radius / 3, Radius for
- *   L = 2; Radius * 2/12, 6/12, 12/12 for L = 3). The paper's depth term 1 / (1 - d), d = 1 at the far plane, is unbounded and,
- *   with window depth, depends on the clipping planes (a perspective scene's middle sits at
- *   d > 0.9); f(P) = 1 / (1 - d/2) with d the linear depth over the clipping range keeps its
- *   intent -- crisp local shading in front, wider shadows behind -- bounded to [1, 2].
- *   DepthScaling off gives f = 1 (the radius of the reference's AO everywhere).
+ *   L = 2; Radius * 2/12, 6/12, 12/12 for L = 3). The paper's depth term 1 / (1 - d), d = 1 at the
+ * far plane, is unbounded and, with window depth, depends on the clipping planes (a perspective
+ * scene's middle sits at d > 0.9); f(P) = 1 / (1 - d/2) with d the linear depth over the clipping
+ * range keeps its intent -- crisp local shading in front, wider shadows behind -- bounded to [1,
+ * 2]. DepthScaling off gives f = 1 (the radius of the reference's AO everywhere).
  * - Rays through the levels instead of independent points per level (LineAO's samples are
  *   points in the hemisphere): independent points measure how much of the hemisphere's volume
  *   is filled, not whether the directions are blocked.
@@ -105,7 +105,8 @@
 #include "vtkParticleAmbientLightPass.h"
 #include "vtkParticleRenderingAmbientOcclusionModule.h" // for export macro
 
-class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkPointAOPass : public vtkParticleAmbientLightPass
+class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkPointAOPass
+  : public vtkParticleAmbientLightPass
 {
 public:
   static vtkPointAOPass* New();

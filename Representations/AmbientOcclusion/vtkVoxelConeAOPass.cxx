@@ -2,8 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkDoubleArray.h"
-#include "vtkMath.h"
 #include "vtkInformationObjectBaseKey.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticleAmbientVolume.h"
@@ -130,8 +130,7 @@ void vtkVoxelConeAOPass::UpdateVolume(const vtkRenderState* s)
   }
   // the spheres' largest extent: the grid's longest axis holds it within one voxel
   const int* dims = volume->GetDimensions();
-  internals.SceneExtent =
-    volume->GetVoxelSize() * std::max(std::max(dims[0], dims[1]), dims[2]);
+  internals.SceneExtent = volume->GetVoxelSize() * std::max(std::max(dims[0], dims[1]), dims[2]);
   this->VolumeValid = true;
   ++this->NumberOfVolumeBuilds;
 }
@@ -158,8 +157,8 @@ bool vtkVoxelConeAOPass::PostReplaceShaderValues(std::string& vertexShader,
     return true;
   }
   // per sphere: the six axis results, traced once per sphere, carried to the fragments
-  static const char* const names[6] = { "prConePX", "prConeMX", "prConePY", "prConeMY",
-    "prConePZ", "prConeMZ" };
+  static const char* const names[6] = { "prConePX", "prConeMX", "prConePY", "prConeMY", "prConePZ",
+    "prConeMZ" };
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", "//PR::Include VoxelConeTrace");
   std::string impl = "vec4 prSphereCones[6];\n"
                      "  prTraceSphereCones(centerVC, radiusVC, prSphereCones);";
@@ -173,9 +172,10 @@ bool vtkVoxelConeAOPass::PostReplaceShaderValues(std::string& vertexShader,
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl", impl);
   hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "uniform mat3 prViewToWorld;");
   hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",
-    "vec4 prCones = prBlendSphereCones(" + blend + ");\n"
-    "    prAmbientOcclusion *= clamp(prCones.a, 0.0, 1.0);\n"
-    "    prAmbientLight += prAmbientScale * prCones.rgb;");
+    "vec4 prCones = prBlendSphereCones(" + blend +
+      ");\n"
+      "    prAmbientOcclusion *= clamp(prCones.a, 0.0, 1.0);\n"
+      "    prAmbientLight += prAmbientScale * prCones.rgb;");
   return true;
 }
 
@@ -278,8 +278,9 @@ bool vtkVoxelConeAOPass::GetAddsColouredAmbientLight()
 void vtkVoxelConeAOPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "RetrievalMode: "
-     << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere") << "\n";
+  os << indent
+     << "RetrievalMode: " << (this->RetrievalMode == PER_FRAGMENT ? "PerFragment" : "PerSphere")
+     << "\n";
   os << indent << "ConeCount: " << this->ConeCount << "\n";
   os << indent << "ConeAperture: " << this->ConeAperture << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";

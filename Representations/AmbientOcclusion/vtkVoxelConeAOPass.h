@@ -26,10 +26,10 @@
  * ConeLength times the largest extent of the particles (paper: 25 %).
  *
  * Like vtkDensityVolumeAOPass it is a vtkParticleVolumeAOPass (a render pass whose delegate
- * renders the scene); the mappers' //PR::AmbientOcclusion::Impl hook receives the cone tracing. The volume is
- * rebuilt only when the particles (positions, radii, colours, opacities), the set of particle
- * props, their matrices or the volume's settings change -- a camera move re-traces the cones
- * only (GetNumberOfVolumeBuilds counts). The voxelisation, the mips and the texture are made
+ * renders the scene); the mappers' //PR::AmbientOcclusion::Impl hook receives the cone tracing. The
+ * volume is rebuilt only when the particles (positions, radii, colours, opacities), the set of
+ * particle props, their matrices or the volume's settings change -- a camera move re-traces the
+ * cones only (GetNumberOfVolumeBuilds counts). The voxelisation, the mips and the texture are made
  * by compute shaders (OpenGL 4.3); in a context without them the volume says so once and builds
  * on the CPU (vtkSMPTools) and uploads -- the same picture, slower per time step.
  *
@@ -37,8 +37,8 @@
  * for the float pyramid it is built from; MaximumMemory bounds both with a warning).
  *
  * Accuracy against vtkParticleReferenceRenderer's transparency-aware ray-traced Eq. 5/7
- * (measured: Documentation/AmbientOcclusion.md). The cone length acts in whole steps (the diameter about doubles per
- * step with the default aperture).
+ * (measured: Documentation/AmbientOcclusion.md). The cone length acts in whole steps (the diameter
+ * about doubles per step with the default aperture).
  *
  * @sa vtkParticleAmbientVolume vtkDensityVolumeAOPass vtkTransparentSphereMapper
  */
@@ -50,7 +50,8 @@
 
 class vtkParticleAmbientVolume;
 
-class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkVoxelConeAOPass : public vtkParticleVolumeAOPass
+class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkVoxelConeAOPass
+  : public vtkParticleVolumeAOPass
 {
 public:
   static vtkVoxelConeAOPass* New();

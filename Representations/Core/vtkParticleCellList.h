@@ -19,7 +19,7 @@
 #define vtkParticleCellList_h
 
 #include "vtkParticleRenderingCoreModule.h" // for export macro
-#include "vtkType.h"                    // for vtkIdType
+#include "vtkType.h"                        // for vtkIdType
 
 #include <cstddef> // for size_t
 #include <cstdint> // for std::int32_t

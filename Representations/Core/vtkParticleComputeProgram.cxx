@@ -471,8 +471,8 @@ bool vtkParticleComputeProgram::UploadStorage(
     return false;
   }
   glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
-  glBufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset),
-    static_cast<GLsizeiptr>(bytes), data);
+  glBufferSubData(
+    GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
   return true;
 }
@@ -486,8 +486,8 @@ bool vtkParticleComputeProgram::DownloadStorage(
     return false;
   }
   glBindBuffer(GL_COPY_READ_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
-  glGetBufferSubData(GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset),
-    static_cast<GLsizeiptr>(bytes), data);
+  glGetBufferSubData(
+    GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
   return true;
 }

@@ -31,10 +31,10 @@
 
 #include "vtkObject.h"
 #include "vtkParticleRenderingCoreModule.h" // for export macro
-#include "vtkSmartPointer.h"            // for vtkSmartPointer
+#include "vtkSmartPointer.h"                // for vtkSmartPointer
 
 #include <cstddef> // for std::size_t
-#include <string> // for std::string
+#include <string>  // for std::string
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
@@ -118,9 +118,9 @@ public:
 
   /**
    * Compile and link the source in the context (once; again when the source changed, after
-   * ReleaseGraphicsResources() or in another context, the old context's program released). Compile and link logs are reported with vtkErrorMacro (with the
-   * numbered source on a compile error). Returns false on failure or when the context is below
-   * OpenGL 4.3.
+   * ReleaseGraphicsResources() or in another context, the old context's program released). Compile
+   * and link logs are reported with vtkErrorMacro (with the numbered source on a compile error).
+   * Returns false on failure or when the context is below OpenGL 4.3.
    */
   bool Build(vtkOpenGLRenderWindow* context);
 

@@ -23,7 +23,7 @@ vtkStandardNewMacro(vtkParticleDepthSort);
 
 namespace
 {
-constexpr std::uint64_t Tile = 1024;    // keys per work group (256 invocations x 4)
+constexpr std::uint64_t Tile = 1024;     // keys per work group (256 invocations x 4)
 constexpr std::uint64_t BitsTile = 4096; // keys per work group of RadixSortBits
 constexpr std::uint64_t Buckets = 16;
 
@@ -382,7 +382,8 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
   }
   this->LastNumberOfPasses = static_cast<int>(shifts.size());
   const bool reportProgress = this->HasObserver(vtkCommand::ProgressEvent) != 0;
-  auto progress = [&](double fraction) {
+  auto progress = [&](double fraction)
+  {
     if (reportProgress)
     {
       this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);

@@ -1,6 +1,7 @@
 /**
  * @class   vtkParticleDepthSort
- * @brief   GPU radix sort of float keys (e.g. particle depths) with their indices, in compute shaders
+ * @brief   GPU radix sort of float keys (e.g. particle depths) with their indices, in compute
+ * shaders
  *
  * Sorts count float32 keys ascending, stably, on the GPU and yields the permutation as a buffer
  * of uint32 indices that can be drawn directly (GL_ELEMENT_ARRAY_BUFFER, glDrawElements(GL_POINTS,
@@ -48,17 +49,17 @@
  * Cost: O(n) work and memory traffic: per pass one read of the keys (histogram) and one read and
  * write of keys and indices (scatter), plus 16 counts per 1024 keys. With count keys reserved the
  * GPU memory is 16 bytes per key (key and index buffers, scratch keys and indices) plus 0.4 %
- * for the counts (measured times: Documentation/Core.md). Multi-level rather than one work group looping over all
- * counts because at 1e8 keys there are 1.6e6 counts, which one work group would scan serially.
- * CoalescedWrites off: faster on llvmpipe (measured: Documentation/Core.md).
+ * for the counts (measured times: Documentation/Core.md). Multi-level rather than one work group
+ * looping over all counts because at 1e8 keys there are 1.6e6 counts, which one work group would
+ * scan serially. CoalescedWrites off: faster on llvmpipe (measured: Documentation/Core.md).
  *
  * Limits: every buffer must fit in one shader storage block, so count is at most about
  * GL_MAX_SHADER_STORAGE_BLOCK_SIZE / 4.0625 keys (the scratch key buffer also holds the counts):
  * 33 million keys with Mesa's 128 MiB, more than 1e8 with the 2 GiB of current NVIDIA and AMD
  * drivers. The number of tiles (count / 1024) must not exceed the dispatch limit
  * (GL_MAX_COMPUTE_WORK_GROUP_COUNT x times y, split as in vtkParticleComputeProgram). Reserve()
- * reports either limit. Requires OpenGL 4.3 (compute shaders); no subgroup operations; at most 19 KB
- * of shared memory and 256 invocations per work group.
+ * reports either limit. Requires OpenGL 4.3 (compute shaders); no subgroup operations; at most 19
+ * KB of shared memory and 256 invocations per work group.
  *
  * GL state: Sort() binds its four buffers to the indexed GL_SHADER_STORAGE_BUFFER binding points
  * 0 (keys), 1 (indices), 2 (scratch keys), 3 (scratch indices) through vtkParticleComputeProgram's

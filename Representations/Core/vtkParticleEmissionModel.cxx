@@ -76,7 +76,8 @@ double vtkParticleEmissionModel::MeanDiscOpacity(
   // shadow (s < s0 = sqrt(1 - f^2)) the integrand is smooth; inside it q = sqrt(s^2 - s0^2), the
   // core's half-chord, makes it smooth again (2 s ds = 2 q dq, q in [0, f]).
   const double maximum = vtkParticleEmissionModel::GetMaximumPathIntegral(densityModel, f);
-  auto opacity = [&](double half, double coreHalf) {
+  auto opacity = [&](double half, double coreHalf)
+  {
     const double u2 = std::max(0.0, 1.0 - half * half);
     double path = 0.0;
     if (densityModel == vtkParticleEmissionModel::CONSTANT_DENSITY)
@@ -95,8 +96,8 @@ double vtkParticleEmissionModel::MeanDiscOpacity(
   double result = Integrate([&](double s) { return opacity(s, 0.0) * 2.0 * s; }, 0.0, s0);
   if (f > 0.0)
   {
-    result += Integrate(
-      [&](double q) { return opacity(std::sqrt(s0 * s0 + q * q), q) * 2.0 * q; }, 0.0, f);
+    result +=
+      Integrate([&](double q) { return opacity(std::sqrt(s0 * s0 + q * q), q) * 2.0 * q; }, 0.0, f);
   }
   return result;
 }

@@ -43,10 +43,10 @@ struct CellBox
 // a cell seen from the camera this frame
 struct CellView
 {
-  double Nearest = 0.0;                  // smallest window depth of the box
-  int Rect[4] = { 0, 0, 0, 0 };          // block range x0, y0, x1, y1 (inclusive)
-  bool Unbounded = false;                // a corner at or behind the eye plane: always drawn
-  bool Outside = false;                  // outside the viewport or beyond the far plane
+  double Nearest = 0.0;         // smallest window depth of the box
+  int Rect[4] = { 0, 0, 0, 0 }; // block range x0, y0, x1, y1 (inclusive)
+  bool Unbounded = false;       // a corner at or behind the eye plane: always drawn
+  bool Outside = false;         // outside the viewport or beyond the far plane
 };
 
 // position i in double: float and double arrays without virtual calls, others through GetTuple
@@ -105,8 +105,8 @@ bool DepthAllowsCulling(vtkOpenGLState* ostate, int vp[4])
     else
     {
       GLint type = GL_NONE;
-      glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-        GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+      glGetFramebufferAttachmentParameteriv(
+        GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
       if (type != GL_NONE)
       {
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
@@ -178,24 +178,26 @@ void vtkParticleOcclusionCuller::vtkInternals::ReadDepth(
   this->BlockMax.assign(static_cast<size_t>(bw) * static_cast<size_t>(bh), 0.0f);
   const float* depth = this->Depth.data();
   float* blockMax = this->BlockMax.data();
-  vtkSMPTools::For(0, bh, [&](int begin, int end) {
-    for (int by = begin; by < end; ++by)
+  vtkSMPTools::For(0, bh,
+    [&](int begin, int end)
     {
-      float* row = blockMax + static_cast<size_t>(by) * bw;
-      const int y1 = std::min(h, (by + 1) * block);
-      for (int y = by * block; y < y1; ++y)
+      for (int by = begin; by < end; ++by)
       {
-        const float* line = depth + static_cast<size_t>(y) * w;
-        for (int x = 0; x < w; ++x)
+        float* row = blockMax + static_cast<size_t>(by) * bw;
+        const int y1 = std::min(h, (by + 1) * block);
+        for (int y = by * block; y < y1; ++y)
         {
-          // a NaN depth counts as the far plane (nothing hides behind it)
-          const float d = line[x] == line[x] ? line[x] : 1.0f;
-          float& m = row[x / block];
-          m = d > m ? d : m;
+          const float* line = depth + static_cast<size_t>(y) * w;
+          for (int x = 0; x < w; ++x)
+          {
+            // a NaN depth counts as the far plane (nothing hides behind it)
+            const float d = line[x] == line[x] ? line[x] : 1.0f;
+            float& m = row[x / block];
+            m = d > m ? d : m;
+          }
         }
       }
-    }
-  });
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -266,8 +268,8 @@ void vtkParticleOcclusionCuller::vtkInternals::UnbindMap(vtkShaderProgram* progr
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleOcclusionCuller::vtkInternals::ProjectCells(const double m[4][4],
-  const double wcdc[4][4], double radiusScaleWC, const int vp[4], int block)
+void vtkParticleOcclusionCuller::vtkInternals::ProjectCells(
+  const double m[4][4], const double wcdc[4][4], double radiusScaleWC, const int vp[4], int block)
 {
   // each cell's box in world coordinates (m: model -> world), grown by its largest radius,
   // projected (wcdc: world -> clip)
@@ -275,93 +277,95 @@ void vtkParticleOcclusionCuller::vtkInternals::ProjectCells(const double m[4][4]
   const int bh = (vp[3] + block - 1) / block;
   const int numCells = static_cast<int>(this->Cells.size());
   this->Views.resize(static_cast<size_t>(numCells));
-  vtkSMPTools::For(0, numCells, [&](int begin, int end) {
-    for (int c = begin; c < end; ++c)
+  vtkSMPTools::For(0, numCells,
+    [&](int begin, int end)
     {
-      const CellBox& cell = this->Cells[c];
-      CellView& view = this->Views[c];
-      view = CellView();
-      if (cell.Count == 0)
+      for (int c = begin; c < end; ++c)
       {
-        view.Outside = true;
-        continue;
-      }
-      double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-      double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const double p[3] = { (corner & 1) ? cell.Max[0] : cell.Min[0],
-          (corner & 2) ? cell.Max[1] : cell.Min[1], (corner & 4) ? cell.Max[2] : cell.Min[2] };
-        for (int k = 0; k < 3; ++k)
+        const CellBox& cell = this->Cells[c];
+        CellView& view = this->Views[c];
+        view = CellView();
+        if (cell.Count == 0)
         {
-          const double w = m[k][0] * p[0] + m[k][1] * p[1] + m[k][2] * p[2] + m[k][3];
-          lo[k] = std::min(lo[k], w);
-          hi[k] = std::max(hi[k], w);
-        }
-      }
-      const double grow = 1.001 * cell.MaxRadius * radiusScaleWC;
-      double x0 = VTK_DOUBLE_MAX, y0 = VTK_DOUBLE_MAX, x1 = VTK_DOUBLE_MIN, y1 = VTK_DOUBLE_MIN;
-      double zmin = VTK_DOUBLE_MAX;
-      double zmax = VTK_DOUBLE_MIN;
-      int behind = 0; // corners at or behind the eye plane
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const double p[3] = { (corner & 1) ? hi[0] + grow : lo[0] - grow,
-          (corner & 2) ? hi[1] + grow : lo[1] - grow, (corner & 4) ? hi[2] + grow : lo[2] - grow };
-        double clip[4];
-        for (int k = 0; k < 4; ++k)
-        {
-          clip[k] = wcdc[k][0] * p[0] + wcdc[k][1] * p[1] + wcdc[k][2] * p[2] + wcdc[k][3];
-        }
-        if (!std::isfinite(clip[3]))
-        {
-          behind = -8; // no usable projection: draw the cell
-          break;
-        }
-        if (!(clip[3] > 1e-12 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
-        {
-          ++behind; // at or behind the eye plane: no bounded projection
+          view.Outside = true;
           continue;
         }
-        const double nx = clip[0] / clip[3];
-        const double ny = clip[1] / clip[3];
-        const double nz = clip[2] / clip[3];
-        x0 = std::min(x0, nx);
-        x1 = std::max(x1, nx);
-        y0 = std::min(y0, ny);
-        y1 = std::max(y1, ny);
-        zmin = std::min(zmin, nz);
-        zmax = std::max(zmax, nz);
+        double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+        double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          const double p[3] = { (corner & 1) ? cell.Max[0] : cell.Min[0],
+            (corner & 2) ? cell.Max[1] : cell.Min[1], (corner & 4) ? cell.Max[2] : cell.Min[2] };
+          for (int k = 0; k < 3; ++k)
+          {
+            const double w = m[k][0] * p[0] + m[k][1] * p[1] + m[k][2] * p[2] + m[k][3];
+            lo[k] = std::min(lo[k], w);
+            hi[k] = std::max(hi[k], w);
+          }
+        }
+        const double grow = 1.001 * cell.MaxRadius * radiusScaleWC;
+        double x0 = VTK_DOUBLE_MAX, y0 = VTK_DOUBLE_MAX, x1 = VTK_DOUBLE_MIN, y1 = VTK_DOUBLE_MIN;
+        double zmin = VTK_DOUBLE_MAX;
+        double zmax = VTK_DOUBLE_MIN;
+        int behind = 0; // corners at or behind the eye plane
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          const double p[3] = { (corner & 1) ? hi[0] + grow : lo[0] - grow,
+            (corner & 2) ? hi[1] + grow : lo[1] - grow,
+            (corner & 4) ? hi[2] + grow : lo[2] - grow };
+          double clip[4];
+          for (int k = 0; k < 4; ++k)
+          {
+            clip[k] = wcdc[k][0] * p[0] + wcdc[k][1] * p[1] + wcdc[k][2] * p[2] + wcdc[k][3];
+          }
+          if (!std::isfinite(clip[3]))
+          {
+            behind = -8; // no usable projection: draw the cell
+            break;
+          }
+          if (!(clip[3] > 1e-12 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
+          {
+            ++behind; // at or behind the eye plane: no bounded projection
+            continue;
+          }
+          const double nx = clip[0] / clip[3];
+          const double ny = clip[1] / clip[3];
+          const double nz = clip[2] / clip[3];
+          x0 = std::min(x0, nx);
+          x1 = std::max(x1, nx);
+          y0 = std::min(y0, ny);
+          y1 = std::max(y1, ny);
+          zmin = std::min(zmin, nz);
+          zmax = std::max(zmax, nz);
+        }
+        if (behind == 8)
+        {
+          view.Outside = true; // the whole box behind the eye (perspective): never seen
+          continue;
+        }
+        if (behind != 0)
+        {
+          view.Unbounded = true; // straddles the eye plane: drawn first, never culled
+          view.Nearest = -1.0;
+          continue;
+        }
+        if (x1 < -1.0 || x0 > 1.0 || y1 < -1.0 || y0 > 1.0 || zmin > 1.0 || zmax < -1.0)
+        {
+          view.Outside = true;
+          continue;
+        }
+        view.Nearest = 0.5 * (std::max(zmin, -1.0) + 1.0);
+        // pixels of the viewport, grown by one, as blocks
+        const double px0 = (x0 + 1.0) * 0.5 * vp[2] - 1.0;
+        const double px1 = (x1 + 1.0) * 0.5 * vp[2] + 1.0;
+        const double py0 = (y0 + 1.0) * 0.5 * vp[3] - 1.0;
+        const double py1 = (y1 + 1.0) * 0.5 * vp[3] + 1.0;
+        view.Rect[0] = static_cast<int>(std::max(0.0, std::floor(px0 / block)));
+        view.Rect[1] = static_cast<int>(std::max(0.0, std::floor(py0 / block)));
+        view.Rect[2] = static_cast<int>(std::min(bw - 1.0, std::floor(px1 / block)));
+        view.Rect[3] = static_cast<int>(std::min(bh - 1.0, std::floor(py1 / block)));
       }
-      if (behind == 8)
-      {
-        view.Outside = true; // the whole box behind the eye (perspective): never seen
-        continue;
-      }
-      if (behind != 0)
-      {
-        view.Unbounded = true; // straddles the eye plane: drawn first, never culled
-        view.Nearest = -1.0;
-        continue;
-      }
-      if (x1 < -1.0 || x0 > 1.0 || y1 < -1.0 || y0 > 1.0 || zmin > 1.0 || zmax < -1.0)
-      {
-        view.Outside = true;
-        continue;
-      }
-      view.Nearest = 0.5 * (std::max(zmin, -1.0) + 1.0);
-      // pixels of the viewport, grown by one, as blocks
-      const double px0 = (x0 + 1.0) * 0.5 * vp[2] - 1.0;
-      const double px1 = (x1 + 1.0) * 0.5 * vp[2] + 1.0;
-      const double py0 = (y0 + 1.0) * 0.5 * vp[3] - 1.0;
-      const double py1 = (y1 + 1.0) * 0.5 * vp[3] + 1.0;
-      view.Rect[0] = static_cast<int>(std::max(0.0, std::floor(px0 / block)));
-      view.Rect[1] = static_cast<int>(std::max(0.0, std::floor(py0 / block)));
-      view.Rect[2] = static_cast<int>(std::min(bw - 1.0, std::floor(px1 / block)));
-      view.Rect[3] = static_cast<int>(std::min(bh - 1.0, std::floor(py1 / block)));
-    }
-  });
-
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -546,23 +550,26 @@ bool vtkParticleOcclusionCuller::BuildCells(vtkRenderer* ren, vtkDataArray* posi
   auto position = [positions](vtkIdType i, double p[3]) { GetPosition(positions, i, p); };
   auto valid = [&](vtkIdType i, const double p[3]) { return IsDrawn(radii[i], p); };
   std::vector<int> cellOf(static_cast<size_t>(count), -1);
-  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double p[3];
-      position(i, p);
-      if (!valid(i, p))
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        continue;
+        double p[3];
+        position(i, p);
+        if (!valid(i, p))
+        {
+          continue;
+        }
+        int c[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          c[k] =
+            std::min(dims[k] - 1, std::max(0, static_cast<int>((p[k] - bounds[2 * k]) * scale[k])));
+        }
+        cellOf[i] = c[0] + dims[0] * (c[1] + dims[1] * c[2]);
       }
-      int c[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        c[k] = std::min(dims[k] - 1, std::max(0, static_cast<int>((p[k] - bounds[2 * k]) * scale[k])));
-      }
-      cellOf[i] = c[0] + dims[0] * (c[1] + dims[1] * c[2]);
-    }
-  });
+    });
 
   // counting sort into cell order, cell boxes
   internals.Cells.assign(static_cast<size_t>(numCells), CellBox());
@@ -635,7 +642,8 @@ bool vtkParticleOcclusionCuller::Draw(vtkRenderer* ren, vtkShaderProgram* progra
   const int numCells = static_cast<int>(internals.Cells.size());
   vtkOpenGLRenderWindow* ctx = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
 
-  auto plainDraw = [&]() {
+  auto plainDraw = [&]()
+  {
     this->DrawAll(ren, program, internals.TotalCount);
     return false;
   };
@@ -682,9 +690,8 @@ bool vtkParticleOcclusionCuller::Draw(vtkRenderer* ren, vtkShaderProgram* progra
       internals.Order.push_back(c);
     }
   }
-  std::sort(internals.Order.begin(), internals.Order.end(), [&](int a, int b) {
-    return internals.Views[a].Nearest < internals.Views[b].Nearest;
-  });
+  std::sort(internals.Order.begin(), internals.Order.end(),
+    [&](int a, int b) { return internals.Views[a].Nearest < internals.Views[b].Nearest; });
 
   internals.Indices->Bind(); // the element array of the caller's vertex array
   double cullSeconds = vtkTimerLog::GetUniversalTime() - start;
@@ -774,7 +781,8 @@ void vtkParticleOcclusionCuller::EndCount()
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleOcclusionCuller::DrawAll(vtkRenderer* ren, vtkShaderProgram* program, vtkIdType count)
+void vtkParticleOcclusionCuller::DrawAll(
+  vtkRenderer* ren, vtkShaderProgram* program, vtkIdType count)
 {
   vtkInternals& internals = *this->Internals;
   this->LastNumberOfDrawnParticles = count;

@@ -114,10 +114,10 @@ public:
    * cells are dropped as well, and switches the test off again at the end. wcdcTransposed: the
    * world-to-clip matrix the program's camera uniforms were made from, as vtkOpenGLCamera's
    * GetKeyMatrices() returns it (transposed); the caller keeps it from the moment it set them
-   * (the camera's cached matrices can have been recomputed for something else since). mcwc: the actor's
-   * model-to-world matrix (row-major, points as columns); radiusScaleWC: the model-to-world factor
-   * of the radii (the shader's radius scale). Returns true when the cells were culled, false when
-   * everything was drawn with one plain draw (see the class description).
+   * (the camera's cached matrices can have been recomputed for something else since). mcwc: the
+   * actor's model-to-world matrix (row-major, points as columns); radiusScaleWC: the model-to-world
+   * factor of the radii (the shader's radius scale). Returns true when the cells were culled, false
+   * when everything was drawn with one plain draw (see the class description).
    */
   bool Draw(vtkRenderer* ren, vtkShaderProgram* program, vtkMatrix4x4* wcdcTransposed,
     vtkMatrix4x4* mcwc, double radiusScaleWC);

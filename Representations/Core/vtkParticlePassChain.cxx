@@ -142,9 +142,8 @@ void vtkParticlePassChain::LinkPasses()
   auto& passes = this->Internals->Passes;
   for (size_t i = 0; i < passes.size(); ++i)
   {
-    vtkRenderPass* next = i + 1 < passes.size()
-      ? static_cast<vtkRenderPass*>(passes[i + 1].Get())
-      : this->InnerPass;
+    vtkRenderPass* next =
+      i + 1 < passes.size() ? static_cast<vtkRenderPass*>(passes[i + 1].Get()) : this->InnerPass;
     if (passes[i]->GetDelegatePass() != next)
     {
       passes[i]->SetDelegatePass(next);
@@ -203,7 +202,6 @@ void vtkParticlePassChain::PrintSelf(ostream& os, vtkIndent indent)
   int i = 0;
   for (auto& pass : this->Internals->Passes)
   {
-    os << indent << "Pass " << i++ << ": " << pass->GetClassName() << " (" << pass.Get()
-       << ")\n";
+    os << indent << "Pass " << i++ << ": " << pass->GetClassName() << " (" << pass.Get() << ")\n";
   }
 }

@@ -45,10 +45,11 @@ bool vtkParticleShaderHooks::Insert(Stage stage, const std::string& hook, const 
   const std::string key = std::string(StageName(stage)) + " " + hook;
   if (this->Warned.insert(key).second && this->Owner)
   {
-    vtkWarningWithObjectMacro(this->Owner,
-      << "The " << StageName(stage) << " shader being built has no hook " << hook
-      << (source ? "" : " (no shader: Begin() was not called)") << "; " << this->Owner->GetClassName()
-      << " cannot add its code there, and its effect is missing from the picture.");
+    vtkWarningWithObjectMacro(
+      this->Owner, << "The " << StageName(stage) << " shader being built has no hook " << hook
+                   << (source ? "" : " (no shader: Begin() was not called)") << "; "
+                   << this->Owner->GetClassName()
+                   << " cannot add its code there, and its effect is missing from the picture.");
   }
   return false;
 }

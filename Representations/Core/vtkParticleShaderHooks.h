@@ -13,16 +13,21 @@
  * | stage    | hook                        | where, and what it may do |
  * |----------|-----------------------------|---------------------------|
  * | vertex   | //PR::Sphere::Dec           | before main(): uniforms, inputs, outputs, functions |
- * | vertex   | //PR::Sphere::Impl          | end of main(), once per sphere: centerVC, radiusVC (view coordinates), vertexMC, particleIdVSOutput set; write per-sphere outputs |
- * | geometry | //PR::Sphere::Dec           | before main() |
- * | geometry | //PR::Sphere::Cull          | before the billboard is emitted: `return` draws nothing for this sphere (centerVC, radiusVC) |
- * | geometry | //PR::Sphere::Impl          | per emitted vertex: copy per-sphere outputs |
- * | fragment | //PR::Sphere::Dec           | before main() (after RaySphere.glsl) |
- * | fragment | //PR::Surface::Impl         | after the ray-sphere intersection: may change prHit, prT0, prT1 (another surface inside the sphere, e.g. metaballs) |
- * | fragment | //PR::Coverage::Impl        | just before a miss is discarded: prHit says whether the ray meets the surface (sub-pixel coverage) |
- * | fragment | //PR::Surface::Normal       | after the visible point: vertexVC, normalVCVSOutput (unit, facing the viewer), prInside; may replace the normal |
- * | fragment | //PR::AmbientOcclusion::Impl| after lighting: multiply prAmbientOcclusion (visibility in [0, 1]; sources compose) and add to prAmbientLight |
- * | fragment | //PR::Shading::Impl         | after gl_FragData[0] = vec4(prAmbientOcclusion * prSurfaceColor + prAmbientLight, opacity): replace or discard the result |
+ * | vertex   | //PR::Sphere::Impl          | end of main(), once per sphere: centerVC, radiusVC
+ * (view coordinates), vertexMC, particleIdVSOutput set; write per-sphere outputs | | geometry |
+ * //PR::Sphere::Dec           | before main() | | geometry | //PR::Sphere::Cull          | before
+ * the billboard is emitted: `return` draws nothing for this sphere (centerVC, radiusVC) | |
+ * geometry | //PR::Sphere::Impl          | per emitted vertex: copy per-sphere outputs | | fragment
+ * | //PR::Sphere::Dec           | before main() (after RaySphere.glsl) | | fragment |
+ * //PR::Surface::Impl         | after the ray-sphere intersection: may change prHit, prT0, prT1
+ * (another surface inside the sphere, e.g. metaballs) | | fragment | //PR::Coverage::Impl        |
+ * just before a miss is discarded: prHit says whether the ray meets the surface (sub-pixel
+ * coverage) | | fragment | //PR::Surface::Normal       | after the visible point: vertexVC,
+ * normalVCVSOutput (unit, facing the viewer), prInside; may replace the normal | | fragment |
+ * //PR::AmbientOcclusion::Impl| after lighting: multiply prAmbientOcclusion (visibility in [0, 1];
+ * sources compose) and add to prAmbientLight | | fragment | //PR::Shading::Impl         | after
+ * gl_FragData[0] = vec4(prAmbientOcclusion * prSurfaceColor + prAmbientLight, opacity): replace or
+ * discard the result |
  *
  * (//PR::Lighting::Impl, before //PR::AmbientOcclusion::Impl, is the mapper's own: it writes
  * prSurfaceColor. VTK's //VTK::Light::Impl comes after //PR::Shading::Impl, so VTK passes and
@@ -53,8 +58,8 @@
  * then Insert() / AddSphereVarying().
  * @code
  *   this->Hooks.Begin(vertexShader, geometryShader, fragmentShader);
- *   this->Hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec", "uniform float f;\n");
- *   this->Hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::AmbientOcclusion::Impl",
+ *   this->Hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec", "uniform float
+ * f;\n"); this->Hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::AmbientOcclusion::Impl",
  *     "prAmbientOcclusion *= f;\n");
  * @endcode
  *

@@ -8,8 +8,8 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkLightingMapPass.h"
 #include "vtkMath.h"
@@ -31,9 +31,9 @@
 #include "vtkProperty.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
 #include "vtkTimerLog.h"
 #include "vtkTransform.h"
-#include "vtkShaderProgram.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkParticleCompat.h"
@@ -50,7 +50,7 @@ class vtkParticleSphereMapper::vtkInternals
 {
 public:
   // Sanitised per-particle data, rebuilt when the input or the radius settings change.
-  vtkNew<vtkFloatArray> Radii;     // MC radius, 0 for skipped particles
+  vtkNew<vtkFloatArray> Radii; // MC radius, 0 for skipped particles
   // The positions uploaded: the input's own point array when every particle is valid (no copy),
   // else a copy in the input's precision with the skipped particles moved onto a valid one. The
   // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
@@ -66,7 +66,7 @@ public:
   vtkTimeStamp CullerBuildTime;
   double CenterBounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MaxRadius = 0.0;
-  double MinRadius = 0.0; // smallest drawn radius (MC)
+  double MinRadius = 0.0;       // smallest drawn radius (MC)
   bool FocalPointShift = false; // positions uploaded relative to the camera's focal point
   bool CentreShift = false;     // positions uploaded relative to their bounds' centre
   std::string LastShiftWarning;
@@ -190,49 +190,51 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     const double constantRadius = this->Radius;
 
     vtkSMPThreadLocal<ParticleSummary> local;
-    vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
-      ParticleSummary& s = local.Local();
-      double p[3];
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0, numPts,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        points->GetTuple(i, p);
-        const double r = radiusArray ? radiusArray->GetComponent(i, 0) : constantRadius;
-        const bool finitePosition =
-          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-        const bool goodPosition = finitePosition && std::abs(p[0]) < 1e37 &&
-          std::abs(p[1]) < 1e37 && std::abs(p[2]) < 1e37;
-        const bool goodRadius = std::isfinite(r) && r > 0.0 && r < 1e37;
-        if (!goodPosition)
+        ParticleSummary& s = local.Local();
+        double p[3];
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          ++s.BadPosition;
-          s.HugePosition += finitePosition ? 1 : 0;
-        }
-        else if (!goodRadius)
-        {
-          ++s.BadRadius;
-          s.HugeRadius += (std::isfinite(r) && r > 0.0) ? 1 : 0;
-        }
-        if (goodPosition && goodRadius)
-        {
-          radii[i] = static_cast<float>(r);
-          for (int k = 0; k < 3; ++k)
+          points->GetTuple(i, p);
+          const double r = radiusArray ? radiusArray->GetComponent(i, 0) : constantRadius;
+          const bool finitePosition =
+            std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+          const bool goodPosition = finitePosition && std::abs(p[0]) < 1e37 &&
+            std::abs(p[1]) < 1e37 && std::abs(p[2]) < 1e37;
+          const bool goodRadius = std::isfinite(r) && r > 0.0 && r < 1e37;
+          if (!goodPosition)
           {
-            s.Bounds[2 * k] = std::min(s.Bounds[2 * k], p[k]);
-            s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
+            ++s.BadPosition;
+            s.HugePosition += finitePosition ? 1 : 0;
           }
-          s.MaxRadius = std::max(s.MaxRadius, r);
-          s.MinRadius = std::min(s.MinRadius, r);
-          if (s.FirstValid < 0 || i < s.FirstValid)
+          else if (!goodRadius)
           {
-            s.FirstValid = i;
+            ++s.BadRadius;
+            s.HugeRadius += (std::isfinite(r) && r > 0.0) ? 1 : 0;
+          }
+          if (goodPosition && goodRadius)
+          {
+            radii[i] = static_cast<float>(r);
+            for (int k = 0; k < 3; ++k)
+            {
+              s.Bounds[2 * k] = std::min(s.Bounds[2 * k], p[k]);
+              s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
+            }
+            s.MaxRadius = std::max(s.MaxRadius, r);
+            s.MinRadius = std::min(s.MinRadius, r);
+            if (s.FirstValid < 0 || i < s.FirstValid)
+            {
+              s.FirstValid = i;
+            }
+          }
+          else
+          {
+            radii[i] = 0.0f;
           }
         }
-        else
-        {
-          radii[i] = 0.0f;
-        }
-      }
-    });
+      });
 
     // written through a raw pointer: tell the VBO cache the values are new
     internals.Radii->Modified();
@@ -275,21 +277,23 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
       {
         points->GetTuple(total.FirstValid, fill);
       }
-      vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
-        double p[3];
-        for (vtkIdType i = begin; i < end; ++i)
+      vtkSMPTools::For(0, numPts,
+        [&](vtkIdType begin, vtkIdType end)
         {
-          if (radii[i] == 0.0f)
+          double p[3];
+          for (vtkIdType i = begin; i < end; ++i)
           {
-            copy->SetTuple(i, fill);
+            if (radii[i] == 0.0f)
+            {
+              copy->SetTuple(i, fill);
+            }
+            else
+            {
+              points->GetTuple(i, p);
+              copy->SetTuple(i, p);
+            }
           }
-          else
-          {
-            points->GetTuple(i, p);
-            copy->SetTuple(i, p);
-          }
-        }
-      });
+        });
       internals.Positions = copy;
     }
     // (1e37: beyond it the GPU's single precision overflows in the squares of the intersection)
@@ -422,8 +426,8 @@ vtkDataArray* vtkParticleSphereMapper::GetScalarPointArray(vtkPolyData* input, c
   }
   else if (!array)
   {
-    warnings << role << " array '" << name << "' is not numeric ("
-             << abstractArray->GetClassName() << "): " << fallback << ". ";
+    warnings << role << " array '" << name << "' is not numeric (" << abstractArray->GetClassName()
+             << "): " << fallback << ". ";
   }
   else if (array->GetNumberOfComponents() != 1)
   {
@@ -544,17 +548,22 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
   // would otherwise use gl_PrimitiveID plus the offset of a polygon mapper's cell batches).
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   // (times the stride when only every k-th particle is drawn: the index of the input point)
-  vtkShaderProgram::Substitute(fs, "gl_PrimitiveID", "(particleIdVSOutput * particleIdStride)", true);
+  vtkShaderProgram::Substitute(
+    fs, "gl_PrimitiveID", "(particleIdVSOutput * particleIdStride)", true);
   // A particle's colour is one value for its whole imposter: pass VTK's scalar colour flat, not
   // interpolated (interpolating a constant rounds, e.g. an alpha of 1 to 1 - 6e-8).
-  vtkShaderProgram::Substitute(fs, "in vec4 vertexColorVSOutput;", "flat in vec4 vertexColorVSOutput;");
+  vtkShaderProgram::Substitute(
+    fs, "in vec4 vertexColorVSOutput;", "flat in vec4 vertexColorVSOutput;");
   shaders[vtkShader::Fragment]->SetSource(fs);
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vs, "out vec4 vertexColorVSOutput;", "flat out vec4 vertexColorVSOutput;");
+  vtkShaderProgram::Substitute(
+    vs, "out vec4 vertexColorVSOutput;", "flat out vec4 vertexColorVSOutput;");
   shaders[vtkShader::Vertex]->SetSource(vs);
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
-  vtkShaderProgram::Substitute(gs, "in vec4 vertexColorVSOutput[];", "flat in vec4 vertexColorVSOutput[];");
-  vtkShaderProgram::Substitute(gs, "out vec4 vertexColorGSOutput;", "flat out vec4 vertexColorGSOutput;");
+  vtkShaderProgram::Substitute(
+    gs, "in vec4 vertexColorVSOutput[];", "flat in vec4 vertexColorVSOutput[];");
+  vtkShaderProgram::Substitute(
+    gs, "out vec4 vertexColorGSOutput;", "flat out vec4 vertexColorGSOutput;");
   // the per-sphere occlusion test, only where the culler draws this program
   if (this->GetOcclusionCullingCompiled(ren))
   {
@@ -785,8 +794,8 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
     float hi[3];
     for (int k = 0; k < 3; ++k)
     {
-      const double a = modelToBuffer->GetElement(k, k) * this->ClipBox[2 * k] +
-        modelToBuffer->GetElement(k, 3);
+      const double a =
+        modelToBuffer->GetElement(k, k) * this->ClipBox[2 * k] + modelToBuffer->GetElement(k, 3);
       const double b = modelToBuffer->GetElement(k, k) * this->ClipBox[2 * k + 1] +
         modelToBuffer->GetElement(k, 3);
       lo[k] = static_cast<float>(std::min(a, b));
@@ -920,7 +929,8 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   internals.Stride = 1;
   if (numPts > this->MaximumNumberOfParticles)
   {
-    internals.Stride = (numPts + this->MaximumNumberOfParticles - 1) / this->MaximumNumberOfParticles;
+    internals.Stride =
+      (numPts + this->MaximumNumberOfParticles - 1) / this->MaximumNumberOfParticles;
   }
   internals.StrideArrays.clear();
   vtkIdType uploaded = numPts;
@@ -929,7 +939,8 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   {
     uploaded = (numPts + internals.Stride - 1) / internals.Stride;
     std::ostringstream text;
-    text << numPts << " particles exceed MaximumNumberOfParticles (" << this->MaximumNumberOfParticles
+    text << numPts << " particles exceed MaximumNumberOfParticles ("
+         << this->MaximumNumberOfParticles
          << "; vertex buffers beyond 2 GiB fail or crash on common OpenGL drivers, llvmpipe "
             "among them): drawing one particle in "
          << internals.Stride << " (" << uploaded << " of " << numPts << ").";
@@ -1157,8 +1168,9 @@ void vtkParticleSphereMapper::UpdateFocalPointShift()
     internals.CentreShift = false;
   }
   std::string warning;
-  if (needed && (this->ShiftScaleMethod == vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE ||
-                  internals.FocalPointShift))
+  if (needed &&
+    (this->ShiftScaleMethod == vtkOpenGLVertexBufferObject::AUTO_SHIFT_SCALE ||
+      internals.FocalPointShift))
   {
     // (set directly: the mapper's modification would re-upload every frame)
     this->ShiftScaleMethod = vtkOpenGLVertexBufferObject::FOCAL_POINT_SHIFT_SCALE;
@@ -1248,12 +1260,14 @@ vtkDataArray* vtkParticleSphereMapper::StrideForUpload(vtkDataArray* array)
   const int size = array->GetDataTypeSize() * components;
   const char* from = static_cast<const char*>(array->GetVoidPointer(0));
   char* to = static_cast<char*>(subset->GetVoidPointer(0));
-  vtkSMPTools::For(0, m, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, m,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      std::copy(from + i * stride * size, from + (i * stride + 1) * size, to + i * size);
-    }
-  });
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        std::copy(from + i * stride * size, from + (i * stride + 1) * size, to + i * size);
+      }
+    });
   internals.StrideArrays.push_back(subset);
   return subset;
 }

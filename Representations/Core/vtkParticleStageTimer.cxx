@@ -27,8 +27,7 @@ void vtkParticleStageTimer::StartFrame(bool on)
 //------------------------------------------------------------------------------
 void vtkParticleStageTimer::Begin(int stage)
 {
-  if (!this->On || this->Running || stage < 0 ||
-    stage >= static_cast<int>(this->Queries.size()))
+  if (!this->On || this->Running || stage < 0 || stage >= static_cast<int>(this->Queries.size()))
   {
     return;
   }

@@ -26,8 +26,8 @@ bool vtkParticleViewport::FillsTarget(const vtkRenderState* s, std::string& what
     return true;
   }
   std::ostringstream text;
-  text << width << " x " << height << " pixels at (" << x0 << ", " << y0 << ") of "
-       << windowSize[0] << " x " << windowSize[1];
+  text << width << " x " << height << " pixels at (" << x0 << ", " << y0 << ") of " << windowSize[0]
+       << " x " << windowSize[1];
   what = text.str();
   return false;
 }

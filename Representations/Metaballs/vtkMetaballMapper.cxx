@@ -12,12 +12,12 @@
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
-#include "vtkParticleOcclusionCuller.h"
-#include "vtkTextureObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkParticleCellList.h"
+#include "vtkParticleCompat.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleMemory.h"
+#include "vtkParticleOcclusionCuller.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkPolyData.h"
@@ -25,10 +25,10 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
-#include "vtkParticleCompat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -107,17 +107,20 @@ public:
   // the vertex attribute metaballMC: 0 isolated, n > 0 the length of a complete list, -1 a list
   // that was cut
   vtkNew<vtkFloatArray> Flags;
-  vtkNew<vtkFloatArray> NoFlags;    // all 0: without shader storage every particle is a sphere
+  vtkNew<vtkFloatArray> NoFlags; // all 0: without shader storage every particle is a sphere
   std::vector<float> CullingRadii;
   std::string LastListWarning;
   std::string LastSupportWarning;
 
   // the lists on the GPU
   vtkWeakPointer<vtkOpenGLRenderWindow> Context;
-  vtkSmartPointer<vtkOpenGLBufferObject> RangeBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  vtkSmartPointer<vtkOpenGLBufferObject> EntryBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> RangeBuffer =
+    vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> EntryBuffer =
+    vtkSmartPointer<vtkOpenGLBufferObject>::New();
   vtkSmartPointer<vtkOpenGLBufferObject> IdBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  vtkSmartPointer<vtkOpenGLBufferObject> ColorBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> ColorBuffer =
+    vtkSmartPointer<vtkOpenGLBufferObject>::New();
   bool ListsUploaded = false;
   bool Supported = true; // the context has shader storage buffers (OpenGL 4.3)
 
@@ -219,8 +222,8 @@ bool vtkMetaballMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor
   }
   // the lists (and the per-particle flags) also depend on these
   const vtkInternals::Signature& built = this->Internals->Built;
-  return this->Internals->BuiltMethod != this->Method || !this->Internals->HaveLists || built.Scale != std::abs(this->RadiusScaleFactor) ||
-    built.Influence != this->InfluenceFactor ||
+  return this->Internals->BuiltMethod != this->Method || !this->Internals->HaveLists ||
+    built.Scale != std::abs(this->RadiusScaleFactor) || built.Influence != this->InfluenceFactor ||
     built.MaximumNeighbors != this->MaximumNumberOfNeighbors ||
     built.MaximumMemory != this->MaximumListMemory;
 }
@@ -282,12 +285,14 @@ void vtkMetaballMapper::UpdateNeighborLists()
   // are never neighbours, nor binned).
   std::vector<double> copy(3 * static_cast<size_t>(n));
   double* xyz = copy.data();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      positions->GetTuple(i, xyz + 3 * i);
-    }
-  });
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        positions->GetTuple(i, xyz + 3 * i);
+      }
+    });
 
   // Candidates: the centres within k (R_i + R_max) of each particle (every particle whose
   // influence sphere can overlap its own), from cells of edge 2 k R_max. A sample of the
@@ -329,47 +334,51 @@ void vtkMetaballMapper::UpdateNeighborLists()
     vtkIdType Truncated = 0;
   };
   vtkSMPThreadLocal<std::vector<Chunk>> chunks;
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    Chunk chunk;
-    chunk.Begin = begin;
-    chunk.Counts.resize(static_cast<size_t>(end - begin));
-    std::vector<std::pair<double, std::int32_t>> overlapping;
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      std::int32_t count = 0;
-      if (r[i] > 0.0f)
+      Chunk chunk;
+      chunk.Begin = begin;
+      chunk.Counts.resize(static_cast<size_t>(end - begin));
+      std::vector<std::pair<double, std::int32_t>> overlapping;
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        const double ri = r[i] * scale;
-        const double q = radiusFactor * k * (ri + rMax);
-        overlapping.clear();
-        cells.ForEachCandidate(i, [&](vtkIdType j, double d2) {
-          const double reach = k * (ri + r[j] * scale);
-          if (d2 < reach * reach && d2 < q * q)
+        std::int32_t count = 0;
+        if (r[i] > 0.0f)
+        {
+          const double ri = r[i] * scale;
+          const double q = radiusFactor * k * (ri + rMax);
+          overlapping.clear();
+          cells.ForEachCandidate(i,
+            [&](vtkIdType j, double d2)
+            {
+              const double reach = k * (ri + r[j] * scale);
+              if (d2 < reach * reach && d2 < q * q)
+              {
+                overlapping.emplace_back(d2, static_cast<std::int32_t>(j));
+              }
+            });
+          // the nearest M (by centre distance), nearest first
+          const size_t keep = std::min<size_t>(overlapping.size(), maxNeighbors);
+          if (keep < overlapping.size())
           {
-            overlapping.emplace_back(d2, static_cast<std::int32_t>(j));
+            std::nth_element(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
           }
-        });
-        // the nearest M (by centre distance), nearest first
-        const size_t keep = std::min<size_t>(overlapping.size(), maxNeighbors);
-        if (keep < overlapping.size())
-        {
-          std::nth_element(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
+          std::sort(overlapping.begin(), overlapping.begin() + keep);
+          for (size_t m = 0; m < keep; ++m)
+          {
+            chunk.Neighbors.push_back(overlapping[m].second);
+          }
+          count = static_cast<std::int32_t>(keep);
+          if (overlapping.size() > keep || radiusFactor < 1.0)
+          {
+            ++chunk.Truncated;
+          }
         }
-        std::sort(overlapping.begin(), overlapping.begin() + keep);
-        for (size_t m = 0; m < keep; ++m)
-        {
-          chunk.Neighbors.push_back(overlapping[m].second);
-        }
-        count = static_cast<std::int32_t>(keep);
-        if (overlapping.size() > keep || radiusFactor < 1.0)
-        {
-          ++chunk.Truncated;
-        }
+        chunk.Counts[i - begin] = count;
       }
-      chunk.Counts[i - begin] = count;
-    }
-    chunks.Local().push_back(std::move(chunk));
-  });
+      chunks.Local().push_back(std::move(chunk));
+    });
 
   std::vector<Chunk*> ordered;
   for (std::vector<Chunk>& local : chunks)
@@ -402,7 +411,8 @@ void vtkMetaballMapper::UpdateNeighborLists()
   {
     const double entries =
       std::min(2147483647.0, std::max(0.0, (budget - n * ParticleBytes) / EntryBytes));
-    cap = static_cast<std::int32_t>(std::max(0.0, std::floor(entries / std::max<vtkIdType>(1, listed))));
+    cap = static_cast<std::int32_t>(
+      std::max(0.0, std::floor(entries / std::max<vtkIdType>(1, listed))));
     warning << "The neighbour lists of " << n << " particles would take "
             << (n * ParticleBytes + total * EntryBytes) / 1048576.0
             << " MiB, more than MaximumListMemory (" << this->MaximumListMemory
@@ -435,40 +445,42 @@ void vtkMetaballMapper::UpdateNeighborLists()
   internals.Entries.resize(4 * static_cast<size_t>(entries));
   internals.Ids.resize(static_cast<size_t>(entries));
   float* flags = internals.Flags->GetPointer(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(ordered.size()), [&](vtkIdType cb, vtkIdType ce) {
-    for (vtkIdType c = cb; c < ce; ++c)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ordered.size()),
+    [&](vtkIdType cb, vtkIdType ce)
     {
-      const Chunk& chunk = *ordered[c];
-      vtkIdType out = chunkOffsets[c];
-      size_t in = 0;
-      for (size_t m = 0; m < chunk.Counts.size(); ++m)
+      for (vtkIdType c = cb; c < ce; ++c)
       {
-        const vtkIdType i = chunk.Begin + static_cast<vtkIdType>(m);
-        const std::int32_t count = chunk.Counts[m];
-        const std::int32_t kept = std::min(count, cap);
-        internals.Ranges[2 * i] = static_cast<std::int32_t>(out);
-        internals.Ranges[2 * i + 1] = kept;
-        flags[i] = kept == 0 ? 0.0f : (kept == count ? static_cast<float>(kept) : -1.0f);
-        // the culler tests a sphere containing the imposter: the influence sphere (the
-        // iso-sphere of an isolated particle is inside it for every IsoValue)
-        internals.CullingRadii[i] = static_cast<float>(k * r[i]);
-        const double* ci = xyz + 3 * i;
-        for (std::int32_t e = 0; e < kept; ++e)
+        const Chunk& chunk = *ordered[c];
+        vtkIdType out = chunkOffsets[c];
+        size_t in = 0;
+        for (size_t m = 0; m < chunk.Counts.size(); ++m)
         {
-          const std::int32_t j = chunk.Neighbors[in + e];
-          const double* cj = xyz + 3 * static_cast<vtkIdType>(j);
-          float* entry = &internals.Entries[4 * static_cast<size_t>(out)];
-          entry[0] = static_cast<float>(cj[0] - ci[0]);
-          entry[1] = static_cast<float>(cj[1] - ci[1]);
-          entry[2] = static_cast<float>(cj[2] - ci[2]);
-          entry[3] = r[j];
-          internals.Ids[static_cast<size_t>(out)] = j;
-          ++out;
+          const vtkIdType i = chunk.Begin + static_cast<vtkIdType>(m);
+          const std::int32_t count = chunk.Counts[m];
+          const std::int32_t kept = std::min(count, cap);
+          internals.Ranges[2 * i] = static_cast<std::int32_t>(out);
+          internals.Ranges[2 * i + 1] = kept;
+          flags[i] = kept == 0 ? 0.0f : (kept == count ? static_cast<float>(kept) : -1.0f);
+          // the culler tests a sphere containing the imposter: the influence sphere (the
+          // iso-sphere of an isolated particle is inside it for every IsoValue)
+          internals.CullingRadii[i] = static_cast<float>(k * r[i]);
+          const double* ci = xyz + 3 * i;
+          for (std::int32_t e = 0; e < kept; ++e)
+          {
+            const std::int32_t j = chunk.Neighbors[in + e];
+            const double* cj = xyz + 3 * static_cast<vtkIdType>(j);
+            float* entry = &internals.Entries[4 * static_cast<size_t>(out)];
+            entry[0] = static_cast<float>(cj[0] - ci[0]);
+            entry[1] = static_cast<float>(cj[1] - ci[1]);
+            entry[2] = static_cast<float>(cj[2] - ci[2]);
+            entry[3] = r[j];
+            internals.Ids[static_cast<size_t>(out)] = j;
+            ++out;
+          }
+          in += static_cast<size_t>(count);
         }
-        in += static_cast<size_t>(count);
       }
-    }
-  });
+    });
   internals.Flags->Modified();
 
   vtkIdType isolated = 0;
@@ -561,12 +573,13 @@ void vtkMetaballMapper::CacheParticleAttributes(vtkRenderer* ren, vtkActor* act)
     internals.ReleaseBuffers(false);
     internals.Context = context;
   }
-  auto upload = [](vtkOpenGLBufferObject* buffer, const void* data, size_t bytes) {
+  auto upload = [](vtkOpenGLBufferObject* buffer, const void* data, size_t bytes)
+  {
     static const std::int32_t zeros[4] = { 0, 0, 0, 0 };
     const size_t size = std::max<size_t>(bytes, sizeof(zeros));
     return vtkParticleComputeProgram::AllocateStorage(buffer, size) &&
-      vtkParticleComputeProgram::UploadStorage(buffer, 0, bytes > 0 ? bytes : sizeof(zeros),
-        bytes > 0 ? data : zeros);
+      vtkParticleComputeProgram::UploadStorage(
+        buffer, 0, bytes > 0 ? bytes : sizeof(zeros), bytes > 0 ? data : zeros);
   };
   if (!internals.ListsUploaded)
   {
@@ -658,7 +671,8 @@ void ReadBlendedColor(std::string& fs)
 }
 
 //------------------------------------------------------------------------------
-void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string& gs, std::string& fs)
+void vtkMetaballMapper::ReplaceWalkingShaderValues(
+  std::string& vs, std::string& gs, std::string& fs)
 {
   vtkInternals& internals = *this->Internals;
   vtkParticleShaderHooks& hooks = internals.Hooks;
@@ -701,14 +715,15 @@ void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string&
   else
   {
     // the final draw puts the point where the plane is
-    surface << "  if (prHit)\n"
-               "  {\n"
-               "    float prTWalk;\n"
-               "    prHit = prWalkingSurface(prRayS, prRayD, prT0, prT1, prWalkingCenterZVSOutput,\n"
-               "      prTWalk);\n"
-               "    prT0 = prTWalk;\n"
-               "    prT1 = prTWalk;\n"
-               "  }";
+    surface
+      << "  if (prHit)\n"
+         "  {\n"
+         "    float prTWalk;\n"
+         "    prHit = prWalkingSurface(prRayS, prRayD, prT0, prT1, prWalkingCenterZVSOutput,\n"
+         "      prTWalk);\n"
+         "    prT0 = prTWalk;\n"
+         "    prT1 = prTWalk;\n"
+         "  }";
     if (colors)
     {
       surface << "\n  prMetaballRGBA = prWalkingColor(prMetaballRGBA);";
@@ -724,7 +739,8 @@ void vtkMetaballMapper::ReplaceWalkingShaderValues(std::string& vs, std::string&
 }
 
 //------------------------------------------------------------------------------
-void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string& gs, std::string& fs)
+void vtkMetaballMapper::ReplaceVicinityShaderValues(
+  std::string& vs, std::string& gs, std::string& fs)
 {
   vtkInternals& internals = *this->Internals;
   vtkParticleShaderHooks& hooks = internals.Hooks;
@@ -765,7 +781,8 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(std::string& vs, std::string
     "    if (metaballMC > 0.0)\n"
     "    {\n"
     "      prScale = min(prScale,\n"
-    "        prScale * sqrt(max(1.0 - sqrt(prIsoOverKernelScale / (1.0 + metaballMC)), 0.0)) + 0.02);\n"
+    "        prScale * sqrt(max(1.0 - sqrt(prIsoOverKernelScale / (1.0 + metaballMC)), 0.0)) + "
+    "0.02);\n"
     "    }\n"
     "  }\n"
     "  radiusVC *= prScale;\n"
@@ -906,8 +923,7 @@ void vtkMetaballMapper::SetMapperShaderParameters(
   }
   program->SetUniformf(
     "prIsolatedScale", static_cast<float>(IsolatedRadiusFactor(k, this->IsoValue)));
-  program->SetUniformf(
-    "prIsoOverKernelScale", static_cast<float>(this->IsoValue / KernelScale(k)));
+  program->SetUniformf("prIsoOverKernelScale", static_cast<float>(this->IsoValue / KernelScale(k)));
   if (!internals.Supported || !program->IsUniformUsed("prKernelScale"))
   {
     return;
@@ -949,8 +965,7 @@ void vtkMetaballMapper::SetMapperShaderParameters(
     }
   }
   // the actor's part of the core's radius scale (GetRadiusScaleVC)
-  double sigma =
-    act->GetIsIdentity() ? 1.0 : std::cbrt(std::abs(act->GetMatrix()->Determinant()));
+  double sigma = act->GetIsIdentity() ? 1.0 : std::cbrt(std::abs(act->GetMatrix()->Determinant()));
   sigma = sigma > 0.0 && std::isfinite(sigma) ? sigma : 1.0; // a singular actor draws nothing
   program->SetUniformMatrix3x3("prViewToListLinear", viewToList);
   program->SetUniformf("prViewToListScale", static_cast<float>(1.0 / sigma));
@@ -1153,8 +1168,7 @@ bool vtkMetaballMapper::RenderVicinityWithPrePass(vtkRenderer* ren, vtkActor* ac
   ostate->PushReadFramebufferBinding();
   ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(drawFramebuffer));
   depth->Bind();
-  glCopyTexSubImage2D(
-    GL_TEXTURE_2D, 0, 0, 0, viewport[0], viewport[1], viewport[2], viewport[3]);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, viewport[0], viewport[1], viewport[2], viewport[3]);
   ostate->PopReadFramebufferBinding();
   internals.PrePassOrigin[0] = viewport[0];
   internals.PrePassOrigin[1] = viewport[1];
@@ -1239,7 +1253,8 @@ bool vtkMetaballMapper::GetDrawsSphereGlyphs()
 void vtkMetaballMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Method: " << (this->Method == WALKING_DEPTH_PLANE ? "WalkingDepthPlane" : "Vicinity")
+  os << indent
+     << "Method: " << (this->Method == WALKING_DEPTH_PLANE ? "WalkingDepthPlane" : "Vicinity")
      << "\n";
   os << indent << "InfluenceFactor: " << this->InfluenceFactor << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";

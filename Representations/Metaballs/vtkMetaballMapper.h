@@ -37,12 +37,12 @@
  *   that was cut). Every surface point lies in the sphere of the particle with its largest
  *   kernel. With k = 2 and IsoValue 1 a particle with 1 neighbour draws 1.39 R instead of
  *   2 R, one with 15 neighbours 1.82 R. The fragment gathers the kernels its ray meets and
- *   finds the first crossing of the iso-value in the ray's chord (Shaders/Metaballs.glsl). Along a ray every kernel is unimodal, so every interval has
- *   certified bounds of the field (the sums of the kernels' maxima and minima over it). The
- *   chord is subdivided depth first, left half first: an interval that cannot hold a crossing
- *   is passed whole, the others are halved down to Tolerance x R, where the field at the
- *   interval's end decides: across, the first crossing is in it (it is bisected
- *   RefinementSteps times and finished with a secant step); not across, it is passed. Unlike
+ *   finds the first crossing of the iso-value in the ray's chord (Shaders/Metaballs.glsl). Along a
+ * ray every kernel is unimodal, so every interval has certified bounds of the field (the sums of
+ * the kernels' maxima and minima over it). The chord is subdivided depth first, left half first: an
+ * interval that cannot hold a crossing is passed whole, the others are halved down to Tolerance x
+ * R, where the field at the interval's end decides: across, the first crossing is in it (it is
+ * bisected RefinementSteps times and finished with a secant step); not across, it is passed. Unlike
  *   the paper's fixed samples (its Fig. 11 holes), no part of the surface thicker than
  *   Tolerance x R along the ray is missed. The depth test keeps the nearest crossing over all
  *   influence spheres, which is the surface: outside every influence sphere the field is 0.
@@ -71,12 +71,12 @@
  * moves lambda with the oracle (StepOracle: the paper's Sec. 3.2.3 attenuation, or by default
  * Newton's step within the bracket of the sample one largest step ahead, the largest step
  * being MaximumStepFactor times the smallest radius); finished pixels are masked in a shared
- * depth buffer so that later passes skip them before the fragment stage; a pixel is finished when Newton's estimate of its distance to the
- * surface is at most WalkingTolerance times the smallest radius (where the field does not rise
- * with depth, a ray touching the surface: when |D/t - 1| <= WalkingTolerance). The
- * walk stops (Sec. 3.2.4) when no pixel is active, when FinishedShare of the covered pixels are
- * finished, after MaximumPasses, or after TimeBudget seconds. Shading is deferred
- * (Sec. 3.2.5): one more pass sums the field's gradient (the normal) and one the colours
+ * depth buffer so that later passes skip them before the fragment stage; a pixel is finished when
+ * Newton's estimate of its distance to the surface is at most WalkingTolerance times the smallest
+ * radius (where the field does not rise with depth, a ray touching the surface: when |D/t - 1| <=
+ * WalkingTolerance). The walk stops (Sec. 3.2.4) when no pixel is active, when FinishedShare of the
+ * covered pixels are finished, after MaximumPasses, or after TimeBudget seconds. Shading is
+ * deferred (Sec. 3.2.5): one more pass sums the field's gradient (the normal) and one the colours
  * weighted by the kernels; the final draw is the core's imposter draw, each fragment placing
  * its point where lambda is when its influence sphere holds it, so lights, AO hooks, picking
  * and depth are the core's. Differences from VICINITY: isolated particles are found to the

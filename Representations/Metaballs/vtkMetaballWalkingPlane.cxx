@@ -331,7 +331,8 @@ void vtkMetaballWalkingPlane::Step()
   vtkTextureObject* density = internals.Textures[DensityTarget];
   density->Activate();
   // both programs read the density with the oracle's settings
-  auto ready = [&](vtkShaderProgram* p) {
+  auto ready = [&](vtkShaderProgram* p)
+  {
     internals.Context->GetShaderCache()->ReadyShaderProgram(p);
     p->SetUniformi("prDensity", density->GetTextureUnit());
     p->SetUniformf("prIsoValue", static_cast<float>(this->IsoValue));

@@ -39,8 +39,9 @@
  *
  * Termination (Sec. 3.2.4), whichever comes first: no active pixel left; the share of finished
  * pixels among the covered ones reaches FinishedShare (the paper could not count them: an
- * occlusion query on the step pass counts the active pixels; it is read before the next pass); MaximumPasses; TimeBudget seconds since the start of the frame's
- * walk (the paper's minimum frame rate). GetTermination() says which.
+ * occlusion query on the step pass counts the active pixels; it is read before the next pass);
+ * MaximumPasses; TimeBudget seconds since the start of the frame's walk (the paper's minimum frame
+ * rate). GetTermination() says which.
  *
  * Between Begin() and End() the OpenGL state is the walk's (own framebuffers, viewport at the
  * origin, no depth test); End() restores it exactly. The textures stay valid for the final draw.
@@ -72,10 +73,10 @@ public:
   enum Termination
   {
     NOT_RUN = 0,
-    CONVERGED = 1,       // no active pixel left
-    FINISHED_SHARE = 2,  // the finished share reached FinishedShare
-    PASS_LIMIT = 3,      // MaximumPasses
-    TIME_BUDGET = 4      // TimeBudget
+    CONVERGED = 1,      // no active pixel left
+    FINISHED_SHARE = 2, // the finished share reached FinishedShare
+    PASS_LIMIT = 3,     // MaximumPasses
+    TIME_BUDGET = 4     // TimeBudget
   };
 
   ///@{

@@ -66,8 +66,7 @@ void vtkParticleDistributedVolumes::UpdateDensityVolume(vtkInformation* inInfo, 
   const bool distributed = vtkParticleDistributedVolumes::IsDistributedRender(inInfo);
   vtkDensityVolumeAOPass* pass = view ? view->GetDensityVolumeAOPass() : nullptr;
   const bool needed = distributed && pass &&
-    view->GetAmbientOcclusion() == vtkParticleRenderView::DENSITY_VOLUME &&
-    spheres;
+    view->GetAmbientOcclusion() == vtkParticleRenderView::DENSITY_VOLUME && spheres;
   if (!distributed)
   {
     vtkDensityVolumeAOPass::SetDistributedVolume(actor, nullptr);
@@ -76,9 +75,8 @@ void vtkParticleDistributedVolumes::UpdateDensityVolume(vtkInformation* inInfo, 
   vtkParticleDensityVolume* settings = needed ? pass->GetDensityVolume() : nullptr;
   std::ostringstream key;
   key.precision(17);
-  key << needed << ";" << particles << ";"
-      << (particles ? particles->GetMTime() : 0) << ";" << radiusArray << ";"
-      << mapper->GetRadius() << ";" << mapper->GetRadiusScaleVC(actor) << ";"
+  key << needed << ";" << particles << ";" << (particles ? particles->GetMTime() : 0) << ";"
+      << radiusArray << ";" << mapper->GetRadius() << ";" << mapper->GetRadiusScaleVC(actor) << ";"
       << (settings ? settings->GetMTime() : 0);
   vtkMatrix4x4* matrix = actor->GetMatrix();
   for (int i = 0; i < 16; ++i)
@@ -87,7 +85,8 @@ void vtkParticleDistributedVolumes::UpdateDensityVolume(vtkInformation* inInfo, 
   }
   if (!vtkParticleProcessReduction::StaleOnAnyProcess(key.str(), this->DensityVolumeKey))
   {
-    vtkDensityVolumeAOPass::SetDistributedVolume(actor, needed ? this->DensityVolume.Get() : nullptr);
+    vtkDensityVolumeAOPass::SetDistributedVolume(
+      actor, needed ? this->DensityVolume.Get() : nullptr);
     return;
   }
   if (!needed)
@@ -156,8 +155,8 @@ void vtkParticleDistributedVolumes::UpdateDensityVolume(vtkInformation* inInfo, 
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleDistributedVolumes::UpdateAmbientVolume(vtkInformation* inInfo, bool spheres,
-  vtkActor* actor, vtkParticleSphereMapper* mapper)
+void vtkParticleDistributedVolumes::UpdateAmbientVolume(
+  vtkInformation* inInfo, bool spheres, vtkActor* actor, vtkParticleSphereMapper* mapper)
 {
   auto view = vtkParticleRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
   if (!vtkParticleDistributedVolumes::IsDistributedRender(inInfo) || !view)
@@ -167,9 +166,8 @@ void vtkParticleDistributedVolumes::UpdateAmbientVolume(vtkInformation* inInfo, 
   }
   auto controller = vtkMultiProcessController::GetGlobalController();
   vtkVoxelConeAOPass* pass = view->GetVoxelConeAOPass();
-  const bool needed = pass &&
-    view->GetAmbientOcclusion() == vtkParticleRenderView::VOXEL_CONE_TRACING &&
-    spheres;
+  const bool needed =
+    pass && view->GetAmbientOcclusion() == vtkParticleRenderView::VOXEL_CONE_TRACING && spheres;
   vtkParticleAmbientVolume* settings = needed ? pass->GetAmbientVolume() : nullptr;
   // what the voxels depend on: the spheres (data, radii, matrix), their colours and opacities
   // (mapper, lookup table, property) and the volume's settings
@@ -178,8 +176,8 @@ void vtkParticleDistributedVolumes::UpdateAmbientVolume(vtkInformation* inInfo, 
   key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";"
       << mapper->GetMTime() << ";"
       << (mapper->GetLookupTable() ? mapper->GetLookupTable()->GetMTime() : 0) << ";"
-      << actor->GetProperty()->GetMTime() << ";" << actor->GetMatrix()->GetMTime()
-      << ";" << (settings ? settings->GetMTime() : 0);
+      << actor->GetProperty()->GetMTime() << ";" << actor->GetMatrix()->GetMTime() << ";"
+      << (settings ? settings->GetMTime() : 0);
   if (!vtkParticleProcessReduction::StaleOnAnyProcess(key.str(), this->AmbientVolumeKey))
   {
     vtkVoxelConeAOPass::SetDistributedVolume(actor, needed ? this->AmbientVolume.Get() : nullptr);
@@ -198,8 +196,7 @@ void vtkParticleDistributedVolumes::UpdateAmbientVolume(vtkInformation* inInfo, 
   if (input && input->GetNumberOfPoints() > 0)
   {
     mapper->GetBounds(); // prepares the radii
-    vtkParticleAmbientVolume::GatherSpheres(
-      actor, mapper, true, centers, radii, colors, opacities);
+    vtkParticleAmbientVolume::GatherSpheres(actor, mapper, true, centers, radii, colors, opacities);
   }
   // the grid of all processes' spheres: bounds and mean radius of the drawn ones (as
   // vtkParticleAmbientVolume sets it up from one process's)

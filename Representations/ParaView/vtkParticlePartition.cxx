@@ -133,8 +133,8 @@ int Owner(const std::vector<KdNode>& nodes, const double x[3])
 }
 
 // every process whose box the cube [x - r, x + r] overlaps
-void Overlapping(const std::vector<KdNode>& nodes, int node, const double x[3], double r,
-  std::vector<int>& ranks)
+void Overlapping(
+  const std::vector<KdNode>& nodes, int node, const double x[3], double r, std::vector<int>& ranks)
 {
   if (nodes[node].Rank >= 0)
   {
@@ -208,8 +208,8 @@ void vtkParticlePartition::GetBox(double box[6]) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusArray,
-  double radius, double radiusScale, double reach, const double sphereBounds[6])
+bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusArray, double radius,
+  double radiusScale, double reach, const double sphereBounds[6])
 {
   const double start = vtkTimerLog::GetUniversalTime();
   vtkMultiProcessController* controller = this->Controller;
@@ -302,8 +302,8 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
       offsets[r] = offsets[r - 1] + lengths[r - 1];
     }
     samples.assign(offsets[size - 1] + lengths[size - 1], 0.0);
-    controller->AllGatherV(localSamples.data(), samples.data(), length, lengths.data(),
-      offsets.data());
+    controller->AllGatherV(
+      localSamples.data(), samples.data(), length, lengths.data(), offsets.data());
   }
   if (!(root[0] <= root[1] && root[2] <= root[3] && root[4] <= root[5]))
   {
@@ -328,8 +328,7 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     controller->AllGather(&localCount, counts.data(), 1);
   }
   const int schemaRank = static_cast<int>(
-    std::find_if(counts.begin(), counts.end(), [](vtkIdType c) { return c > 0; }) -
-    counts.begin());
+    std::find_if(counts.begin(), counts.end(), [](vtkIdType c) { return c > 0; }) - counts.begin());
   std::vector<ArraySpec> specs;
   {
     vtkMultiProcessStream stream;
@@ -379,8 +378,8 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
   std::vector<int> everywhere = present;
   if (size > 1 && !present.empty())
   {
-    controller->AllReduce(present.data(), everywhere.data(), present.size(),
-      vtkCommunicator::MIN_OP);
+    controller->AllReduce(
+      present.data(), everywhere.data(), present.size(), vtkCommunicator::MIN_OP);
   }
   std::vector<vtkDataArray*> localArrays;
   std::vector<ArraySpec> kept;
@@ -399,7 +398,7 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     kept.push_back(specs[a]);
     localArrays.push_back(localCount == 0 ? nullptr
         : a == 0                          ? points
-                                          : particles->GetPointData()->GetArray(specs[a].Name.c_str()));
+                 : particles->GetPointData()->GetArray(specs[a].Name.c_str()));
   }
 
   // where each particle goes: its owner, and as a ghost every other process its cube reaches

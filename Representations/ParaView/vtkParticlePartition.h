@@ -73,8 +73,8 @@ public:
    * root box. Collective. Returns false (and leaves the output empty) when no process has a
    * particle.
    */
-  bool Partition(vtkPolyData* particles, const char* radiusArray, double radius,
-    double radiusScale, double reach, const double sphereBounds[6]);
+  bool Partition(vtkPolyData* particles, const char* radiusArray, double radius, double radiusScale,
+    double reach, const double sphereBounds[6]);
 
   /**
    * The particles of this process after Partition(): owned ones and ghost copies.

@@ -167,8 +167,8 @@ void vtkParticleRenderView::SetDensityVolumeAOPass(vtkDensityVolumeAOPass* pass)
   {
     this->DensityVolumeAOPass->RemoveObserver(this->PassProgressTag);
   }
-  this->PassProgressTag = pass->AddObserver(
-    vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
+  this->PassProgressTag =
+    pass->AddObserver(vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
   pass->SetWarnWithoutParticles(false); // a process without particles is normal here
   this->ReplaceAmbientOcclusionPass(this->DensityVolumeAOPass, pass, DENSITY_VOLUME);
 }
@@ -281,8 +281,8 @@ void vtkParticleRenderView::SetSNDFRenderPass(vtkSNDFRenderPass* pass)
   {
     this->SNDFRenderPass->RemoveObserver(this->SNDFProgressTag);
   }
-  this->SNDFProgressTag = pass->AddObserver(
-    vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
+  this->SNDFProgressTag =
+    pass->AddObserver(vtkCommand::ProgressEvent, this, &vtkParticleRenderView::ForwardPassProgress);
   this->SNDFRenderPass = pass;
   this->Modified();
 }
@@ -309,8 +309,7 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
     this->SynchronizedRenderers->SetRenderPass(this->ParticlePassChain);
   }
   // still renders converge when asked (screenshots, batch); interactive ones never do
-  this->SNDFRenderPass->SetConvergeOnRender(
-    this->SNDFConvergeStillRenders != 0 && !interactive);
+  this->SNDFRenderPass->SetConvergeOnRender(this->SNDFConvergeStillRenders != 0 && !interactive);
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
 }
 
@@ -339,7 +338,7 @@ int vtkParticleRenderView::GetParticlePassChainInstalled()
       // A pass of a type we cannot see through (IceT's composite pass in parallel): it runs
       // the synchronized renderer's render-pass slot.
       return (this->SynchronizedRenderers->GetRenderPass() ==
-               this->ParticlePassChain.GetPointer() &&
+                 this->ParticlePassChain.GetPointer() &&
                !this->GetEnableOSPRay())
         ? 1
         : 0;

@@ -13,7 +13,8 @@
  * Why a view subclass. A pass set with vtkRenderer::SetPass() does not survive in ParaView:
  * vtkPVSynchronizedRenderer::SetupPasses() rebuilds the renderer's pass chain
  *
- *     [vtkOpenGLFXAAPass] -> [ImageProcessingPass] -> vtkCameraPass -> (RenderPass | vtkPVDefaultPass)
+ *     [vtkOpenGLFXAAPass] -> [ImageProcessingPass] -> vtkCameraPass -> (RenderPass |
+ * vtkPVDefaultPass)
  *
  * whenever FXAA, the image-processing pass (EDL, tone mapping), the renderer or the parallel
  * configuration change (with IceT it hands the same two slots to vtkIceTSynchronizedRenderers).
@@ -55,10 +56,10 @@
 #ifndef vtkParticleRenderView_h
 #define vtkParticleRenderView_h
 
-#include "vtkNew.h"          // for vtkNew
-#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkNew.h" // for vtkNew
 #include "vtkPVRenderView.h"
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
+#include "vtkSmartPointer.h"                    // for vtkSmartPointer
 
 class vtkAlgorithm;
 class vtkImageProcessingPass;
@@ -95,19 +96,19 @@ public:
   enum AmbientOcclusionMethods
   {
     NO_AMBIENT_OCCLUSION = 0,
-    DENSITY_VOLUME = 1, // vtkDensityVolumeAOPass (Grottel et al. 2012)
+    DENSITY_VOLUME = 1,     // vtkDensityVolumeAOPass (Grottel et al. 2012)
     VOXEL_CONE_TRACING = 2, // vtkVoxelConeAOPass (Staib et al. 2015)
-    POINT_AO = 3 // vtkPointAOPass (Eichelbaum et al. 2013), screen space
+    POINT_AO = 3            // vtkPointAOPass (Eichelbaum et al. 2013), screen space
   };
 
   ///@{
   /**
    * The view's one ambient-occlusion choice: NO_AMBIENT_OCCLUSION (default), DENSITY_VOLUME,
-   * VOXEL_CONE_TRACING or POINT_AO. It puts that pass into the chain and takes the other out, so that two
-   * techniques are never on at once. The passes' own settings are not forwarded by the view: in
-   * ParaView each pass is a proxy of its own (group particle_passes) whose VTK object the view
-   * receives through Set...AOPass (a SubProxy command), and whose properties the view exposes --
-   * the pattern every further pass follows. Without proxies (plain VTK use of this class) the
+   * VOXEL_CONE_TRACING or POINT_AO. It puts that pass into the chain and takes the other out, so
+   * that two techniques are never on at once. The passes' own settings are not forwarded by the
+   * view: in ParaView each pass is a proxy of its own (group particle_passes) whose VTK object the
+   * view receives through Set...AOPass (a SubProxy command), and whose properties the view exposes
+   * -- the pattern every further pass follows. Without proxies (plain VTK use of this class) the
    * view has passes of its own.
    */
   void SetAmbientOcclusion(int method);

@@ -15,16 +15,15 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMetaballMapper.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
-#include "vtkMetaballMapper.h"
 #include "vtkParticleDistributedVolumes.h"
 #include "vtkParticlePartition.h"
 #include "vtkParticleProcessReduction.h"
 #include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
-#include "vtkTransparentSphereMapper.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -35,9 +34,10 @@
 #include "vtkSMPTools.h"
 #include "vtkScalarsToColors.h"
 #include "vtkTransform.h"
+#include "vtkTransparentSphereMapper.h"
 #include "vtkTypeInt32Array.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkTypeInt64Array.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -383,22 +383,24 @@ void vtkParticleRepresentation::ComputeSphereBounds(vtkPolyData* particles, doub
         VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
     };
     vtkSMPThreadLocal<Partial> partials;
-    vtkSMPTools::For(0, points->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
-      Partial& partial = partials.Local();
-      double x[3];
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0, points->GetNumberOfTuples(),
+      [&](vtkIdType begin, vtkIdType end)
       {
-        points->GetTuple(i, x);
-        if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+        Partial& partial = partials.Local();
+        double x[3];
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          for (int k = 0; k < 3; ++k)
+          points->GetTuple(i, x);
+          if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
           {
-            partial.B[2 * k] = std::min(partial.B[2 * k], x[k]);
-            partial.B[2 * k + 1] = std::max(partial.B[2 * k + 1], x[k]);
+            for (int k = 0; k < 3; ++k)
+            {
+              partial.B[2 * k] = std::min(partial.B[2 * k], x[k]);
+              partial.B[2 * k + 1] = std::max(partial.B[2 * k + 1], x[k]);
+            }
           }
         }
-      }
-    });
+      });
     Partial all;
     for (const Partial& partial : partials)
     {
@@ -546,8 +548,8 @@ bool vtkParticleRepresentation::PartitionParticles(
   std::ostringstream key;
   key.precision(17);
   key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
-      << ";"
-      << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor() << ";" << reach;
+      << ";" << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor() << ";"
+      << reach;
   if (!vtkParticleProcessReduction::StaleOnAnyProcess(key.str(), this->PartitionKey))
   {
     return needed && this->Partitioned;
@@ -613,14 +615,10 @@ void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBoun
     extent.AddBox(lo, hi);
   }
   extent.Reduce(controller);
-  this->GlobalColumnLayers = vtkTransparentSphereMapper::EstimateColumnLayers(
-    extent.Count, extent.RadiusSum, extent.Bounds);
+  this->GlobalColumnLayers =
+    vtkTransparentSphereMapper::EstimateColumnLayers(extent.Count, extent.RadiusSum, extent.Bounds);
   this->ApplyMapperSettings();
 }
-
-
-
-
 
 //------------------------------------------------------------------------------
 vtkPolyData* vtkParticleRepresentation::WithoutGhosts(
@@ -923,8 +921,8 @@ void vtkParticleRepresentation::SetOpacity(double val)
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetUseRadiusArray(int mode)
 {
-  mode = std::min(std::max(mode, static_cast<int>(RADIUS_ARRAY_OFF)),
-    static_cast<int>(RADIUS_ARRAY_AUTOMATIC));
+  mode = std::min(
+    std::max(mode, static_cast<int>(RADIUS_ARRAY_OFF)), static_cast<int>(RADIUS_ARRAY_AUTOMATIC));
   if (this->UseRadiusArray != mode)
   {
     this->UseRadiusArray = mode;
@@ -1028,7 +1026,10 @@ vtkIdType vtkParticleRepresentation::GetNumberOfParticles()
     this->Actor->method(x, y, z);                                                                  \
   }
 #define prForwardProperty1(method)                                                                 \
-  void vtkParticleRepresentation::method(double val) { this->Actor->GetProperty()->method(val); }
+  void vtkParticleRepresentation::method(double val)                                               \
+  {                                                                                                \
+    this->Actor->GetProperty()->method(val);                                                       \
+  }
 #define prForwardProperty3(method)                                                                 \
   void vtkParticleRepresentation::method(double r, double g, double b)                             \
   {                                                                                                \

@@ -110,8 +110,9 @@ public:
   ///@{
   /**
    * Transparency (vtkTransparentSphereMapper): density model, hollow fraction, surface/volume
-   * mix (alpha_RV), early termination, overlap compositing and its memory, and the maximum opacity per particle from a point array
-   * mapped through OpacityArrayRange (UseOpacityArray) -- multiplied by Opacity.
+   * mix (alpha_RV), early termination, overlap compositing and its memory, and the maximum opacity
+   * per particle from a point array mapped through OpacityArrayRange (UseOpacityArray) --
+   * multiplied by Opacity.
    */
   void SetDensityModel(int model);
   void SetHollowFraction(double fraction);
@@ -233,8 +234,9 @@ public:
   /**
    * How the particles are spread over the processes, 5 values per process: particles of the
    * process's piece, particles it owns and ghost copies it draws after the partition, bytes it
-   * sent, seconds the partition took (see vtkParticlePartition). Translucent spheres are partitioned when there is more than
-   * one process; otherwise every process owns its piece. For an information property.
+   * sent, seconds the partition took (see vtkParticlePartition). Translucent spheres are
+   * partitioned when there is more than one process; otherwise every process owns its piece. For an
+   * information property.
    */
   vtkDoubleArray* GetParticleDistribution();
 

@@ -22,15 +22,15 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkPropCollection.h"
 #include "vtkParticleAmbientLightPass.h"
 #include "vtkParticleComputeProgram.h"
 #include "vtkParticleGBufferGuard.h"
 #include "vtkParticleShaderHooks.h"
-#include "vtkParticleStageTimer.h"
-#include "vtkParticleViewport.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
+#include "vtkParticleStageTimer.h"
+#include "vtkParticleViewport.h"
+#include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkSMPTools.h"
@@ -51,8 +51,8 @@
 #include <map>
 #include <memory>
 #include <set>
-#include <unordered_map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace
@@ -62,7 +62,8 @@ const unsigned int NumberOfAttachments = 3;
 // sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
 // the bins per axis, at least 8)
 const int TableSubsamplesPerAxis = 512;
-// rows of the lighting table per bin (SNDFBins.glsl): D, S, their slopes in u.x and u.y, the centroid
+// rows of the lighting table per bin (SNDFBins.glsl): D, S, their slopes in u.x and u.y, the
+// centroid
 const int TableRows = 7;
 
 // sample passes in one Render() from which it reports progress
@@ -154,8 +155,7 @@ bool ColourCoordinateSource(
   int cellFlag = 0;
   array = vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(),
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-  if (!table || !array || cellFlag != 0 ||
-    array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  if (!table || !array || cellFlag != 0 || array->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
     return false;
   }
@@ -192,7 +192,8 @@ bool ColourCoordinateSource(
 // old colours span fewer than three dimensions). False unless every pair is met within
 // `tolerance` and no entry of M exceeds 16 in magnitude (the bins' 16-bit mean colours are
 // multiplied by it: at most 16 * 3 * 2 / 65535 = 0.37 / 255 of quantisation error).
-bool FitColourMatrix(const std::vector<std::array<double, 6>>& pairs, double m[3][3], double tolerance)
+bool FitColourMatrix(
+  const std::vector<std::array<double, 6>>& pairs, double m[3][3], double tolerance)
 {
   double g[3][3] = { { 0.0 } };
   double b[3][3] = { { 0.0 } };
@@ -498,24 +499,26 @@ public:
     }
     const int comps = array->GetNumberOfComponents();
     std::vector<double> values(static_cast<std::size_t>(n));
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      std::vector<double> tuple(static_cast<std::size_t>(comps));
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        if (component >= 0)
+        std::vector<double> tuple(static_cast<std::size_t>(comps));
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          values[i] = array->GetComponent(i, component);
-          continue;
+          if (component >= 0)
+          {
+            values[i] = array->GetComponent(i, component);
+            continue;
+          }
+          array->GetTuple(i, tuple.data());
+          double sum = 0.0;
+          for (double v : tuple)
+          {
+            sum += v * v;
+          }
+          values[i] = std::sqrt(sum);
         }
-        array->GetTuple(i, tuple.data());
-        double sum = 0.0;
-        for (double v : tuple)
-        {
-          sum += v * v;
-        }
-        values[i] = std::sqrt(sum);
-      }
-    });
+      });
     double lo = VTK_DOUBLE_MAX;
     double hi = -VTK_DOUBLE_MAX;
     for (double v : values)
@@ -531,12 +534,14 @@ public:
     c.Range[1] = hi;
     std::vector<float> t(values.size());
     const double scale = hi > lo ? 1.0 / (hi - lo) : 0.0;
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        t[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - lo) * scale)));
-      }
-    });
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          t[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - lo) * scale)));
+        }
+      });
     if (!c.Buffer)
     {
       c.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -681,7 +686,8 @@ public:
     {
       const double global = k * (i / (size - 1.0));
       const int a = std::min(k - 1, static_cast<int>(global));
-      const double local = std::min(1.0, std::max(0.0, (global - a - margin) / (1.0 - 2.0 * margin)));
+      const double local =
+        std::min(1.0, std::max(0.0, (global - a - margin) / (1.0 - 2.0 * margin)));
       const ColourCoordinates& c = this->Coordinates[a];
       float* entry = &ramp[4 * static_cast<std::size_t>(i)];
       if (c.Solid)
@@ -986,7 +992,8 @@ public:
       }
       this->Offset[row] = camera->GetPosition()[row] - camera->GetFocalPoint()[row];
     }
-    this->TexelSize = camera->GetParallelProjection() ? 2.0 * camera->GetParallelScale() / height : 1.0;
+    this->TexelSize =
+      camera->GetParallelProjection() ? 2.0 * camera->GetParallelScale() / height : 1.0;
     this->Corner(camera, width, height, this->Plane, this->Along);
     this->Placement = vtkSNDFTileCache::Placement();
     this->FrameValid = true;
@@ -1301,8 +1308,8 @@ vtkMTimeType vtkSNDFRenderPass::GetShaderStageMTime()
 }
 
 //------------------------------------------------------------------------------
-bool vtkSNDFRenderPass::PreReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkSNDFRenderPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
   if (IsSampledParticleMapper(mapper))
   {
@@ -1314,7 +1321,8 @@ bool vtkSNDFRenderPass::PreReplaceShaderValues(std::string&, std::string&,
   // leave the particle sample behind it in place.
   const std::string tag = "//VTK::DepthPeeling::Impl";
   vtkShaderProgram::Substitute(fragmentShader, tag,
-    "gl_FragData[1] = vec4(0.0, 0.0, -1.0, 1.0);\n  gl_FragData[2] = vec4(0.0, 0.0, 0.0, 1.0);\n  " +
+    "gl_FragData[1] = vec4(0.0, 0.0, -1.0, 1.0);\n  gl_FragData[2] = vec4(0.0, 0.0, 0.0, 1.0);\n "
+    " " +
       tag,
     false);
   return true;
@@ -1373,9 +1381,13 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
     : "1.0";
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl",
     "vec3 prSampleDiffuse = diffuseColor;\n"
-    "    vec3 prSampleAmbient = prAmbientOcclusion * ambientColor + prAmbientLight;\n" + raw +
-      "    gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), 1.0);\n"
-      "    gl_FragData[2] = vec4(prSampleDiffuse, " + coordinate + ");\n"
+    "    vec3 prSampleAmbient = prAmbientOcclusion * ambientColor + prAmbientLight;\n" +
+      raw +
+      "    gl_FragData[1] = vec4(normalVCVSOutput.xy, 2.0 + clamp(prAmbientOcclusion, 0.0, 1.0), "
+      "1.0);\n"
+      "    gl_FragData[2] = vec4(prSampleDiffuse, " +
+      coordinate +
+      ");\n"
       "    gl_FragData[0] = vec4(prSampleAmbient, 1.0);");
   return true;
 }
@@ -1446,64 +1458,66 @@ namespace
 // the lit value over the part of the bin inside the disk.
 std::string LightingTableMain()
 {
-  return
-      "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), float(prTableRows)));\n"
-      "  int prRow = prTexel.y;\n"
-      "  int prLight = (prRow == 1 || prRow == 4 || prRow == 5) ? 1 : 0;\n"
-      "  float prN = 0.0;\n"
-      "  vec2 prU = vec2(0.0);\n"
-      "  vec3 prUU = vec3(0.0);\n"
-      "  vec3 prF = vec3(0.0);\n"
-      "  vec3 prUFx = vec3(0.0);\n"
-      "  vec3 prUFy = vec3(0.0);\n"
-      "  for (int i = 0; i < prSubsamples; ++i)\n"
-      "  {\n"
-      "    for (int j = 0; j < prSubsamples; ++j)\n"
-      "    {\n"
-      "      vec2 prUV = (vec2(i, j) + 0.5) / float(prSubsamples);\n"
-      "      vec3 prNormal;\n"
-      "      if (prSNDFBinPoint(prTexel.x, prBins, prUV, prNormal))\n"
-      "      {\n"
-      "        vec3 prValue = prRow == 6 ? vec3(0.0) : prLightSum(prNormal, prLight);\n"
-      "        prN += 1.0;\n"
-      "        prU += prUV;\n"
-      "        prUU += vec3(prUV.x * prUV.x, prUV.x * prUV.y, prUV.y * prUV.y);\n"
-      "        prF += prValue;\n"
-      "        prUFx += prUV.x * prValue;\n"
-      "        prUFy += prUV.y * prValue;\n"
-      "      }\n"
-      "    }\n"
-      "  }\n"
-      "  vec3 prOut = vec3(0.0);\n"
-      "  if (prN == 0.0)\n"
-      "  {\n"
-      "    // a bin outside the disk holds no sample; give it the normal of the rim point nearest\n"
-      "    // to its centre and no slope\n"
-      "    vec3 prCentre;\n"
-      "    prSNDFBinPoint(prTexel.x, prBins, vec2(0.5), prCentre);\n"
-      "    vec2 prRim = normalize(prCentre.xy) * 0.9999;\n"
-      "    vec3 prValue = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), prLight);\n"
-      "    prOut = prRow < 2 ? prValue : (prRow == 6 ? vec3(0.5, 0.5, 0.0) : vec3(0.0));\n"
-      "  }\n"
-      "  else\n"
-      "  {\n"
-      "    // least-squares plane f = mean + slope . (u - centroid) over bin ∩ disk (the\n"
-      "    // covariance regularised by 1e-4: a sliver of a bin at the rim gets no slope across it)\n"
-      "    vec2 prMeanU = prU / prN;\n"
-      "    vec3 prMeanF = prF / prN;\n"
-      "    float prCxx = prUU.x / prN - prMeanU.x * prMeanU.x + 1.0e-4;\n"
-      "    float prCxy = prUU.y / prN - prMeanU.x * prMeanU.y;\n"
-      "    float prCyy = prUU.z / prN - prMeanU.y * prMeanU.y + 1.0e-4;\n"
-      "    vec3 prCxf = prUFx / prN - prMeanU.x * prMeanF;\n"
-      "    vec3 prCyf = prUFy / prN - prMeanU.y * prMeanF;\n"
-      "    float prDet = prCxx * prCyy - prCxy * prCxy;\n"
-      "    vec3 prSlopeX = (prCyy * prCxf - prCxy * prCyf) / prDet;\n"
-      "    vec3 prSlopeY = (prCxx * prCyf - prCxy * prCxf) / prDet;\n"
-      "    prOut = prRow < 2 ? prMeanF\n"
-      "      : (prRow == 6 ? vec3(prMeanU, 0.0)\n"
-      "      : ((prRow == 2 || prRow == 4) ? prSlopeX : prSlopeY));\n"
-      "  }\n"
-      "  gl_FragData[0] = vec4(prOut, 1.0);\n";
+  return "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), float(prTableRows)));\n"
+         "  int prRow = prTexel.y;\n"
+         "  int prLight = (prRow == 1 || prRow == 4 || prRow == 5) ? 1 : 0;\n"
+         "  float prN = 0.0;\n"
+         "  vec2 prU = vec2(0.0);\n"
+         "  vec3 prUU = vec3(0.0);\n"
+         "  vec3 prF = vec3(0.0);\n"
+         "  vec3 prUFx = vec3(0.0);\n"
+         "  vec3 prUFy = vec3(0.0);\n"
+         "  for (int i = 0; i < prSubsamples; ++i)\n"
+         "  {\n"
+         "    for (int j = 0; j < prSubsamples; ++j)\n"
+         "    {\n"
+         "      vec2 prUV = (vec2(i, j) + 0.5) / float(prSubsamples);\n"
+         "      vec3 prNormal;\n"
+         "      if (prSNDFBinPoint(prTexel.x, prBins, prUV, prNormal))\n"
+         "      {\n"
+         "        vec3 prValue = prRow == 6 ? vec3(0.0) : prLightSum(prNormal, prLight);\n"
+         "        prN += 1.0;\n"
+         "        prU += prUV;\n"
+         "        prUU += vec3(prUV.x * prUV.x, prUV.x * prUV.y, prUV.y * prUV.y);\n"
+         "        prF += prValue;\n"
+         "        prUFx += prUV.x * prValue;\n"
+         "        prUFy += prUV.y * prValue;\n"
+         "      }\n"
+         "    }\n"
+         "  }\n"
+         "  vec3 prOut = vec3(0.0);\n"
+         "  if (prN == 0.0)\n"
+         "  {\n"
+         "    // a bin outside the disk holds no sample; give it the normal of the rim point "
+         "nearest\n"
+         "    // to its centre and no slope\n"
+         "    vec3 prCentre;\n"
+         "    prSNDFBinPoint(prTexel.x, prBins, vec2(0.5), prCentre);\n"
+         "    vec2 prRim = normalize(prCentre.xy) * 0.9999;\n"
+         "    vec3 prValue = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), "
+         "prLight);\n"
+         "    prOut = prRow < 2 ? prValue : (prRow == 6 ? vec3(0.5, 0.5, 0.0) : vec3(0.0));\n"
+         "  }\n"
+         "  else\n"
+         "  {\n"
+         "    // least-squares plane f = mean + slope . (u - centroid) over bin ∩ disk (the\n"
+         "    // covariance regularised by 1e-4: a sliver of a bin at the rim gets no slope across "
+         "it)\n"
+         "    vec2 prMeanU = prU / prN;\n"
+         "    vec3 prMeanF = prF / prN;\n"
+         "    float prCxx = prUU.x / prN - prMeanU.x * prMeanU.x + 1.0e-4;\n"
+         "    float prCxy = prUU.y / prN - prMeanU.x * prMeanU.y;\n"
+         "    float prCyy = prUU.z / prN - prMeanU.y * prMeanU.y + 1.0e-4;\n"
+         "    vec3 prCxf = prUFx / prN - prMeanU.x * prMeanF;\n"
+         "    vec3 prCyf = prUFy / prN - prMeanU.y * prMeanF;\n"
+         "    float prDet = prCxx * prCyy - prCxy * prCxy;\n"
+         "    vec3 prSlopeX = (prCyy * prCxf - prCxy * prCyf) / prDet;\n"
+         "    vec3 prSlopeY = (prCxx * prCyf - prCxy * prCxf) / prDet;\n"
+         "    prOut = prRow < 2 ? prMeanF\n"
+         "      : (prRow == 6 ? vec3(prMeanU, 0.0)\n"
+         "      : ((prRow == 2 || prRow == 4) ? prSlopeX : prSlopeY));\n"
+         "  }\n"
+         "  gl_FragData[0] = vec4(prOut, 1.0);\n";
 }
 }
 
@@ -1811,7 +1825,8 @@ bool vtkSNDFRenderPass::ChooseBins(vtkFrame& frame)
   // them with the bins asked for.
   const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
   moments = this->KeepColourCoordinates && vtkInternals::CoordinateActors(particles);
-  auto slotsFor = [&](int b) {
+  auto slotsFor = [&](int b)
+  {
     return static_cast<int>(std::min({ 8.0 * viewTiles,
       std::floor(this->MaximumMemory * 1048576.0 / vtkSNDFTileCache::GetTileBytes(b, moments)),
       static_cast<double>(internals.Cache->GetMaximumSlots(context, b, moments)) }));
@@ -1838,10 +1853,11 @@ bool vtkSNDFRenderPass::ChooseBins(vtkFrame& frame)
     if (internals.FirstWarning(what))
     {
       vtkWarningMacro(<< "The S-MIP cache of a " << width << " x " << height << " view needs "
-                      << viewTiles * vtkSNDFTileCache::GetTileBytes(4) / 1048576.0
-                      << " MB for its " << viewTiles << " tiles even with 4 x 4 bins, more than "
+                      << viewTiles * vtkSNDFTileCache::GetTileBytes(4) / 1048576.0 << " MB for its "
+                      << viewTiles << " tiles even with 4 x 4 bins, more than "
                       << "MaximumMemory (" << this->MaximumMemory << " MB) or the GPU's "
-                      << "shader-storage limits hold (" << internals.Cache->GetMaximumSlots(context, 4)
+                      << "shader-storage limits hold ("
+                      << internals.Cache->GetMaximumSlots(context, 4)
                       << " tiles): the view is rendered as without S-NDF shading.");
     }
     this->RenderPlain(s);
@@ -1849,8 +1865,8 @@ bool vtkSNDFRenderPass::ChooseBins(vtkFrame& frame)
   }
   if (bins != this->BinsPerAxis)
   {
-    const std::string what = "bins " + std::to_string(width) + "x" + std::to_string(height) +
-      " " + std::to_string(bins);
+    const std::string what =
+      "bins " + std::to_string(width) + "x" + std::to_string(height) + " " + std::to_string(bins);
     if (internals.FirstWarning(what))
     {
       vtkWarningMacro(<< "MaximumMemory (" << this->MaximumMemory << " MB) and the GPU's "
@@ -2183,7 +2199,8 @@ std::vector<double> vtkSNDFRenderPass::LightingTableKey(vtkFrame& frame)
     if (light->GetPositional())
     {
       tableKey.insert(tableKey.end(), positionVC, positionVC + 3);
-      tableKey.insert(tableKey.end(), light->GetAttenuationValues(), light->GetAttenuationValues() + 3);
+      tableKey.insert(
+        tableKey.end(), light->GetAttenuationValues(), light->GetAttenuationValues() + 3);
       tableKey.push_back(light->GetExponent());
       tableKey.push_back(light->GetConeAngle());
     }
@@ -2223,8 +2240,8 @@ bool vtkSNDFRenderPass::UpdateLightingTable(vtkFrame& frame)
   if (!internals.TableQuad || source != internals.TableQuadSource)
   {
     std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
-      vtkParticleShaders::Get("SNDFLightingTable") + "\n" + source);
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::FSQ::Decl", vtkParticleShaders::Get("SNDFLightingTable") + "\n" + source);
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", LightingTableMain());
     internals.TableQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, fs.c_str(), nullptr));
     internals.TableQuadSource = source;
@@ -2306,12 +2323,14 @@ bool vtkSNDFRenderPass::MapTiles(vtkFrame& frame)
   {
     ++(placement.Level == internals.Placement.Level ? this->NumberOfPans : this->NumberOfZooms);
   }
-  if (moved || changes != internals.Cache->GetNumberOfDownsampledTiles() +
-        internals.Cache->GetNumberOfClearedTiles())
+  if (moved ||
+    changes !=
+      internals.Cache->GetNumberOfDownsampledTiles() + internals.Cache->GetNumberOfClearedTiles())
   {
     // a pan or zoom brought other texels into the view: count the fewest samples a pixel holds
-    this->NumberOfSamples = static_cast<int>(std::min<unsigned int>(
-      internals.Cache->CountMinimumSamples(texelsX, texelsY), static_cast<unsigned int>(this->TargetSamples)));
+    this->NumberOfSamples = static_cast<int>(
+      std::min<unsigned int>(internals.Cache->CountMinimumSamples(texelsX, texelsY),
+        static_cast<unsigned int>(this->TargetSamples)));
     internals.CheckedSamples = 0;
     this->ErrorTargetReached = false;
     this->EstimatedError = -1.0;
@@ -2409,14 +2428,16 @@ void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
     difference->Use();
     difference->SetUniform2i("prSize", texelsX, texelsY);
     glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     vtkParticleComputeProgram::BindStorage(1, internals.Totals);
     difference->Dispatch(groupsX, groupsY);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     vtkParticleComputeProgram::UseNone();
-    vtkParticleComputeProgram::DownloadStorage(internals.Totals, 0, totals.size() * 4, totals.data());
+    vtkParticleComputeProgram::DownloadStorage(
+      internals.Totals, 0, totals.size() * 4, totals.data());
     double total = 0.0;
     for (unsigned int t : totals)
     {
@@ -2448,8 +2469,8 @@ void vtkSNDFRenderPass::TakeSamples(vtkFrame& frame)
   const bool reporting = samples >= ProgressSamples;
   if (reporting)
   {
-    internals.ProgressText = "S-NDF shading: " + std::to_string(this->TargetSamples) +
-      " samples per pixel";
+    internals.ProgressText =
+      "S-NDF shading: " + std::to_string(this->TargetSamples) + " samples per pixel";
     double fraction = 0.0;
     this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
   }
@@ -2473,7 +2494,8 @@ void vtkSNDFRenderPass::TakeSamples(vtkFrame& frame)
   {
     double offset[2];
     JitterOffset(internals.Sequence++, offset);
-    camera->SetWindowCenter(centre[0] + 2.0 * offset[0] / texelsX, centre[1] + 2.0 * offset[1] / texelsY);
+    camera->SetWindowCenter(
+      centre[0] + 2.0 * offset[0] / texelsX, centre[1] + 2.0 * offset[1] / texelsY);
 
     this->RenderSampleTargets(frame);
     camera->SetWindowCenter(viewCentre[0], viewCentre[1]);
@@ -2609,13 +2631,16 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
     filter->SetUniform2i("prSize", width, height);
     filter->SetUniform2i("prTexelSize", texelsX, texelsY);
     filter->SetUniformf("prScale", static_cast<float>(between.Scale));
-    filter->SetUniform2f("prOffset", static_cast<float>(between.Offset[0]),
-      static_cast<float>(between.Offset[1]));
+    filter->SetUniform2f(
+      "prOffset", static_cast<float>(between.Offset[0]), static_cast<float>(between.Offset[1]));
     glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(2, internals.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(3, internals.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    filter->Dispatch(static_cast<unsigned int>((width + 15) / 16), static_cast<unsigned int>((height + 15) / 16));
+    glBindImageTexture(
+      2, internals.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      3, internals.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    filter->Dispatch(
+      static_cast<unsigned int>((width + 15) / 16), static_cast<unsigned int>((height + 15) / 16));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     for (GLuint unit = 0; unit < 4; ++unit)
     {
@@ -2639,8 +2664,8 @@ void vtkSNDFRenderPass::Composite(vtkFrame& frame)
   if (!internals.CompositeQuad)
   {
     std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
-      "uniform sampler2D prImage;\nuniform sampler2D prImageDepth;\n");
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::FSQ::Decl", "uniform sampler2D prImage;\nuniform sampler2D prImageDepth;\n");
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl",
       "gl_FragData[0] = texture(prImage, texCoord);\n"
       "  gl_FragDepth = texture(prImageDepth, texCoord).r;\n");

@@ -17,19 +17,20 @@
  *
  * Sampling (progressive, paper Sec. 6.3). The frame of a change (every frame of an interaction)
  * is the delegate's plain image, as fast as without the pass. While the view then holds still,
- * each Render() draws the delegate SamplesPerFrame times, each time with the camera's window centre moved by a sub-pixel offset
- * (sample k: the Halton (2, 3) point k, sample 0 at the pixel centre; box filter over the pixel),
- * into a G-buffer: the particle mappers' shaders (vtkParticleSphereMapper and its opaque
- * subclasses, through the
+ * each Render() draws the delegate SamplesPerFrame times, each time with the camera's window centre
+ * moved by a sub-pixel offset (sample k: the Halton (2, 3) point k, sample 0 at the pixel centre;
+ * box filter over the pixel), into a G-buffer: the particle mappers' shaders
+ * (vtkParticleSphereMapper and its opaque subclasses, through the
  * //PR::Shading::Impl hook) write the sample's view-space normal, its ambient visibility (from an
  * AO pass in the delegate) and the actor's diffuse colour into two RGBA16F targets, and into the
- * 8-bit colour target the shading that needs no normal (the occluded ambient colour and the AO source's
- * ambient light); every other shader writes zeros into the two targets (code before VTK's
+ * 8-bit colour target the shading that needs no normal (the occluded ambient colour and the AO
+ * source's ambient light); every other shader writes zeros into the two targets (code before VTK's
  * //VTK::DepthPeeling::Impl tag), and the colour where no particle is hit (the background) is
  * kept as drawn. A compute shader enters each sample into the pixel's S-NDF: BinsPerAxis^2
  * "projected normals" bins over the unit disk (8 x 8 by default; 4 x 4 and 16 x 16 selectable),
  * 16-bit counts with the bin's mean diffuse colour and a bit mask of the occupied bins, plus the
- * pixel's sums. P_x(D_i) of Eq. 5 is a bin's count over the samples taken. Refinement stops at TargetSamples per pixel (Converged).
+ * pixel's sums. P_x(D_i) of Eq. 5 is a bin's count over the samples taken. Refinement stops at
+ * TargetSamples per pixel (Converged).
  *
  * Shading (Eqs. 12-14). A table holds, per bin, VTK's light sums (diffuse and specular, every
  * light of the renderer as vtkParticleSphereMapper shades: the same GLSL, GetLightSumCode)
@@ -66,8 +67,8 @@
  * - View vector. Normals are binned in view space; the specular term of scene lights uses
  *   VTK's view vector normalize(-p) with p on the view axis (+z), exact in the image centre and
  *   for the headlight; off-axis in a perspective view the error grows with the angle. Positional
- *   lights are evaluated at the focal distance on the view axis. Normals seen with n.z < 0 (possible
- *   off-axis in perspective) are binned by their (x, y) as if facing the viewer.
+ *   lights are evaluated at the focal distance on the view axis. Normals seen with n.z < 0
+ * (possible off-axis in perspective) are binned by their (x, y) as if facing the viewer.
  * - Material. The specular colour and power are those of the first particle actor (a warning
  *   when the particle actors differ) and re-shade only. With one particle actor (ParaView's
  *   Particles representation) the samples store its colours without the property's
@@ -101,18 +102,18 @@
  *   value as its table sees it (the component or the magnitude) over the array's finite range
  *   (0 for a solid colour), read by particle id from a texture buffer; the sample holds
  *   t' = (a + m + (1 - 2 m) t) / K for actor a of K (m = 0.02 with several actors, 0 with one),
- *   so that each actor's colours are a part of one function of t'; each bin keeps the running means of AO t^k, k = 0..3 (16 bits each, two more
- *   words per bin). A new map c' of the value moves a bin's mean colour m to
- *   A Q(c') + R (m - A Q(c)): Q the two-node Gauss quadrature of the map under the bin's
- *   distribution of t (from the moments: exact where a bin's samples show at most two distinct
- *   values, a pixel split between two atoms; equal-weight nodes at mu -/+ sigma where the
+ *   so that each actor's colours are a part of one function of t'; each bin keeps the running means
+ * of AO t^k, k = 0..3 (16 bits each, two more words per bin). A new map c' of the value moves a
+ * bin's mean colour m to A Q(c') + R (m - A Q(c)): Q the two-node Gauss quadrature of the map under
+ * the bin's distribution of t (from the moments: exact where a bin's samples show at most two
+ * distinct values, a pixel split between two atoms; equal-weight nodes at mu -/+ sigma where the
  *   variance is below 1e-3, one node below 2.5e-5), A the bin's mean AO, R the least-squares
  *   linear map from the old map's colours to the new one's over t, which carries the old map's
  *   known quadrature error m - A Q(c) into the new one (identity for a map that is a linear
  *   function of the old one, 0 for an unrelated one). Both maps are tabulated at 4096 values of
- *   t per actor (Shaders/SNDFRecolour.glsl); an indexed (categorical) table is tabulated with the colour
- *   of the nearest value the particles have (up to 4096 distinct values), as the nodes fall near
- *   the values, not on them (measured errors: Documentation/SNDF.md; two nodes do not suffice
+ *   t per actor (Shaders/SNDFRecolour.glsl); an indexed (categorical) table is tabulated with the
+ * colour of the nearest value the particles have (up to 4096 distinct values), as the nodes fall
+ * near the values, not on them (measured errors: Documentation/SNDF.md; two nodes do not suffice
  *   for bins of three or more atoms; after a zoom out by 2 the bins and moments are averaged
  *   from the finer level, Shaders/SNDFDownsample.glsl). Still sampling again:
  *   NaN or Inf values (the table's NaN and out-of-range colours are not functions of t), more
@@ -163,9 +164,9 @@
  * (Shaders/SNDFBoxFilter.glsl): shading is linear in the S-NDF, so this is the shade of the
  * footprint's averaged S-NDF -- sharper than the trilinear tent filter, and consistent under
  * pans. It is still the zoomed picture convolved with a texel's box, and the blur is the
- * method's (measured: Documentation/SNDF.md). Hence off by default. A rectangle whose tiles exceed the cache restarts.
- * Rotations and perspective camera moves restart (the paper's S-MIP, too, is invalidated by a
- * new view direction).
+ * method's (measured: Documentation/SNDF.md). Hence off by default. A rectangle whose tiles exceed
+ * the cache restarts. Rotations and perspective camera moves restart (the paper's S-MIP, too, is
+ * invalidated by a new view direction).
  *
  * What invalidates the samples: the viewport size, the camera (but for the pans and zooms
  * above: view up, view direction, view angle, projection, clipping range, window centre, in
@@ -194,10 +195,11 @@
  * its own targets), contexts without OpenGL 4.3 compute shaders, a vtkPointAOPass inside this pass
  * (screen-space occlusion darkens the composited image; the samples need it per fragment).
  * A renderer whose viewport does not fill its window (renderers side by side in plain VTK) is
- * rendered plainly too (the delegate's camera pass sets up the window's viewport). vtkTransparentSphereMapper
- * (ParaView's Particles representation) is sampled while all its particles are opaque: it then
- * draws them through the core's opaque path. The background, plain or gradient, is sampled with the particles. Without particle
- * props the pass renders the delegate directly.
+ * rendered plainly too (the delegate's camera pass sets up the window's viewport).
+ * vtkTransparentSphereMapper (ParaView's Particles representation) is sampled while all its
+ * particles are opaque: it then draws them through the core's opaque path. The background, plain or
+ * gradient, is sampled with the particles. Without particle props the pass renders the delegate
+ * directly.
  *
  * @sa vtkParticleSphereMapper vtkParticleShaderHooks vtkImageProcessingPass
  */
@@ -261,10 +263,10 @@ public:
   ///@{
   /**
    * With up to four particle actors coloured through lookup tables (colour by speed, by type,
-   * ...) or by their property's colour, keep each bin's moments of the particles' scalar (class description, "Colour"), so that
-   * any new colour map of that scalar -- another preset, a new range, continuous or not --
-   * re-shades without sampling. On by default; costs two 32-bit words per bin (8 x 8 bins:
-   * 512 more bytes per texel, 1352 instead of 840; accumulation time measured:
+   * ...) or by their property's colour, keep each bin's moments of the particles' scalar (class
+   * description, "Colour"), so that any new colour map of that scalar -- another preset, a new
+   * range, continuous or not -- re-shades without sampling. On by default; costs two 32-bit words
+   * per bin (8 x 8 bins: 512 more bytes per texel, 1352 instead of 840; accumulation time measured:
    * Documentation/SNDF.md).
    * Off: only colour maps whose new colours are linear in the old ones re-shade.
    */
@@ -293,7 +295,8 @@ public:
   ///@{
   /**
    * The size of the S-MIP cache in MB (MiB; default 1536, 1.7 views of 1280 x 720 with 8 x 8
-   * bins; it takes at most eight views' worth of tiles). See the class description for a view whose tiles do not fit.
+   * bins; it takes at most eight views' worth of tiles). See the class description for a view whose
+   * tiles do not fit.
    */
   vtkSetClampMacro(MaximumMemory, double, 0.0, 1.0e7);
   vtkGetMacro(MaximumMemory, double);
@@ -431,7 +434,6 @@ protected:
   double ErrorTarget = 0.0;
   double EstimatedError = -1.0;
   bool ErrorTargetReached = false;
-
 
 private:
   vtkSNDFRenderPass(const vtkSNDFRenderPass&) = delete;

@@ -58,9 +58,9 @@ struct Slot
 {
   Key Tile{};
   bool Used = false;
-  long long LastUsed = 0;  // the MapView() that last touched it
-  long long Shown = -1;    // the MapView() that shows it (not to be evicted)
-  long long Version = 0;   // the lighting table its shaded sums were formed with
+  long long LastUsed = 0; // the MapView() that last touched it
+  long long Shown = -1;   // the MapView() that shows it (not to be evicted)
+  long long Version = 0;  // the lighting table its shaded sums were formed with
 };
 }
 
@@ -111,7 +111,8 @@ public:
   std::size_t PartialBytes = 0;
 
   // uploads `values` into `buffer` (grown as needed) for binding 2
-  static void Upload(vtkOpenGLBufferObject* buffer, std::size_t& capacity, const std::vector<int>& values)
+  static void Upload(
+    vtkOpenGLBufferObject* buffer, std::size_t& capacity, const std::vector<int>& values)
   {
     const std::size_t bytes = std::max<std::size_t>(1, values.size()) * sizeof(int);
     if (bytes > capacity)
@@ -121,7 +122,8 @@ public:
     }
     if (!values.empty())
     {
-      vtkParticleComputeProgram::UploadStorage(buffer, 0, values.size() * sizeof(int), values.data());
+      vtkParticleComputeProgram::UploadStorage(
+        buffer, 0, values.size() * sizeof(int), values.data());
     }
   }
 
@@ -176,13 +178,16 @@ public:
     const GLuint zero = 0;
     const std::size_t binBytes = TileTexels * this->WordsPerTexel * 4;
     const std::size_t sumBytes = TileTexels * static_cast<std::size_t>(SumBytesPerTexel);
-    auto clear = [&](vtkOpenGLBufferObject* buffer, std::size_t bytes, int index) {
+    auto clear = [&](vtkOpenGLBufferObject* buffer, std::size_t bytes, int index)
+    {
       glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(buffer->GetHandle()));
       glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, static_cast<GLintptr>(bytes * index),
         static_cast<GLsizeiptr>(bytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     };
-    clear(this->BinBuffers[slot / this->SlotsPerBinBuffer], binBytes, slot % this->SlotsPerBinBuffer);
-    clear(this->SumBuffers[slot / this->SlotsPerSumBuffer], sumBytes, slot % this->SlotsPerSumBuffer);
+    clear(
+      this->BinBuffers[slot / this->SlotsPerBinBuffer], binBytes, slot % this->SlotsPerBinBuffer);
+    clear(
+      this->SumBuffers[slot / this->SlotsPerSumBuffer], sumBytes, slot % this->SlotsPerSumBuffer);
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
   }
 
@@ -190,8 +195,10 @@ public:
   void BindPart(vtkParticleComputeProgram* program, const std::pair<int, int>& part)
   {
     program->SetUniformi("prWordsPerPixel", this->WordsPerTexel);
-    program->SetUniformui("prSlotsPerBinBuffer", static_cast<unsigned int>(this->SlotsPerBinBuffer));
-    program->SetUniformui("prSlotsPerSumBuffer", static_cast<unsigned int>(this->SlotsPerSumBuffer));
+    program->SetUniformui(
+      "prSlotsPerBinBuffer", static_cast<unsigned int>(this->SlotsPerBinBuffer));
+    program->SetUniformui(
+      "prSlotsPerSumBuffer", static_cast<unsigned int>(this->SlotsPerSumBuffer));
     program->SetUniformui("prBinPart", static_cast<unsigned int>(part.first));
     program->SetUniformui("prSumPart", static_cast<unsigned int>(part.second));
     vtkParticleComputeProgram::BindStorage(BinBinding, this->BinBuffers[part.first]);
@@ -246,21 +253,24 @@ public:
       "uniform int prWordsPerPixel;\nuniform uint prSlotsPerBinBuffer;\n"
       "uniform uint prSlotsPerSumBuffer;\n";
     code += "uniform uint prBinPart;\nuniform uint prSumPart;\n"
-              "layout(std430, binding = " + std::to_string(SumBinding) +
-        ") buffer prSumBuffer0\n{\n  vec4 prSums0[];\n};\n"
-        "layout(std430, binding = " + std::to_string(BinBinding) +
-        ") buffer prBinBuffer0\n{\n  uint prBins0[];\n};\n"
-        "bool prSNDFInPart(uint texel)\n{\n  uint slot = texel >> 12u;\n"
-        "  return slot / prSlotsPerBinBuffer == prBinPart && slot / prSlotsPerSumBuffer == prSumPart;\n}\n"
-        "uint prBinWordAddress(uint texel)\n{\n"
-        "  return (texel - prBinPart * prSlotsPerBinBuffer * 4096u) * uint(prWordsPerPixel);\n}\n"
-        "uint prSumAddress(uint texel)\n{\n"
-        "  return (texel - prSumPart * prSlotsPerSumBuffer * 4096u) * 4u;\n}\n"
-        "uint prBinWordAt(uint a, uint k)\n{\n  return prBins0[a + k];\n}\n"
-        "void prSetBinWordAt(uint a, uint k, uint value)\n{\n  prBins0[a + k] = value;\n}\n"
-        "vec4 prSumAt(uint a, uint k)\n{\n  return prSums0[a + k];\n}\n"
-        "void prSetSumAt(uint a, uint k, vec4 value)\n{\n  prSums0[a + k] = value;\n}\n"
-        "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n";
+            "layout(std430, binding = " +
+      std::to_string(SumBinding) +
+      ") buffer prSumBuffer0\n{\n  vec4 prSums0[];\n};\n"
+      "layout(std430, binding = " +
+      std::to_string(BinBinding) +
+      ") buffer prBinBuffer0\n{\n  uint prBins0[];\n};\n"
+      "bool prSNDFInPart(uint texel)\n{\n  uint slot = texel >> 12u;\n"
+      "  return slot / prSlotsPerBinBuffer == prBinPart && slot / prSlotsPerSumBuffer == "
+      "prSumPart;\n}\n"
+      "uint prBinWordAddress(uint texel)\n{\n"
+      "  return (texel - prBinPart * prSlotsPerBinBuffer * 4096u) * uint(prWordsPerPixel);\n}\n"
+      "uint prSumAddress(uint texel)\n{\n"
+      "  return (texel - prSumPart * prSlotsPerSumBuffer * 4096u) * 4u;\n}\n"
+      "uint prBinWordAt(uint a, uint k)\n{\n  return prBins0[a + k];\n}\n"
+      "void prSetBinWordAt(uint a, uint k, uint value)\n{\n  prBins0[a + k] = value;\n}\n"
+      "vec4 prSumAt(uint a, uint k)\n{\n  return prSums0[a + k];\n}\n"
+      "void prSetSumAt(uint a, uint k, vec4 value)\n{\n  prSums0[a + k] = value;\n}\n"
+      "vec4 prSum(uint texel, uint k)\n{\n  return prSumAt(prSumAddress(texel), k);\n}\n";
     return code;
   }
 
@@ -350,7 +360,8 @@ int vtkSNDFTileCache::GetWordsPerTexel(int bins, bool moments)
 //------------------------------------------------------------------------------
 double vtkSNDFTileCache::GetTileBytes(int bins, bool moments)
 {
-  return static_cast<double>(TileTexels) * (4.0 * GetWordsPerTexel(bins, moments) + SumBytesPerTexel);
+  return static_cast<double>(TileTexels) *
+    (4.0 * GetWordsPerTexel(bins, moments) + SumBytesPerTexel);
 }
 
 //------------------------------------------------------------------------------
@@ -388,8 +399,8 @@ void vtkSNDFTileCache::QueryLimits(vtkOpenGLRenderWindow* context)
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockSize);
   // (at least the GL 4.3 minimum, 2^27 bytes, and int-addressable). A dispatch binds one bin
   // buffer and one sum buffer, 5 storage blocks in all (GL 4.3 guarantees 8).
-  internals.BlockBytes = static_cast<double>(std::min<GLint64>(
-    std::max<GLint64>(blockSize, GLint64(1) << 27), (GLint64(1) << 31) - 1));
+  internals.BlockBytes = static_cast<double>(
+    std::min<GLint64>(std::max<GLint64>(blockSize, GLint64(1) << 27), (GLint64(1) << 31) - 1));
 }
 
 //------------------------------------------------------------------------------
@@ -438,7 +449,8 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   bool ok = slots > 0 && binBuffers <= MaximumBinBuffers && sumBuffers <= MaximumSumBuffers &&
     vtkParticleComputeProgram::AllocateStorage(internals.Minimum, 4);
   auto allocate = [&](std::vector<vtkSmartPointer<vtkOpenGLBufferObject>>& buffers, int count,
-                    int per, std::size_t tileBytes) {
+                    int per, std::size_t tileBytes)
+  {
     for (int b = 0; b < count && ok; ++b)
     {
       if (static_cast<int>(buffers.size()) <= b)
@@ -468,7 +480,8 @@ bool vtkSNDFTileCache::Allocate(vtkOpenGLRenderWindow* context, int bins, int sl
   // (buffers beyond the ones needed now are released)
   for (auto* family : { &internals.BinBuffers, &internals.SumBuffers })
   {
-    const std::size_t used = static_cast<std::size_t>(family == &internals.BinBuffers ? binBuffers : sumBuffers);
+    const std::size_t used =
+      static_cast<std::size_t>(family == &internals.BinBuffers ? binBuffers : sumBuffers);
     for (std::size_t b = used; b < family->size(); ++b)
     {
       vtkParticleComputeProgram::ReleaseStorage((*family)[b], true);
@@ -560,8 +573,8 @@ int vtkSNDFTileCache::RecolourMap(vtkTextureObject* ramps, int size, const doubl
 }
 
 //------------------------------------------------------------------------------
-bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
-  vtkTextureObject* table, long long tableVersion)
+bool vtkSNDFTileCache::MapView(
+  const Placement& view, int width, int height, vtkTextureObject* table, long long tableVersion)
 {
   vtkInternals& internals = *this->Internals;
   if (this->NumberOfSlots < 1 || width < 1 || height < 1)
@@ -587,7 +600,8 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
   auto keyOf = [&](int level, long long px, long long py, long long tx, long long ty) {
     return Key{ level, px, py, tx, ty };
   };
-  auto touch = [&](int slot) {
+  auto touch = [&](int slot)
+  {
     Slot& s = internals.Slots[slot];
     s.LastUsed = internals.Stamp;
     if (s.Version != tableVersion)
@@ -597,7 +611,8 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
     }
   };
   // rebake the stale tiles gathered so far (before they are shown or averaged)
-  auto rebake = [&]() {
+  auto rebake = [&]()
+  {
     if (stale.empty())
     {
       return;
@@ -620,7 +635,8 @@ bool vtkSNDFTileCache::MapView(const Placement& view, int width, int height,
   {
     for (int i = 0; i < tilesX; ++i)
     {
-      auto it = internals.Table.find(keyOf(view.Level, view.Phase[0], view.Phase[1], tx0 + i, ty0 + j));
+      auto it =
+        internals.Table.find(keyOf(view.Level, view.Phase[0], view.Phase[1], tx0 + i, ty0 + j));
       if (it != internals.Table.end())
       {
         page[static_cast<std::size_t>(j) * tilesX + i] = it->second;
@@ -832,8 +848,8 @@ void vtkSNDFTileCache::ReleaseGraphicsResources(vtkWindow* w)
   internals.Recolour->ReleaseGraphicsResources(w);
   internals.MinSamples->ReleaseGraphicsResources(w);
   const bool current = vtkParticleComputeProgram::MakeCurrentForRelease(internals.Context);
-  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum, &internals.TileList,
-         &internals.Partial })
+  for (auto* buffer : { &internals.Page, &internals.Scratch, &internals.Minimum,
+         &internals.TileList, &internals.Partial })
   {
     vtkParticleComputeProgram::ReleaseStorage(*buffer, current);
   }

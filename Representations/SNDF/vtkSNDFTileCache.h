@@ -149,8 +149,8 @@ public:
    * fewer slots than the view has tiles. A call for the view, size and table version of the
    * last one does nothing (nothing but MapView() changes the tiles' residency).
    */
-  bool MapView(const Placement& view, int width, int height, vtkTextureObject* table,
-    long long tableVersion);
+  bool MapView(
+    const Placement& view, int width, int height, vtkTextureObject* table, long long tableVersion);
 
   /**
    * Apply the 3 x 3 colour matrix `m` (row-major) to the mean colour of every occupied bin of

@@ -51,10 +51,8 @@ public:
   vtkOpenGLRenderWindow* ContextAddress = nullptr;
   vtkSmartPointer<vtkOpenGLBufferObject> Heads = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   vtkSmartPointer<vtkOpenGLBufferObject> Nodes = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  vtkSmartPointer<vtkOpenGLBufferObject> Counters =
-    vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  vtkSmartPointer<vtkOpenGLBufferObject> Deferred =
-    vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Counters = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  vtkSmartPointer<vtkOpenGLBufferObject> Deferred = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   std::size_t HeadBytes = 0;
   long long Capacity = 0; // nodes
   int Width = 0;
@@ -148,8 +146,8 @@ void vtkParticleFragmentLists::PrepareProgram(unsigned int handle)
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
-  vtkTextureObject* accumulation, const std::function<void()>& draw)
+bool vtkParticleFragmentLists::Render(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* accumulation, const std::function<void()>& draw)
 {
   vtkInternals& internals = *this->Internals;
   const int width = accumulation ? static_cast<int>(accumulation->GetWidth()) : 0;
@@ -228,8 +226,8 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   if (internals.Capacity == 0 || internals.Capacity > maximumCapacity)
   {
     const double pixels = static_cast<double>(width) * height;
-    if (!allocateNodes(static_cast<long long>(std::min(
-          static_cast<double>(maximumCapacity), InitialNodesPerPixel * pixels))))
+    if (!allocateNodes(static_cast<long long>(
+          std::min(static_cast<double>(maximumCapacity), InitialNodesPerPixel * pixels))))
     {
       vtkErrorMacro(<< "Could not allocate GPU memory for the fragment lists.");
       return false;
@@ -321,8 +319,8 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
     resolve->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
     resolve->SetUniform2i("prBandOrigin", 0, band.first);
     resolve->SetUniform2i("prBandSize", width, band.second - band.first);
-    glBindImageTexture(0, static_cast<GLuint>(accumulation->GetHandle()), 0, GL_FALSE, 0,
-      GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      0, static_cast<GLuint>(accumulation->GetHandle()), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     resolve->Dispatch(static_cast<unsigned int>((width + 7) / 8),
       static_cast<unsigned int>((band.second - band.first + 7) / 8));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -340,8 +338,8 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
     vtkParticleComputeProgram::UseNone();
   }
   // the accumulation is read by texture fetches and blending afterwards
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint counters[3] = { 0, 0, 0 };
   vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
@@ -362,8 +360,8 @@ bool vtkParticleFragmentLists::Render(vtkOpenGLRenderWindow* context,
   internals.DroppedWarned = this->LastNumberOfDroppedFragments > 0;
   if (this->LastNumberOfIncompletePixels > 0 && !internals.IncompleteWarned)
   {
-    vtkWarningMacro(<< this->LastNumberOfIncompletePixels
-                    << " pixels have more than " << SegmentsHeld - 1
+    vtkWarningMacro(<< this->LastNumberOfIncompletePixels << " pixels have more than "
+                    << SegmentsHeld - 1
                     << " translucent spheres overlapping at one point of their ray: there the "
                        "spheres that found no room were left out of the exact compositing.");
   }

@@ -77,8 +77,8 @@ public:
       return true;
     }
     this->Context = ctx;
-    for (vtkTextureObject* tex : { this->Accumulation.Get(), this->MaskDepth.Get(),
-           this->OpaqueDepth.Get() })
+    for (vtkTextureObject* tex :
+      { this->Accumulation.Get(), this->MaskDepth.Get(), this->OpaqueDepth.Get() })
     {
       tex->SetContext(ctx);
       tex->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -108,8 +108,8 @@ public:
     return true;
   }
 
-  vtkOpenGLQuadHelper* Quad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* decl,
-    const char* impl)
+  vtkOpenGLQuadHelper* Quad(
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* decl, const char* impl)
   {
     if (!quad)
     {
@@ -247,9 +247,9 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
         resolved->AllocateDepth(vp[2], vp[3],
           componentType == GL_FLOAT
             ? vtkTextureObject::Float32
-            : (depthBits == 32 ? vtkTextureObject::Fixed32
-                               : (depthBits == 16 ? vtkTextureObject::Fixed16
-                                                  : vtkTextureObject::Fixed24)));
+            : (depthBits == 32
+                  ? vtkTextureObject::Fixed32
+                  : (depthBits == 16 ? vtkTextureObject::Fixed16 : vtkTextureObject::Fixed24)));
       }
       internals.ResolveFormat = format;
       internals.ResolveFBO->SetContext(ctx);
@@ -384,8 +384,7 @@ void vtkParticleFrontToBackTarget::End()
   }
 
   vtkOpenGLQuadHelper* quad = internals.Quad(internals.BlendQuad,
-    "uniform sampler2D accumulation;\n",
-    "  gl_FragData[0] = texture(accumulation, texCoord);\n");
+    "uniform sampler2D accumulation;\n", "  gl_FragData[0] = texture(accumulation, texCoord);\n");
   if (quad)
   {
     // over the opaque image: C = C_acc + (1 - A_acc) C_opaque

@@ -32,12 +32,12 @@
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkPoints.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -58,14 +58,14 @@ namespace
 // which shader a helper holds
 enum class Variant
 {
-  Opaque,          // the core: opaque particles (depth writes) and picking
-  Translucent,     // the emission-absorption composite of the translucent stage
-  TranslucentList  // the same segments appended to per-pixel lists (exact overlaps)
+  Opaque,         // the core: opaque particles (depth writes) and picking
+  Translucent,    // the emission-absorption composite of the translucent stage
+  TranslucentList // the same segments appended to per-pixel lists (exact overlaps)
 };
 
 // GS culling modes (uniform prCullMode)
-const int CullOpaqueStage = 0;    // opaque variant: only Theta_a = 1
-const int CullAllVisible = 1;     // either variant: everything with Theta_a > 0
+const int CullOpaqueStage = 0;     // opaque variant: only Theta_a = 1
+const int CullAllVisible = 1;      // either variant: everything with Theta_a > 0
 const int CullTranslucentOnly = 0; // translucent variant: Theta_a in (0, 1)
 
 struct OpacitySummary
@@ -333,38 +333,40 @@ void vtkTransparentSphereMapper::PrepareOpacities()
   const double hi = this->OpacityRange[1];
 
   vtkSMPThreadLocal<OpacitySummary> local;
-  vtkSMPTools::For(0, numPts, [&](vtkIdType begin, vtkIdType end) {
-    OpacitySummary& s = local.Local();
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, numPts,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      double t = 1.0;
-      if (array)
+      OpacitySummary& s = local.Local();
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        const double v = array->GetComponent(i, 0);
-        if (std::isnan(v))
+        double t = 1.0;
+        if (array)
         {
-          ++s.NaNs;
-          t = 0.0;
+          const double v = array->GetComponent(i, 0);
+          if (std::isnan(v))
+          {
+            ++s.NaNs;
+            t = 0.0;
+          }
+          else if (hi == lo)
+          {
+            t = v < lo ? 0.0 : 1.0;
+          }
+          else
+          {
+            t = std::min(1.0, std::max(0.0, (v - lo) / (hi - lo)));
+          }
         }
-        else if (hi == lo)
+        theta[i] = t;
+        // the optical depth in double: Theta = 1 - 1e-7 is not representable as a float
+        kappa[i] = t >= 1.0 ? -1.0f : (t <= 0.0 ? 0.0f : static_cast<float>(-std::log1p(-t)));
+        if (r[i] > 0.0f)
         {
-          t = v < lo ? 0.0 : 1.0;
-        }
-        else
-        {
-          t = std::min(1.0, std::max(0.0, (v - lo) / (hi - lo)));
+          s.AnyOpaque |= t >= 1.0;
+          s.AnyTranslucent |= (t > 0.0 && t < 1.0);
         }
       }
-      theta[i] = t;
-      // the optical depth in double: Theta = 1 - 1e-7 is not representable as a float
-      kappa[i] = t >= 1.0 ? -1.0f : (t <= 0.0 ? 0.0f : static_cast<float>(-std::log1p(-t)));
-      if (r[i] > 0.0f)
-      {
-        s.AnyOpaque |= t >= 1.0;
-        s.AnyTranslucent |= (t > 0.0 && t < 1.0);
-      }
-    }
-  });
+    });
   OpacitySummary total;
   for (const OpacitySummary& s : local)
   {
@@ -660,8 +662,9 @@ void vtkTransparentSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
     internals.SupportContext = ctx;
     if (!internals.Support && !internals.SupportWarned)
     {
-      vtkErrorMacro(<< why << " Translucent particles are drawn as opaque spheres composited by "
-                              "VTK's translucency pass, without the emission-absorption model.");
+      vtkErrorMacro(<< why
+                    << " Translucent particles are drawn as opaque spheres composited by "
+                       "VTK's translucency pass, without the emission-absorption model.");
       internals.SupportWarned = true;
     }
   }
@@ -753,8 +756,9 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
       internals.DrawTimer.Reset();
       internals.DrawTimer.Start();
     }
-    const int chunks =
-      this->EarlyTermination ? static_cast<int>(std::min<vtkIdType>(this->NumberOfChunks, numPts)) : 1;
+    const int chunks = this->EarlyTermination
+      ? static_cast<int>(std::min<vtkIdType>(this->NumberOfChunks, numPts))
+      : 1;
     vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
     for (int c = 0; c < chunks; ++c)
     {
@@ -971,7 +975,8 @@ void vtkTransparentSphereMapper::FetchTimings()
     return;
   }
   internals.TimingsPending = false;
-  auto seconds = [](vtkOpenGLRenderTimer& timer) -> double {
+  auto seconds = [](vtkOpenGLRenderTimer& timer) -> double
+  {
     if (!timer.Stopped())
     {
       return 0.0;
@@ -1098,8 +1103,8 @@ bool vtkTransparentSphereMapper::UpdateSortedOrder(vtkRenderer* ren, vtkActor* a
   {
     const std::string text = "Sorting " + std::to_string(count) + " translucent particles";
     this->SetProgressText(text.c_str());
-    progressTag = internals.Sort->AddObserver(vtkCommand::ProgressEvent, this,
-      &vtkTransparentSphereMapper::ForwardSortProgress);
+    progressTag = internals.Sort->AddObserver(
+      vtkCommand::ProgressEvent, this, &vtkTransparentSphereMapper::ForwardSortProgress);
   }
   const bool sorted = internals.Sort->Sort(count);
   if (progressTag)
@@ -1155,10 +1160,10 @@ void vtkTransparentSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VolumeMix: " << this->VolumeMix << "\n";
   os << indent << "OpacityReference: " << this->OpacityReference << "\n";
   os << indent << "ColumnLayers: " << this->ColumnLayers << "\n";
-  os << indent << "OpacityArrayName: "
-     << (this->OpacityArrayName ? this->OpacityArrayName : "(none)") << "\n";
-  os << indent << "OpacityRange: " << this->OpacityRange[0] << " " << this->OpacityRange[1]
+  os << indent
+     << "OpacityArrayName: " << (this->OpacityArrayName ? this->OpacityArrayName : "(none)")
      << "\n";
+  os << indent << "OpacityRange: " << this->OpacityRange[0] << " " << this->OpacityRange[1] << "\n";
   os << indent << "EarlyTermination: " << this->EarlyTermination << "\n";
   os << indent << "NumberOfChunks: " << this->NumberOfChunks << "\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";

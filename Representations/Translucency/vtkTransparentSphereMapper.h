@@ -26,9 +26,9 @@
  *   over all rays (not the solid sphere's): with b the impact parameter, the integral is
  *   increasing in b on [0, r_s] for both models (its derivative is positive there), so the
  *   maximum is at b = r_s for the constant model, chord 2 r sqrt(1 - f^2), and at
- *   b = max(r_s, r / sqrt(2)) for the squared-distance model, i.e. the solid value 2 sqrt(2) r^3 / 3
- *   for f <= 1/sqrt(2) and 2 r^3 sqrt(1 - f^2) (1 + 2 f^2) / 3 above. See
- *   GetMaximumPathIntegral(); the tests check it against a numerical maximisation.
+ *   b = max(r_s, r / sqrt(2)) for the squared-distance model, i.e. the solid value 2 sqrt(2) r^3 /
+ * 3 for f <= 1/sqrt(2) and 2 r^3 sqrt(1 - f^2) (1 + 2 f^2) / 3 above. See GetMaximumPathIntegral();
+ * the tests check it against a numerical maximisation.
  *
  * Numerics. Along a ray the integral is evaluated relative to the ray's closest approach to the
  * centre (impact parameter b, parameter tau from that point), never from the eye: Eq. 17 written
@@ -79,9 +79,10 @@
  * fit, see vtkParticleFragmentLists). AUTOMATIC (default) uses the lists when two drawn
  * translucent spheres penetrate each other by more than OverlapTolerance of the smaller radius
  * (|p_i - p_j| < s (r_i + r_j - t min(r_i, r_j)), s = RadiusScaleFactor; checked over the
- * occupied cells of a vtkParticleCellList when the positions, radii or opacities change) and the sort otherwise.
- * Where spheres do not overlap both paths agree; early termination applies to the sorted path
- * only. The lists cost more than the sorted path (measured: Documentation/Translucency.md).
+ * occupied cells of a vtkParticleCellList when the positions, radii or opacities change) and the
+ * sort otherwise. Where spheres do not overlap both paths agree; early termination applies to the
+ * sorted path only. The lists cost more than the sorted path (measured:
+ * Documentation/Translucency.md).
  *
  * Compositing with other geometry: the translucent particles are accumulated front to back in
  * an off-screen float buffer. Each ray segment ends at the opaque depth (a copy of the depth
@@ -104,8 +105,8 @@
 #ifndef vtkTransparentSphereMapper_h
 #define vtkTransparentSphereMapper_h
 
+#include "vtkParticleEmissionModel.h"               // for DensityModels
 #include "vtkParticleRenderingTranslucencyModule.h" // for export macro
-#include "vtkParticleEmissionModel.h" // for DensityModels
 #include "vtkParticleSphereMapper.h"
 
 class vtkDoubleArray;
@@ -113,7 +114,8 @@ class vtkParticleDepthSort;
 class vtkParticleFragmentLists;
 class vtkParticleFrontToBackTarget;
 
-class VTKPARTICLERENDERINGTRANSLUCENCY_EXPORT vtkTransparentSphereMapper : public vtkParticleSphereMapper
+class VTKPARTICLERENDERINGTRANSLUCENCY_EXPORT vtkTransparentSphereMapper
+  : public vtkParticleSphereMapper
 {
 public:
   static vtkTransparentSphereMapper* New();
@@ -235,9 +237,9 @@ public:
 
   enum OverlapCompositingModes
   {
-    AUTOMATIC = 0,     // exact where the data has overlapping translucent spheres, else sorted
+    AUTOMATIC = 0,      // exact where the data has overlapping translucent spheres, else sorted
     SORTED_SPHERES = 1, // the paper: each sphere composited whole in depth order
-    EXACT_OVERLAP = 2  // per-pixel lists, overlaps integrated exactly
+    EXACT_OVERLAP = 2   // per-pixel lists, overlaps integrated exactly
   };
 
   ///@{
@@ -287,8 +289,8 @@ public:
   /**
    * The maximum over all rays of the density integral through a sphere of radius 1, the I_max
    * that sets lambda (see the class description): 2 sqrt(1 - f^2) for CONSTANT_DENSITY, for
-   * SQUARED_DISTANCE_DENSITY 2 sqrt(2) / 3 when f <= 1/sqrt(2), else 2 sqrt(1 - f^2) (1 + 2 f^2) / 3.
-   * For a sphere of radius r multiply by r (constant) or r^3 (squared distance).
+   * SQUARED_DISTANCE_DENSITY 2 sqrt(2) / 3 when f <= 1/sqrt(2), else 2 sqrt(1 - f^2) (1 + 2 f^2)
+   * / 3. For a sphere of radius r multiply by r (constant) or r^3 (squared distance).
    */
   static double GetMaximumPathIntegral(int densityModel, double hollowFraction);
 
@@ -354,8 +356,7 @@ protected:
 
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void SetMapperShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
   void CacheParticleAttributes(vtkRenderer* ren, vtkActor* act) override;
   // the translucent variant writes no depth: no occlusion test there

@@ -57,8 +57,8 @@ struct Stats
   long long Pixels = 0;
 };
 
-Stats Measure(const std::vector<double>& a, const std::vector<double>& ref,
-  const std::vector<bool>& use)
+Stats Measure(
+  const std::vector<double>& a, const std::vector<double>& ref, const std::vector<bool>& use)
 {
   Stats s;
   double sa = 0, sr = 0, srr = 0, sar = 0, sd = 0, sdd = 0;
@@ -220,7 +220,8 @@ int TestDensityVolumeAOAccuracy(int argc, char* argv[])
   renderer->SetPass(ao);
   window->Render();
   const std::vector<double> gpu = Red(window);
-  bool repeatable = vtkParticleImageComparison::TestRepeatable(window, "TestDensityVolumeAOAccuracy");
+  bool repeatable =
+    vtkParticleImageComparison::TestRepeatable(window, "TestDensityVolumeAOAccuracy");
 
   vtkNew<vtkParticleReferenceRenderer> reference;
   reference->SetRenderer(renderer);
@@ -271,8 +272,8 @@ int TestDensityVolumeAOAccuracy(int argc, char* argv[])
     const Stats s = Measure(*w.second, ref, use);
     Print(w.first, s);
     const bool rejected = !Within(s, bounds, why);
-    std::cout << "MUST-FAIL " << w.first << ": " << (rejected ? "rejected (" + why + ")" : "ACCEPTED")
-              << "\n";
+    std::cout << "MUST-FAIL " << w.first << ": "
+              << (rejected ? "rejected (" + why + ")" : "ACCEPTED") << "\n";
     ok &= prTest::Check(rejected, std::string("the bounds accept the picture with ") + w.first);
   }
   // Strength 2 (the ParaView default): the pass's darkening doubled in the shader, measured as
@@ -285,8 +286,8 @@ int TestDensityVolumeAOAccuracy(int argc, char* argv[])
   ao->SetStrength(1.0);
   const Stats two = Measure(strong, ref, use);
   Print("pass at strength 2", two);
-  ok &= prTest::Check(two.RMSE <= 0.12 && two.Slope >= 0.5 && two.Slope <= 0.8 &&
-      std::abs(two.Bias) <= 0.05,
+  ok &= prTest::Check(
+    two.RMSE <= 0.12 && two.Slope >= 0.5 && two.Slope <= 0.8 && std::abs(two.Bias) <= 0.05,
     "strength 2 is not as dark as ray-traced AO on average");
   ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 1, "no volume rebuild for the strength");
   renderer->SetPass(nullptr);

@@ -182,7 +182,8 @@ int TestDensityVolumeAOPass(int argc, char* argv[])
   }
   std::cout << "translucent particles: " << darkerTranslucent << " pixels darker with AO\n";
   ok &= prTest::Check(darkerTranslucent > 5000, "AO darkens translucent particles");
-  ok &= prTest::Check(ao->GetNumberOfVolumeBuilds() == 4, "a rebuild for the new mapper (and the mode)");
+  ok &= prTest::Check(
+    ao->GetNumberOfVolumeBuilds() == 4, "a rebuild for the new mapper (and the mode)");
   renderer->SetPass(nullptr);
   ao->ReleaseGraphicsResources(window);
   return (ok && baseline) ? EXIT_SUCCESS : EXIT_FAILURE;

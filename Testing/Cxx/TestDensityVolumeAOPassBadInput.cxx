@@ -106,9 +106,9 @@ long long CompareOnOff(Scene& scene, const std::string& what, bool& ok, int* dar
     *darkest = maxDarkening;
   }
   std::cout << what << ": " << plain.size() / 4 - background << " particle pixels, " << darker
-            << " darker with AO (by up to " << maxDarkening << "/765), " << brighter << " brighter, " << changedBackground
-            << " background pixels changed; " << scene.Messages->Warnings << " warning(s), "
-            << scene.Messages->Errors << " error(s)"
+            << " darker with AO (by up to " << maxDarkening << "/765), " << brighter
+            << " brighter, " << changedBackground << " background pixels changed; "
+            << scene.Messages->Warnings << " warning(s), " << scene.Messages->Errors << " error(s)"
             << (scene.Messages->All.empty() ? "" : "; " + scene.Messages->All) << "\n";
   ok &= prTest::Check(changedBackground == 0, what + ": background untouched");
   ok &= prTest::Check(brighter == 0, what + ": AO never brightens");
@@ -206,7 +206,8 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
     scene.Renderer->AddActor(Particles(points, 0.5));
     scene.Renderer->ResetCamera();
     CompareOnOff(scene, "one point", ok);
-    ok &= prTest::Check(scene.AO->GetDensityVolume()->GetDimensions()[0] == 1, "one point: 1 voxel");
+    ok &=
+      prTest::Check(scene.AO->GetDensityVolume()->GetDimensions()[0] == 1, "one point: 1 voxel");
   }
 
   // NaN and Inf positions among valid ones: skipped by the volume (finite grid), so the picture
@@ -250,8 +251,8 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
     }
     std::cout << "NaN and Inf positions: max |image - image of the finite particles| " << worst
               << "/255\n";
-    ok &= prTest::Check(worst <= 1,
-      "NaN and Inf positions: the same picture as the finite particles alone");
+    ok &= prTest::Check(
+      worst <= 1, "NaN and Inf positions: the same picture as the finite particles alone");
   }
 
   // huge resolutions: beyond MaximumVoxelCount, then beyond the GPU's largest 3D texture
@@ -280,8 +281,8 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
     const double voxels = static_cast<double>(dims[0]) * dims[1] * dims[2];
     ok &= prTest::Check(voxels <= (1 << 16) && voxels > (1 << 14),
       "voxel budget: " + std::to_string(voxels) + " voxels, within 2^16 and not far below");
-    ok &= prTest::Check(scene.Messages->Warnings >= 1 && scene.Messages->Errors == 0,
-      "voxel budget: a warning");
+    ok &= prTest::Check(
+      scene.Messages->Warnings >= 1 && scene.Messages->Errors == 0, "voxel budget: a warning");
 
     // the default budget (2^26 voxels) still applies: 4096 per axis would be 4096^2 x 1200
     GLint maxTexture3D = 0;
@@ -289,10 +290,10 @@ int TestDensityVolumeAOPassBadInput(int, char*[])
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxTexture3D);
     volume->SetMaximumVoxelCount(vtkIdType(1) << 26);
     scene.Messages->Reset();
-    CompareOnOff(scene, "resolution 4096, GL_MAX_3D_TEXTURE_SIZE " + std::to_string(maxTexture3D),
-      ok);
-    ok &= prTest::Check(volume->GetDimensions()[0] <= maxTexture3D,
-      "at most GL_MAX_3D_TEXTURE_SIZE voxels per axis");
+    CompareOnOff(
+      scene, "resolution 4096, GL_MAX_3D_TEXTURE_SIZE " + std::to_string(maxTexture3D), ok);
+    ok &= prTest::Check(
+      volume->GetDimensions()[0] <= maxTexture3D, "at most GL_MAX_3D_TEXTURE_SIZE voxels per axis");
     if (maxTexture3D < 4096)
     {
       ok &= prTest::Check(scene.Messages->All.find("3D texture") != std::string::npos,

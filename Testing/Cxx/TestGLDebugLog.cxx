@@ -7,11 +7,11 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkNew.h"
-#include "vtkRenderWindow.h"
 #include "vtkParticleGLDebugLog.h"
 #include "vtkParticleImageComparison.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
 #include "vtkParticleCompat.h"
@@ -42,10 +42,12 @@ int TestGLDebugLog(int, char*[])
 
   // an error in every frame (an observer of the renderer's end): the check must fail
   vtkNew<vtkCallbackCommand> wrong;
-  wrong->SetCallback([](vtkObject*, unsigned long, void*, void*) {
-    glBindTexture(GL_TEXTURE_2D, 987654321u);
-    glGetError(); // VTK's own error checks must not see it first
-  });
+  wrong->SetCallback(
+    [](vtkObject*, unsigned long, void*, void*)
+    {
+      glBindTexture(GL_TEXTURE_2D, 987654321u);
+      glGetError(); // VTK's own error checks must not see it first
+    });
   renderer->AddObserver(vtkCommand::EndEvent, wrong);
   ok &= prTest::Check(!vtkParticleImageComparison::TestRepeatable(window, "frame with a GL error"),
     "a frame with a GL error fails the repeatability check");

@@ -95,8 +95,8 @@ int TestImageComparison(int argc, char* argv[])
 
   // 10 % darker: the mean error is 10 % of the mean colour
   vtkSmartPointer<vtkImageData> darker = vtkParticleImageComparison::Scaled(baseline, 0.9);
-  ok &= prTest::Check(comparison->TestRejects(darker, baseline, nullptr, "10 % darker"),
-    "10 % darker is rejected");
+  ok &= prTest::Check(
+    comparison->TestRejects(darker, baseline, nullptr, "10 % darker"), "10 % darker is rejected");
   comparison->CompareImages(darker, baseline);
   double meanRed = 0.0;
   vtkDataArray* values = baseline->GetPointData()->GetScalars();
@@ -133,8 +133,7 @@ int TestImageComparison(int argc, char* argv[])
     comparison->TestImages(moved1, flat, nullptr, temp.c_str(), "edge moved 1 px, mask 1"),
     "an edge moved by one pixel passes inside a one-pixel mask");
   ok &= prTest::Check(comparison->GetNumberOfExcludedPixels() > 0, "the mask excludes pixels");
-  ok &= prTest::Check(
-    comparison->TestRejects(moved2, flat, nullptr, "edge moved 2 px, mask 1"),
+  ok &= prTest::Check(comparison->TestRejects(moved2, flat, nullptr, "edge moved 2 px, mask 1"),
     "an edge one pixel outside the mask is rejected");
   Criteria(comparison, 0);
 
@@ -147,8 +146,8 @@ int TestImageComparison(int argc, char* argv[])
   comparison->SetMaximumError(10.0 / 255.0);
   ok &= prTest::Check(comparison->TestRejects(speck, baseline, nullptr, "one pixel, max 10/255"),
     "one pixel of 20/255 is rejected under a maximum error of 10/255");
-  ok &= prTest::Check(comparison->GetMaxErrorPixel()[0] == 80 &&
-      comparison->GetMaxErrorPixel()[1] == 60,
+  ok &= prTest::Check(
+    comparison->GetMaxErrorPixel()[0] == 80 && comparison->GetMaxErrorPixel()[1] == 60,
     "the largest error is reported where it is");
   Criteria(comparison, 0);
 
@@ -168,8 +167,8 @@ int TestImageComparison(int argc, char* argv[])
   nanValues->SetComponent(100, 0, std::numeric_limits<double>::quiet_NaN());
   nan->GetPointData()->SetScalars(nanValues);
   comparison->SetMaximumError(0.5);
-  ok &= prTest::Check(comparison->TestRejects(nan, baseline, nullptr, "NaN pixel"),
-    "a NaN pixel is rejected");
+  ok &= prTest::Check(
+    comparison->TestRejects(nan, baseline, nullptr, "NaN pixel"), "a NaN pixel is rejected");
   Criteria(comparison, 0);
 
   // another size: not compared, a rejection for the wrong reason
@@ -184,8 +183,8 @@ int TestImageComparison(int argc, char* argv[])
   // the baseline test: a missing baseline fails; a real one passes, and the built-in wrong
   // pictures are rejected
   const std::string baselineFile = temp + "/TestImageComparison_baseline.png";
-  ok &= prTest::Check(vtkParticleImageComparison::WritePNG(baseline, baselineFile.c_str()),
-    "baseline written");
+  ok &= prTest::Check(
+    vtkParticleImageComparison::WritePNG(baseline, baselineFile.c_str()), "baseline written");
   ok &= prTest::Check(!comparison->TestImage(moved1, (temp + "/no_such_file.png").c_str(),
                         temp.c_str(), "TestImageComparison_missing"),
     "a missing baseline fails");
@@ -203,8 +202,8 @@ int TestImageComparison(int argc, char* argv[])
   loose->SetTolerance(0.5);
   loose->SetMaximumOverToleranceFraction(1.0);
   loose->SetMaximumMeanError(0.2);
-  ok &= prTest::Check(!loose->TestImage(Disk(80.0, 60.0, 40.0), baselineFile.c_str(),
-                        temp.c_str(), "TestImageComparison_loose"),
+  ok &= prTest::Check(!loose->TestImage(Disk(80.0, 60.0, 40.0), baselineFile.c_str(), temp.c_str(),
+                        "TestImageComparison_loose"),
     "criteria that accept a 10 % darker picture fail the test");
 
   // the repeatability check: identical only when every 8-bit RGB value is the same
@@ -217,9 +216,9 @@ int TestImageComparison(int argc, char* argv[])
   ok &= prTest::Check(
     !vtkParticleImageComparison::TestIdentical(baseline, oneStep, "one value one step off"),
     "one channel of one pixel 1/255 off is not identical");
-  ok &= prTest::Check(
-    !vtkParticleImageComparison::TestIdentical(baseline, moved1, "edge moved 1 px"),
-    "a moved edge is not identical");
+  ok &=
+    prTest::Check(!vtkParticleImageComparison::TestIdentical(baseline, moved1, "edge moved 1 px"),
+      "a moved edge is not identical");
   ok &= prTest::Check(
     !vtkParticleImageComparison::TestIdentical(baseline, nan, "NaN pixel"), "NaN is not identical");
   ok &= prTest::Check(!vtkParticleImageComparison::TestIdentical(baseline, small, "other size"),

@@ -57,8 +57,8 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   int* dims = volume->GetDimensions();
   if (expectDims)
   {
-    ok &= prTest::Check(dims[0] == expectDims[0] && dims[1] == expectDims[1] &&
-        dims[2] == expectDims[2],
+    ok &= prTest::Check(
+      dims[0] == expectDims[0] && dims[1] == expectDims[1] && dims[2] == expectDims[2],
       what + ": dimensions " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" +
         std::to_string(dims[2]));
   }
@@ -84,8 +84,8 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
       int v[3];
       for (int k = 0; k < 3; ++k)
       {
-        v[k] = std::min(dims[k] - 1,
-          std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) / edge))));
+        v[k] = std::min(
+          dims[k] - 1, std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) / edge))));
       }
       direct[v[0] + dims[0] * (v[1] + dims[1] * v[2])] += amount;
       continue;
@@ -118,8 +118,8 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   double worstDirect = 0.0;
   for (size_t j = 0; j < cpu.size(); ++j)
   {
-    worstDirect = std::max(worstDirect,
-      std::abs(cpu[j] - std::min(1.0, volume->GetDensityFactor() * direct[j])));
+    worstDirect = std::max(
+      worstDirect, std::abs(cpu[j] - std::min(1.0, volume->GetDensityFactor() * direct[j])));
   }
 
   // the GPU from plain buffers of float positions and radii
@@ -142,8 +142,7 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   positionBuffer->Upload(xyz, vtkOpenGLBufferObject::ArrayBuffer);
   radiusBuffer->Upload(r, vtkOpenGLBufferObject::ArrayBuffer);
   const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-  ok &= prTest::Check(
-    volume->ComputeOnGPU(ctx, positionBuffer, 3, identity, radiusBuffer, 1.0, n),
+  ok &= prTest::Check(volume->ComputeOnGPU(ctx, positionBuffer, 3, identity, radiusBuffer, 1.0, n),
     what + ": GPU volume");
   ok &= prTest::Check(volume->ReadVolumeBuffer(), what + ": GPU volume read back");
   positionBuffer->ReleaseGraphicsResources();
@@ -170,11 +169,11 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
     sumCPU += cpu[j];
     sumGPU += gpu[j];
   }
-  std::cout << what << ": " << dims[0] << "x" << dims[1] << "x" << dims[2] << " voxels of "
-            << edge << ", mean density " << sumCPU / cpu.size() << ", max |CPU - Eq. 5| "
-            << worstDirect << ", max |GPU - CPU| " << worstGPU << " (" << flipped
-            << " voxels with a particle on a face assigned differently), total "
-            << sumCPU << " vs " << sumGPU << "\n";
+  std::cout << what << ": " << dims[0] << "x" << dims[1] << "x" << dims[2] << " voxels of " << edge
+            << ", mean density " << sumCPU / cpu.size() << ", max |CPU - Eq. 5| " << worstDirect
+            << ", max |GPU - CPU| " << worstGPU << " (" << flipped
+            << " voxels with a particle on a face assigned differently), total " << sumCPU << " vs "
+            << sumGPU << "\n";
   ok &= prTest::Check(gpu.size() == cpu.size(), what + ": GPU volume size");
   ok &= prTest::Check(worstDirect <= 1e-5, what + ": CPU volume is Eq. 5");
   // fixed point: each particle's contribution rounded to 2^-21 of a voxel volume
@@ -182,7 +181,8 @@ bool Compare(vtkOpenGLRenderWindow* ctx, vtkParticleDensityVolume* volume, vtkDa
   ok &= prTest::Check(flipped <= std::max<long long>(4, static_cast<long long>(cpu.size() / 1000)),
     what + ": few face-straddling particles");
   const bool saturated = *std::max_element(cpu.begin(), cpu.end()) >= 1.0f;
-  ok &= prTest::Check(saturated || std::abs(sumCPU - sumGPU) <= 1e-6 * n + 1e-3 * std::abs(sumCPU) * 0.01,
+  ok &= prTest::Check(
+    saturated || std::abs(sumCPU - sumGPU) <= 1e-6 * n + 1e-3 * std::abs(sumCPU) * 0.01,
     what + ": same total density");
   return ok;
 }
@@ -274,8 +274,8 @@ int TestParticleDensityVolume(int argc, char* argv[])
   }
   bool ok = true;
   vtkNew<vtkParticleDensityVolume> volume;
-  for (int mode : { vtkParticleDensityVolume::NEAREST_VOXEL_SPLAT,
-         vtkParticleDensityVolume::TRILINEAR_SPLAT })
+  for (int mode :
+    { vtkParticleDensityVolume::NEAREST_VOXEL_SPLAT, vtkParticleDensityVolume::TRILINEAR_SPLAT })
   {
     volume->SetSplatMode(mode);
     ok &= Cases(argc, argv, ctx, volume,

@@ -1,7 +1,7 @@
 // vtkParticleDepthSort and vtkParticleComputeProgram: every sort is compared exactly with
 // std::stable_sort of (mapped key, index) on the CPU, indices and keys, with the skipping of
-// uniform digits on and off and with coalesced and direct writes. Needs OpenGL 4.3: an unsupported context is a failure, not a skip.
-// No baseline image (the -V argument of the driver is ignored).
+// uniform digits on and off and with coalesced and direct writes. Needs OpenGL 4.3: an unsupported
+// context is a failure, not a skip. No baseline image (the -V argument of the driver is ignored).
 #include "prTestUtilities.h"
 
 #include "vtkNew.h"
@@ -39,7 +39,6 @@ bool Expect(bool condition, const std::string& what)
   }
   return condition;
 }
-
 
 std::uint32_t Bits(float f)
 {
@@ -172,7 +171,8 @@ void TimeSorts(vtkParticleDepthSort* sort, const std::string& name, const std::v
     if (r == 0)
     {
       std::cout << name << (skip ? "" : ", skipping off")
-                << (sort->GetCoalescedWrites() ? "" : ", direct writes") << ": wall " << wall * 1e3 << " ms, ";
+                << (sort->GetCoalescedWrites() ? "" : ", direct writes") << ": wall " << wall * 1e3
+                << " ms, ";
     }
   }
   std::sort(seconds.begin(), seconds.end());
@@ -299,8 +299,7 @@ void CheckDrawWithIndices(vtkParticleDepthSort* sort, std::size_t n)
     glBindVertexArray(0);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
     const std::vector<std::uint32_t> drawn = ReadBuffer<std::uint32_t>(captured, n);
-    const std::vector<std::uint32_t> indices =
-      ReadBuffer<std::uint32_t>(sort->GetIndexBuffer(), n);
+    const std::vector<std::uint32_t> indices = ReadBuffer<std::uint32_t>(sort->GetIndexBuffer(), n);
     Expect(drawn == indices, "glDrawElements with the index buffer fetches the sorted indices");
     captured->ReleaseGraphicsResources();
     glDeleteVertexArrays(1, &vao);
@@ -403,8 +402,8 @@ int TestParticleDepthSort(int, char*[])
     SortAndCheck(context, sort, "all NaN",
       { std::nanf(""), FromBits(0xFFC00000u), FromBits(0x7F800001u), std::nanf("") }, skip);
     std::vector<float> ascending = RandomKeys(5000, 7);
-    std::sort(ascending.begin(), ascending.end(),
-      [](float a, float b) { return MapKey(a) < MapKey(b); });
+    std::sort(
+      ascending.begin(), ascending.end(), [](float a, float b) { return MapKey(a) < MapKey(b); });
     SortAndCheck(context, sort, "already sorted", ascending, skip);
     std::vector<float> descending(ascending.rbegin(), ascending.rend());
     SortAndCheck(context, sort, "reverse sorted", descending, skip);
@@ -431,8 +430,8 @@ int TestParticleDepthSort(int, char*[])
         [&](std::uint32_t x, std::uint32_t y) { return MapKey(million[x]) < MapKey(million[y]); });
       std::cout << "1e6 random keys, CPU std::stable_sort for comparison: "
                 << (vtkTimerLog::GetUniversalTime() - start) * 1e3 << " ms\n";
-      TimeSorts(sort, "1e6 keys, low 8 bits differ (2 passes)", LowBitKeys(1000000, 8, 3.0f, 9),
-        skip);
+      TimeSorts(
+        sort, "1e6 keys, low 8 bits differ (2 passes)", LowBitKeys(1000000, 8, 3.0f, 9), skip);
     }
     const int keyBuffer = sort->GetKeyBuffer()->GetHandle();
     const int indexBuffer = sort->GetIndexBuffer()->GetHandle();
@@ -482,7 +481,7 @@ int TestParticleDepthSort(int, char*[])
   }
 
   sort->ReleaseGraphicsResources(context);
-  Expect(sort->GetKeyBuffer()->GetHandle() == 0 && sort->GetCapacity() == 0,
-    "ReleaseGraphicsResources");
+  Expect(
+    sort->GetKeyBuffer()->GetHandle() == 0 && sort->GetCapacity() == 0, "ReleaseGraphicsResources");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -129,7 +129,8 @@ int TestParticleSphereMapperExtremes(int argc, char* argv[])
     actor->SetMapper(mappers[c]);
     renderers[c]->AddActor(actor);
     renderers[c]->SetBackground(0.1, 0.1, 0.15);
-    renderers[c]->SetViewport((c % 3) / 3.0, 0.5 - (c / 3) / 2.0, (c % 3 + 1) / 3.0, 1.0 - (c / 3) / 2.0);
+    renderers[c]->SetViewport(
+      (c % 3) / 3.0, 0.5 - (c / 3) / 2.0, (c % 3 + 1) / 3.0, 1.0 - (c / 3) / 2.0);
     window->AddRenderer(renderers[c]);
     vtkCamera* camera = renderers[c]->GetActiveCamera();
     const double s = scales[c];
@@ -173,9 +174,9 @@ int TestParticleSphereMapperExtremes(int argc, char* argv[])
   // the eye is inside a sphere: its inner surface covers the whole viewport
   ok &= prTest::Check(Coverage(window, renderers[1]) > 0.999, "case 1: inner surface not full");
   // cases 3 and 4 are the scaled copies of one scene: same picture (coverage) within 1%
-  ok &= prTest::Check(std::abs(Coverage(window, renderers[3]) - Coverage(window, renderers[4])) <
-      0.01,
-    "cases 3/4: scaled scenes differ");
+  ok &=
+    prTest::Check(std::abs(Coverage(window, renderers[3]) - Coverage(window, renderers[4])) < 0.01,
+      "cases 3/4: scaled scenes differ");
   // Criteria: the GPU's own image on the same platform (rounding only); silhouettes compared.
   prTest::ImageCriteria criteria;
   criteria.Tolerance = 2.0;
@@ -184,7 +185,8 @@ int TestParticleSphereMapperExtremes(int argc, char* argv[])
   ok &= prTest::CompareWithBaseline(argc, argv, window, criteria);
 
   // panels 3 and 4: the same picture; panel 2: the parallel projection of panel 0 at scale 3.2
-  auto panel = [&](int c) {
+  auto panel = [&](int c)
+  {
     vtkNew<vtkImageData> image;
     vtkParticleImageComparison::GrabColorBuffer(window, image, renderers[c]);
     return vtkParticleImageComparison::ExtractRGB(image);
@@ -193,15 +195,15 @@ int TestParticleSphereMapperExtremes(int argc, char* argv[])
   same->SetTolerance(2.0 / 255.0);
   same->SetMaximumOverToleranceFraction(2e-3);
   same->SetMaximumMeanError(0.5 / 255.0);
-  ok &= prTest::Check(same->TestImages(panel(4), panel(3), nullptr,
-                        prTest::TempDirectory(argc, argv).c_str(),
-                        "TestParticleSphereMapperExtremes_panel4_vs_3"),
+  ok &= prTest::Check(
+    same->TestImages(panel(4), panel(3), nullptr, prTest::TempDirectory(argc, argv).c_str(),
+      "TestParticleSphereMapperExtremes_panel4_vs_3"),
     "cases 3/4: the scaled scenes differ");
   renderers[0]->GetActiveCamera()->SetParallelScale(3.2);
   window->Render();
-  ok &= prTest::Check(same->TestImages(panel(2), panel(0), nullptr,
-                        prTest::TempDirectory(argc, argv).c_str(),
-                        "TestParticleSphereMapperExtremes_panel2_vs_parallel"),
+  ok &= prTest::Check(
+    same->TestImages(panel(2), panel(0), nullptr, prTest::TempDirectory(argc, argv).c_str(),
+      "TestParticleSphereMapperExtremes_panel2_vs_parallel"),
     "case 2: the far camera is not the parallel projection");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

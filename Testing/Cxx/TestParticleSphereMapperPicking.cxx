@@ -45,8 +45,7 @@ std::vector<vtkIdType> Select(vtkRenderer* renderer, int association, vtkProp* p
   for (unsigned int n = 0; selection && n < selection->GetNumberOfNodes(); ++n)
   {
     vtkSelectionNode* node = selection->GetNode(n);
-    vtkProp* selected =
-      vtkProp::SafeDownCast(node->GetProperties()->Get(vtkSelectionNode::PROP()));
+    vtkProp* selected = vtkProp::SafeDownCast(node->GetProperties()->Get(vtkSelectionNode::PROP()));
     if (selected != prop)
     {
       otherPropSelected = true;

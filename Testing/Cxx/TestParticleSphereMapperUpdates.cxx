@@ -93,7 +93,8 @@ int TestParticleSphereMapperUpdates(int argc, char* argv[])
   bool ok = vtkParticleImageComparison::TestRepeatable(window, "TestParticleSphereMapperUpdates");
   vtkIdType uploads = mapper->GetNumberOfUploads();
   ok &= prTest::Check(uploads == 1, "first frame: expected 1 upload");
-  auto expectUploads = [&](vtkIdType expected, const std::string& what) {
+  auto expectUploads = [&](vtkIdType expected, const std::string& what)
+  {
     window->Render();
     const vtkIdType now = mapper->GetNumberOfUploads() - uploads;
     uploads = mapper->GetNumberOfUploads();
@@ -138,20 +139,22 @@ int TestParticleSphereMapperUpdates(int argc, char* argv[])
   }
   vtkPolyData* series[6] = { fewer, steps[2], empty, steps[3], halfRadii, steps[4] };
   const vtkIdType counts[6] = { 5000, 11033, 0, 11033, 11033, 11033 };
-  auto snapshot = [&]() {
+  auto snapshot = [&]()
+  {
     vtkNew<vtkUnsignedCharArray> pixels;
     int* size = window->GetSize();
     window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels);
-    return std::vector<unsigned char>(pixels->GetPointer(0),
-      pixels->GetPointer(0) + pixels->GetNumberOfValues());
+    return std::vector<unsigned char>(
+      pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
   };
   for (int t = 0; t < 6; ++t)
   {
     mapper->SetInputData(series[t]);
     window->Render();
     const vtkIdType drawn = series[t]->GetNumberOfPoints() - mapper->GetNumberOfSkippedParticles();
-    ok &= prTest::Check(drawn == counts[t], "step " + std::to_string(t) + ": drew " +
-        std::to_string(drawn) + " particles, expected " + std::to_string(counts[t]));
+    ok &= prTest::Check(drawn == counts[t],
+      "step " + std::to_string(t) + ": drew " + std::to_string(drawn) + " particles, expected " +
+        std::to_string(counts[t]));
     const std::vector<unsigned char> image = snapshot();
     // the same data through a fresh mapper, in the same window and camera
     vtkNew<vtkParticleSphereMapper> fresh;
@@ -163,8 +166,8 @@ int TestParticleSphereMapperUpdates(int argc, char* argv[])
     fresh->UseLookupTableScalarRangeOn();
     actor->SetMapper(fresh);
     window->Render();
-    ok &= prTest::Check(snapshot() == image,
-      "step " + std::to_string(t) + ": image differs from a fresh mapper's");
+    ok &= prTest::Check(
+      snapshot() == image, "step " + std::to_string(t) + ": image differs from a fresh mapper's");
     actor->SetMapper(mapper);
     fresh->ReleaseGraphicsResources(window);
     if (t == 4)

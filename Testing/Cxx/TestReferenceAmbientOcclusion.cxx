@@ -103,13 +103,13 @@ int TestReferenceAmbientOcclusion(int, char*[])
   }
   meanShort /= std::max<long long>(1, hits);
   meanLong /= std::max<long long>(1, hits);
-  std::cout << "lattice: " << hits << " occluded pixels, mean AO " << meanShort
-            << " (distance 1), " << meanLong << " (distance 3); reference "
-            << reference->GetLastRenderSeconds() << " s with 64 rays per pixel\n";
+  std::cout << "lattice: " << hits << " occluded pixels, mean AO " << meanShort << " (distance 1), "
+            << meanLong << " (distance 3); reference " << reference->GetLastRenderSeconds()
+            << " s with 64 rays per pixel\n";
   ok &= prTest::Check(shortRays == again, "deterministic");
   ok &= prTest::Check(monotone, "longer rays never see more sky");
-  ok &= prTest::Check(hits > 1000 && meanShort < 0.9 && meanLong < meanShort,
-    "the lattice occludes itself");
+  ok &= prTest::Check(
+    hits > 1000 && meanShort < 0.9 && meanLong < meanShort, "the lattice occludes itself");
 
   // the colour is the lit colour times the factor
   const std::vector<double> plainColor = Values(reference->GetColorImage());
@@ -121,7 +121,8 @@ int TestReferenceAmbientOcclusion(int, char*[])
   {
     for (int k = 0; k < 3; ++k)
     {
-      worst = std::max(worst, std::abs(occludedColor[4 * i + k] - longRays[i] * plainColor[4 * i + k]));
+      worst =
+        std::max(worst, std::abs(occludedColor[4 * i + k] - longRays[i] * plainColor[4 * i + k]));
     }
   }
   ok &= prTest::Check(worst < 1e-12, "ApplyAmbientOcclusion multiplies the colour");

@@ -129,8 +129,8 @@ bool RunScene(
   vtkNew<vtkParticleReferenceRenderer> reference;
   reference->SetRenderer(renderer);
   reference->SetActor(actor);
-  const prTest::ParticleAttributes attributes = prTest::RawAttributes(scene.Input,
-    scene.RadiusArray, scene.Radius, scene.ColorArray, lut, scene.ColorRange);
+  const prTest::ParticleAttributes attributes = prTest::RawAttributes(
+    scene.Input, scene.RadiusArray, scene.Radius, scene.ColorArray, lut, scene.ColorRange);
   reference->SetParticleAttributes(attributes.Radii, attributes.Colors, nullptr);
   ok &= prTest::Check(reference->Render(), scene.Name + ": reference render failed");
   if (!ok)

@@ -144,11 +144,11 @@ void SingleParticle(const double centre[3], double radius, double distance, cons
       std::sqrt(std::pow(n[0] - exact[0], 2) + std::pow(n[1] - exact[1], 2) +
         std::pow(n[2] - exact[2], 2)));
   }
-  std::printf("%s: worst hit error %.3g R, normal %.3g, wrong hit/miss %d of 400\n", label,
-    worstT, worstN, misses);
+  std::printf("%s: worst hit error %.3g R, normal %.3g, wrong hit/miss %d of 400\n", label, worstT,
+    worstN, misses);
   const double tolerance = distance > 1e3 ? 1e-5 : 1e-12;
-  Check(worstT <= tolerance, std::string(label) + Format(": hit distance within %g R (%.3g)",
-                                                   tolerance, worstT));
+  Check(worstT <= tolerance,
+    std::string(label) + Format(": hit distance within %g R (%.3g)", tolerance, worstT));
   Check(worstN <= (distance > 1e3 ? 1e-4 : 1e-12),
     std::string(label) + Format(": normal (%.3g)", worstN));
   Check(misses == 0, std::string(label) + ": every ray that meets the sphere hits, no other");
@@ -178,8 +178,8 @@ void TwoParticles(double d, double k)
     return;
   }
   const double expected = 10.0 - std::sqrt(rho2);
-  std::printf("d = %g, k = %g: neck radius %.15f (closed form %.15f)\n", d, k, 10.0 - t,
-    std::sqrt(rho2));
+  std::printf(
+    "d = %g, k = %g: neck radius %.15f (closed form %.15f)\n", d, k, 10.0 - t, std::sqrt(rho2));
   Check(hit && std::abs(t - expected) <= 1e-12,
     Format("d = %g, k = %g: neck radius to 1e-12 (error %.3g)", d, k, hit ? t - expected : 1.0));
   Check(hit && std::abs(n[1] + 1.0) <= 1e-12 && std::abs(n[0]) <= 1e-12,

@@ -7,7 +7,8 @@
 //    normal, the occluder entirely above the tangent plane: the transmittance of a ray at angle
 //    psi from the axis is exp(kappa sqrt(1 - (D sin psi / R)^2)), and the cosine-weighted
 //    integral over the occluder's cone is exact:
-//      A_O = 1 - cos(beta) (R / D)^2 F(kappa),  F(kappa) = 1 - 2 (e^kappa (kappa - 1) + 1) / kappa^2
+//      A_O = 1 - cos(beta) (R / D)^2 F(kappa),  F(kappa) = 1 - 2 (e^kappa (kappa - 1) + 1) /
+//      kappa^2
 //    (F -> 1 for an opaque occluder: its form factor), and L_A = e_A c (1 - A_O).
 // 2. A slab of translucent spheres at random (Poisson) positions above the receiver: the number
 //    of spheres a ray meets is Poisson, so the expected transmittance along a direction at theta
@@ -96,8 +97,8 @@ struct Scene
     this->Add(0.0, 0.0, -ReceiverRadius, ReceiverRadius, 1.0, 255, 255, 255);
   }
 
-  void Add(double x, double y, double z, double r, double theta, unsigned char cr,
-    unsigned char cg, unsigned char cb)
+  void Add(double x, double y, double z, double r, double theta, unsigned char cr, unsigned char cg,
+    unsigned char cb)
   {
     this->Points->InsertNextPoint(x, y, z);
     this->Radii->InsertNextValue(static_cast<float>(r));
@@ -215,8 +216,8 @@ bool OneOccluder(double theta, int samples)
   }
   const double meanError = used ? sumError / used : 1.0;
   std::cout << "one occluder, Theta " << theta << ": " << used << " pixels, mean A_O "
-            << (used ? sumExpected / used : 0.0) << ", max |error| " << maxError
-            << ", mean error " << meanError << ", max L_A error " << maxLightError << "\n";
+            << (used ? sumExpected / used : 0.0) << ", max |error| " << maxError << ", mean error "
+            << meanError << ", max L_A error " << maxLightError << "\n";
   ok &= prTest::Check(used > 300, "the receiver is seen around the occluder's foot");
   // Hammersley sets of `samples` cosine-distributed rays: the error of the quadrature
   // (largest for the opaque occluder, whose silhouette is a discontinuity: 5.6e-3 at 1024 rays)
@@ -243,8 +244,7 @@ bool OneOccluder(double theta, int samples)
       const double expected = std::min(1.0,
         occlusion->GetValue(pixel) * plain->GetComponent(pixel, k) +
           0.5 * ambientLight->GetComponent(pixel, k));
-      maxApplyError =
-        std::max(maxApplyError, std::abs(applied->GetComponent(pixel, k) - expected));
+      maxApplyError = std::max(maxApplyError, std::abs(applied->GetComponent(pixel, k) - expected));
     }
   }
   ok &= prTest::Check(maxApplyError < 1e-12, "ApplyAmbientOcclusion gives A_O L + alpha_A L_A");

@@ -127,10 +127,10 @@ bool TestIntegrals()
           const double hs = b < f * r ? std::sqrt((f * r - b) * (f * r + b)) : 0.0;
           // full chord, halves, partial segments, segments crossing and inside the core, a
           // segment beyond the sphere
-          const double segments[][2] = { { -Inf, Inf }, { -2 * h, 2 * h }, { -Inf, 0 },
-            { 0, Inf }, { -0.5 * h, 0.3 * h }, { -0.9 * h, -0.5 * (h + hs) },
-            { -0.5 * (h + hs), 0.5 * hs }, { -0.5 * hs, 0.25 * hs }, { 0.5 * hs, Inf },
-            { 2 * h + r, 3 * h + 2 * r }, { 0.7 * h, 0.2 * h } };
+          const double segments[][2] = { { -Inf, Inf }, { -2 * h, 2 * h }, { -Inf, 0 }, { 0, Inf },
+            { -0.5 * h, 0.3 * h }, { -0.9 * h, -0.5 * (h + hs) }, { -0.5 * (h + hs), 0.5 * hs },
+            { -0.5 * hs, 0.25 * hs }, { 0.5 * hs, Inf }, { 2 * h + r, 3 * h + 2 * r },
+            { 0.7 * h, 0.2 * h } };
           for (const auto& seg : segments)
           {
             const double got =
@@ -152,8 +152,8 @@ bool TestIntegrals()
   ok &= Near(vtkParticleReferenceRenderer::IntegrateDensity(Squared, 0.3, 2.0, -0.5, -Inf, Inf),
     vtkParticleReferenceRenderer::IntegrateDensity(Squared, 0.3, 2.0, 0.5, -Inf, Inf), 1e-15, 0.0,
     "negative impact");
-  ok &= prTest::Check(
-    vtkParticleReferenceRenderer::IntegrateDensity(Constant, 0.0, 1.0, 0.0, std::nan(""), 1.0) == 0.0,
+  ok &= prTest::Check(vtkParticleReferenceRenderer::IntegrateDensity(
+                        Constant, 0.0, 1.0, 0.0, std::nan(""), 1.0) == 0.0,
     "NaN segment end gives 0");
   std::cout << "a) " << count << " integrals compared with the closed forms\n";
   return ok;
@@ -198,8 +198,8 @@ bool TestSegmentOpacity()
           const double got =
             vtkParticleReferenceRenderer::SegmentOpacity(model, f, r, b, -Inf, Inf, theta);
           std::ostringstream what;
-          what << std::setprecision(17) << "SegmentOpacity(model " << model << ", f " << f
-               << ", r " << r << ", most opaque ray, thetaMax " << theta << ")";
+          what << std::setprecision(17) << "SegmentOpacity(model " << model << ", f " << f << ", r "
+               << r << ", most opaque ray, thetaMax " << theta << ")";
           if (theta == 0.0)
           {
             ok &= prTest::Check(got == 0.0, Describe(what.str(), got, 0.0));
@@ -315,7 +315,8 @@ struct Composite
     RowScene::VolumeColor(sphere, ci);
     for (int k = 0; k < 3; ++k)
     {
-      const double l = entry ? theta * ((1 - VolumeMix) * lr[k] + VolumeMix * ci[k]) : theta * ci[k];
+      const double l =
+        entry ? theta * ((1 - VolumeMix) * lr[k] + VolumeMix * ci[k]) : theta * ci[k];
       this->C[k] += this->T * l;
     }
     this->T *= 1.0 - theta;
@@ -329,10 +330,9 @@ bool CheckCentre(vtkParticleReferenceRenderer* reference, const Composite& expec
   const double* rgba =
     vtkDoubleArray::SafeDownCast(reference->GetColorImage()->GetPointData()->GetScalars())
       ->GetPointer(4 * CentrePixel);
-  const double alpha =
-    vtkDoubleArray::SafeDownCast(
-      reference->GetTranslucentAlphaImage()->GetPointData()->GetScalars())
-      ->GetValue(static_cast<vtkIdType>(CentrePixel));
+  const double alpha = vtkDoubleArray::SafeDownCast(
+    reference->GetTranslucentAlphaImage()->GetPointData()->GetScalars())
+                         ->GetValue(static_cast<vtkIdType>(CentrePixel));
   const char* channel[4] = { "r", "g", "b", "a" };
   for (int k = 0; k < 3; ++k)
   {
@@ -369,12 +369,12 @@ bool TestRender()
     const double* corner =
       vtkDoubleArray::SafeDownCast(scene.Reference->GetColorImage()->GetPointData()->GetScalars())
         ->GetPointer(0);
-    ok &= prTest::Check(corner[0] == back[0] && corner[1] == back[1] && corner[2] == back[2] &&
-        corner[3] == back[3],
+    ok &= prTest::Check(
+      corner[0] == back[0] && corner[1] == back[1] && corner[2] == back[2] && corner[3] == back[3],
       "d1 corner pixel is the background");
-    std::cout << "d1) centre " << std::setprecision(10)
-              << expected.C[0] + expected.T * back[0] << " " << expected.C[1] + expected.T * back[1]
-              << " " << expected.C[2] + expected.T * back[2] << "\n";
+    std::cout << "d1) centre " << std::setprecision(10) << expected.C[0] + expected.T * back[0]
+              << " " << expected.C[1] + expected.T * back[1] << " "
+              << expected.C[2] + expected.T * back[2] << "\n";
 
     // (e) the opaque layer, a plane at view distance 13 (the middle sphere's centre)
     vtkCamera* camera = scene.Renderer->GetActiveCamera();
@@ -600,8 +600,8 @@ bool TestPerformance()
     vtkMatrix4x4::DeepCopy(view, camera->GetModelViewTransformMatrix());
     vtkDataArray* radii = lattice->GetPointData()->GetArray("radius");
     const double scale = mapper->GetRadiusScaleVC(actor);
-    const double maximum =
-      vtkParticleReferenceRenderer::NumericalMaximumPathIntegral(model, mapper->GetHollowFraction());
+    const double maximum = vtkParticleReferenceRenderer::NumericalMaximumPathIntegral(
+      model, mapper->GetHollowFraction());
     const vtkIdType n = lattice->GetNumberOfPoints();
     std::vector<double> centres(3 * n);
     for (vtkIdType i = 0; i < n; ++i)
@@ -610,8 +610,8 @@ bool TestPerformance()
       lattice->GetPoint(i, p);
       for (int k = 0; k < 3; ++k)
       {
-        centres[3 * i + k] = view[4 * k] * p[0] + view[4 * k + 1] * p[1] + view[4 * k + 2] * p[2] +
-          view[4 * k + 3];
+        centres[3 * i + k] =
+          view[4 * k] * p[0] + view[4 * k + 1] * p[1] + view[4 * k + 2] * p[2] + view[4 * k + 3];
       }
     }
     double worst = 0.0;
@@ -655,8 +655,8 @@ bool TestPerformance()
     std::ostringstream what;
     what << "g brute-force particle opacity on " << sampled << " pixels, largest error " << worst;
     ok &= prTest::Check(worst < 1e-12, what.str());
-    std::cout << "g) " << reference->GetNumberOfSpheres() << " translucent spheres, model "
-              << model << ", 512x512: " << reference->GetLastRenderSeconds() << " s on "
+    std::cout << "g) " << reference->GetNumberOfSpheres() << " translucent spheres, model " << model
+              << ", 512x512: " << reference->GetLastRenderSeconds() << " s on "
               << vtkSMPTools::GetEstimatedNumberOfThreads() << " threads, mean particle opacity "
               << meanAlpha / (512.0 * 512.0) << ", brute-force check on " << sampled
               << " pixels: largest error " << worst << "\n";

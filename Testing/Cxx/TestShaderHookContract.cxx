@@ -67,8 +67,7 @@ public:
     this->Hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
       "prTintVSOutput = (particleIdVSOutput % 2 == 1) ? " + std::to_string(this->Factor) +
         " : 1.0;");
-    this->Hooks.Insert(
-      Hooks::Fragment, this->Hook, "prAmbientOcclusion *= prTintVSOutput;");
+    this->Hooks.Insert(Hooks::Fragment, this->Hook, "prAmbientOcclusion *= prTintVSOutput;");
     ++this->Builds;
     return true;
   }
@@ -174,8 +173,8 @@ bool RunScene(const char* name, vtkParticleSphereMapper* mapper)
   bool ok = true;
   const std::vector<double> plain = scene.Centres(scene.Steps);
   scene.Tint->SetDelegatePass(scene.Steps);
-  ok = CheckTint((std::string(name) + " tint").c_str(), plain, scene.Centres(scene.Tint), 0.5) &&
-    ok;
+  ok =
+    CheckTint((std::string(name) + " tint").c_str(), plain, scene.Centres(scene.Tint), 0.5) && ok;
   // density AO alone, then under the tint: the occlusions multiply
   const std::vector<double> ao = scene.Centres(scene.AO);
   bool darker = false;
@@ -189,8 +188,8 @@ bool RunScene(const char* name, vtkParticleSphereMapper* mapper)
     ok = false;
   }
   scene.Tint->SetDelegatePass(scene.AO);
-  ok = CheckTint((std::string(name) + " tint+AO").c_str(), ao, scene.Centres(scene.Tint), 0.5) &&
-    ok;
+  ok =
+    CheckTint((std::string(name) + " tint+AO").c_str(), ao, scene.Centres(scene.Tint), 0.5) && ok;
   return ok;
 }
 }

@@ -180,8 +180,8 @@ bool RunScene(const Scene& scene, vtkPolyData* particles, double radius, double 
     double bounds[6];
     particles->GetBounds(bounds);
     vtkNew<vtkCubeSource> box;
-    box->SetCenter(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-      0.5 * (bounds[4] + bounds[5]));
+    box->SetCenter(
+      0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
     box->SetXLength(0.1 * (bounds[1] - bounds[0]));
     box->SetYLength(0.8 * (bounds[3] - bounds[2]));
     box->SetZLength(0.1 * (bounds[5] - bounds[4]));
@@ -262,8 +262,9 @@ bool RunScene(const Scene& scene, vtkPolyData* particles, double radius, double 
   vtkSmartPointer<vtkImageData> refRGB =
     vtkParticleImageComparison::ExtractRGB(reference->GetColorImage());
   vtkParticleImageComparison::Result result;
-  ok &= prTest::Check(vtkParticleImageComparison::Compare(gpuRGB, refRGB, mask, 2.0 / 255.0, result),
-    scene.Name + ": the images can be compared");
+  ok &=
+    prTest::Check(vtkParticleImageComparison::Compare(gpuRGB, refRGB, mask, 2.0 / 255.0, result),
+      scene.Name + ": the images can be compared");
   // how much of the image is translucent particles (where the comparison is meaningful)
   vtkDataArray* alpha = reference->GetTranslucentAlphaImage()->GetPointData()->GetScalars();
   long long covered = 0;
@@ -273,11 +274,12 @@ bool RunScene(const Scene& scene, vtkPolyData* particles, double radius, double 
   }
   std::cout << scene.Name << ": compared " << result.NumberOfComparedPixels << " pixels ("
             << covered << " with particle opacity > 0.01), excluded "
-            << result.NumberOfExcludedPixels << "; max |GPU - reference| = "
-            << result.MaxAbsError * 255.0 << "/255 at (" << result.MaxErrorPixel[0] << ", "
-            << result.MaxErrorPixel[1] << "), RMSE " << result.RMSE * 255.0
-            << "/255, pixels over 2/255: " << result.NumberOfPixelsOverTolerance
-            << "; reference " << reference->GetLastRenderSeconds() << " s\n";
+            << result.NumberOfExcludedPixels
+            << "; max |GPU - reference| = " << result.MaxAbsError * 255.0 << "/255 at ("
+            << result.MaxErrorPixel[0] << ", " << result.MaxErrorPixel[1] << "), RMSE "
+            << result.RMSE * 255.0
+            << "/255, pixels over 2/255: " << result.NumberOfPixelsOverTolerance << "; reference "
+            << reference->GetLastRenderSeconds() << " s\n";
   if (result.MaxAbsError > 2.0 / 255.0)
   {
     const vtkIdType p = result.MaxErrorPixel[1] * Size + result.MaxErrorPixel[0];
@@ -290,8 +292,8 @@ bool RunScene(const Scene& scene, vtkPolyData* particles, double radius, double 
       double x[3];
       particles->GetPoint(id, x);
       std::cout << " radius " << attributes.Radii->GetValue(id) << " theta_a "
-                << attributes.Opacities->GetValue(id) << " at " << x[0] << " "
-                << x[1] << " " << x[2];
+                << attributes.Opacities->GetValue(id) << " at " << x[0] << " " << x[1] << " "
+                << x[2];
     }
     std::cout << "\n";
   }
@@ -333,14 +335,16 @@ int TestTransparentSphereAccuracy(int argc, char* argv[])
   lut->SetTableValue(1, 0.25, 0.55, 0.95, 1.0);
   lut->Build();
 
-  auto zoom = [](vtkRenderer* renderer, double factor) {
+  auto zoom = [](vtkRenderer* renderer, double factor)
+  {
     renderer->GetActiveCamera()->Azimuth(25);
     renderer->GetActiveCamera()->Elevation(15);
     renderer->GetActiveCamera()->Zoom(factor);
   };
   std::vector<Scene> scenes;
   scenes.push_back({ "a_constant_peeling", true, false,
-    [&](vtkRenderer* renderer, vtkActor* actor, vtkTransparentSphereMapper* mapper) {
+    [&](vtkRenderer* renderer, vtkActor* actor, vtkTransparentSphereMapper* mapper)
+    {
       mapper->SetDensityModelToConstant();
       mapper->SetVolumeMix(0.5);
       actor->GetProperty()->SetSpecular(0.3);
@@ -348,14 +352,16 @@ int TestTransparentSphereAccuracy(int argc, char* argv[])
       zoom(renderer, 2.0);
     } });
   scenes.push_back({ "b_squared_hollow_oit", false, false,
-    [&](vtkRenderer* renderer, vtkActor*, vtkTransparentSphereMapper* mapper) {
+    [&](vtkRenderer* renderer, vtkActor*, vtkTransparentSphereMapper* mapper)
+    {
       mapper->SetDensityModelToSquaredDistance();
       mapper->SetHollowFraction(0.5);
       mapper->SetVolumeMix(0.3);
       zoom(renderer, 2.5);
     } });
   scenes.push_back({ "c_constant_hollow_parallel_lightkit", true, false,
-    [&](vtkRenderer* renderer, vtkActor* actor, vtkTransparentSphereMapper* mapper) {
+    [&](vtkRenderer* renderer, vtkActor* actor, vtkTransparentSphereMapper* mapper)
+    {
       mapper->SetDensityModelToConstant();
       mapper->SetHollowFraction(0.8);
       mapper->SetVolumeMix(0.0);
@@ -367,7 +373,8 @@ int TestTransparentSphereAccuracy(int argc, char* argv[])
       zoom(renderer, 2.0);
     } });
   scenes.push_back({ "d_squared_box_opacity", true, true,
-    [&](vtkRenderer* renderer, vtkActor* actor, vtkTransparentSphereMapper* mapper) {
+    [&](vtkRenderer* renderer, vtkActor* actor, vtkTransparentSphereMapper* mapper)
+    {
       mapper->SetDensityModelToSquaredDistance();
       mapper->SetVolumeMix(0.7);
       actor->GetProperty()->SetOpacity(0.8);
@@ -376,7 +383,8 @@ int TestTransparentSphereAccuracy(int argc, char* argv[])
   // Theta_i as the opacity of a column of 6 particles (the ParaView default mode, with a set
   // layer count so that the reference does not depend on the mapper's estimate)
   scenes.push_back({ "e_constant_column", true, false,
-    [&](vtkRenderer* renderer, vtkActor*, vtkTransparentSphereMapper* mapper) {
+    [&](vtkRenderer* renderer, vtkActor*, vtkTransparentSphereMapper* mapper)
+    {
       mapper->SetDensityModelToConstant();
       mapper->SetOpacityReference(vtkTransparentSphereMapper::COLUMN_OPACITY);
       mapper->SetColumnLayers(6.0);

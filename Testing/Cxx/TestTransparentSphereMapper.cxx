@@ -91,8 +91,8 @@ int TestTransparentSphereMapper(int argc, char* argv[])
   mapper->SetHollowFraction(0.3);
   mapper->SetVolumeMix(0.4);
   // must-fail pictures: the same scene solid, or with the other density model
-  const bool wrongPicture = prTest::MustFail(argc, argv, "solid") ||
-    prTest::MustFail(argc, argv, "constant-density");
+  const bool wrongPicture =
+    prTest::MustFail(argc, argv, "solid") || prTest::MustFail(argc, argv, "constant-density");
   if (prTest::MustFail(argc, argv, "solid"))
   {
     mapper->SetHollowFraction(0.0);
@@ -161,7 +161,8 @@ int TestTransparentSphereMapper(int argc, char* argv[])
                                                                        : EXIT_FAILURE;
   }
 
-  ok &= prTest::Check(mapper->HasTranslucentPolygonalGeometry(), "the scene has translucent particles");
+  ok &=
+    prTest::Check(mapper->HasTranslucentPolygonalGeometry(), "the scene has translucent particles");
   ok &= prTest::Check(mapper->HasOpaqueGeometry(), "the scene has opaque particles");
   ok &= prTest::Check(mapper->GetNumberOfSorts() == 1, "one sort after the first frame");
 

@@ -155,7 +155,8 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   mapper->SetOpacityArrayName("nope");
   ok &= Sane(window, mapper, "missing opacity array", true);
   window->Render();
-  ok &= prTest::Check(messages->Warnings == 1, "one warning for a missing array (" + std::to_string(messages->Warnings) + ")");
+  ok &= prTest::Check(messages->Warnings == 1,
+    "one warning for a missing array (" + std::to_string(messages->Warnings) + ")");
   ok &= prTest::Check(!mapper->HasTranslucentPolygonalGeometry(), "missing array: all opaque");
 
   // non-numeric array
@@ -198,7 +199,8 @@ int TestTransparentSphereMapperBadInput(int, char*[])
   const int settingsWarnings = messages->Warnings;
   mapper->SetOpacityRange(1.0, 0.0);
   ok &= Sane(window, mapper, "reversed opacity range", true);
-  ok &= prTest::Check(mapper->GetParticleOpacities()->GetValue(0) == 1.0, "reversed range maps 0 to 1");
+  ok &=
+    prTest::Check(mapper->GetParticleOpacities()->GetValue(0) == 1.0, "reversed range maps 0 to 1");
   mapper->SetOpacityRange(0.5, 0.5);
   ok &= Sane(window, mapper, "empty opacity range", true);
   ok &= prTest::Check(mapper->GetParticleOpacities()->GetValue(0) == 0.0 &&

@@ -102,7 +102,8 @@ std::vector<float> RunCompute(vtkOpenGLRenderWindow* ctx, const std::string& mai
   GLuint buffers[2];
   glGenBuffers(2, buffers);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, inputs.size() * sizeof(float), inputs.data(), GL_STATIC_DRAW);
+  glBufferData(
+    GL_SHADER_STORAGE_BUFFER, inputs.size() * sizeof(float), inputs.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
   glBufferData(GL_SHADER_STORAGE_BUFFER, out.size() * sizeof(float), nullptr, GL_DYNAMIC_READ);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
@@ -124,9 +125,10 @@ std::vector<float> RunCompute(vtkOpenGLRenderWindow* ctx, const std::string& mai
 bool TestSpecialFunctions(vtkOpenGLRenderWindow* ctx)
 {
   bool ok = true;
-  std::vector<float> x;  // prLog1p arguments
-  std::vector<float> a;  // prOneMinusExpNeg arguments
-  for (double v = -1.0 + 1e-7; v < 20.0; v += (std::abs(v) < 1e-3 ? 1.7e-6 : 0.0013 * std::abs(v) + 1e-6))
+  std::vector<float> x; // prLog1p arguments
+  std::vector<float> a; // prOneMinusExpNeg arguments
+  for (double v = -1.0 + 1e-7; v < 20.0;
+       v += (std::abs(v) < 1e-3 ? 1.7e-6 : 0.0013 * std::abs(v) + 1e-6))
   {
     x.push_back(static_cast<float>(v));
   }
@@ -445,8 +447,8 @@ bool TestRenderedSpheres()
               << " (grazing pixels: max abs. error " << grazing[item.first] << ")\n";
     worst = std::max(worst, item.second);
   }
-  ok &= prTest::Check(worst <= 1e-5, "rendered Theta relative error <= 1e-5 (worst " +
-      std::to_string(worst) + ")");
+  ok &= prTest::Check(
+    worst <= 1e-5, "rendered Theta relative error <= 1e-5 (worst " + std::to_string(worst) + ")");
   // grazing pixels (b > 0.95 r, or within 0.05 r of the core's silhouette): the float pixel ray
   // limits the accuracy there (the chord changes by ~ b db / (1 - b^2)); measured <= 9.3e-5
   double worstGrazing = 0.0;
@@ -454,8 +456,8 @@ bool TestRenderedSpheres()
   {
     worstGrazing = std::max(worstGrazing, item.second);
   }
-  ok &= prTest::Check(worstGrazing <= 2e-4, "grazing pixels: absolute error of Theta <= 2e-4 (worst " +
-      std::to_string(worstGrazing) + ")");
+  ok &= prTest::Check(worstGrazing <= 2e-4,
+    "grazing pixels: absolute error of Theta <= 2e-4 (worst " + std::to_string(worstGrazing) + ")");
   return ok;
 }
 }

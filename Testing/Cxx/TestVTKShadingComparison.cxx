@@ -177,8 +177,9 @@ int TestVTKShadingComparison(int argc, char* argv[])
     Criteria(comparison);
     const std::string name = std::string("TestVTKShadingComparison_") + scene.Name;
     vtkParticleImageComparison::WritePNG(vtkImage, (temp + "/" + name + "_vtk.png").c_str());
-    ok &= prTest::Check(comparison->TestImages(ourImage, vtkImage, mask, temp.c_str(), name.c_str()),
-      std::string(scene.Name) + ": our shading differs from VTK's");
+    ok &=
+      prTest::Check(comparison->TestImages(ourImage, vtkImage, mask, temp.c_str(), name.c_str()),
+        std::string(scene.Name) + ": our shading differs from VTK's");
     ok &= prTest::Check(comparison->GetNumberOfComparedPixels() > Size * Size / 2,
       std::string(scene.Name) + ": at least half of the pixels compared");
 
@@ -193,8 +194,8 @@ int TestVTKShadingComparison(int argc, char* argv[])
     actor->GetProperty()->SetSpecular(specular > 0 ? 0.0 : 0.5);
     vtkSmartPointer<vtkImageData> highlights = Render(window, actor, ours);
     actor->GetProperty()->SetSpecular(specular);
-    ok &= prTest::Check(comparison->TestRejects(highlights, vtkImage, mask,
-                          (name + " specular changed").c_str()),
+    ok &= prTest::Check(
+      comparison->TestRejects(highlights, vtkImage, mask, (name + " specular changed").c_str()),
       std::string(scene.Name) + ": a changed specular term passes");
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -271,8 +271,8 @@ ParticleAttributes RawAttributes(vtkPolyData* input, const std::string& radiusAr
     out.Opacities->SetNumberOfTuples(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const double t = (opacity->GetComponent(i, 0) - opacityRange[0]) /
-        (opacityRange[1] - opacityRange[0]);
+      const double t =
+        (opacity->GetComponent(i, 0) - opacityRange[0]) / (opacityRange[1] - opacityRange[0]);
       out.Opacities->SetValue(i, std::isnan(t) ? 0.0 : std::min(1.0, std::max(0.0, t)));
     }
   }

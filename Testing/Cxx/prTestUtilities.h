@@ -26,11 +26,11 @@ namespace prTest
  */
 struct ImageCriteria
 {
-  double Tolerance = 2.0;            // /255, per pixel and channel
+  double Tolerance = 2.0;              // /255, per pixel and channel
   double MaxOverToleranceShare = 1e-3; // share of compared pixels
-  double MaxMean = 0.5;              // /255, per channel
-  double MaxError = 255.0;           // /255, per channel and pixel
-  int MaskRadius = 0;                // pixels around the baseline's colour edges not compared
+  double MaxMean = 0.5;                // /255, per channel
+  double MaxError = 255.0;             // /255, per channel and pixel
+  int MaskRadius = 0;                  // pixels around the baseline's colour edges not compared
 };
 
 /**

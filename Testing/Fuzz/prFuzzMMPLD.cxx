@@ -116,7 +116,8 @@ std::string Mutate(std::string s, std::mt19937& random)
   for (int m = 0; m < mutations && !s.empty(); ++m)
   {
     // half of the mutations hit the first 200 bytes: header, frame table, first list header
-    const size_t at = random() % 2 ? random() % std::min<size_t>(s.size(), 200) : random() % s.size();
+    const size_t at =
+      random() % 2 ? random() % std::min<size_t>(s.size(), 200) : random() % s.size();
     switch (random() % 6)
     {
       case 0:

@@ -39,8 +39,8 @@ bool vtkParticleGLDebugLog::Watch(vtkRenderWindow* window)
     return false;
   }
   // (a window deleted since leaves a null pointer: a new one at its address is watched anew)
-  this->Watched.erase(std::remove(this->Watched.begin(), this->Watched.end(), nullptr),
-    this->Watched.end());
+  this->Watched.erase(
+    std::remove(this->Watched.begin(), this->Watched.end(), nullptr), this->Watched.end());
   if (std::find(this->Watched.begin(), this->Watched.end(), window) != this->Watched.end())
   {
     return true;
@@ -91,8 +91,8 @@ void vtkParticleGLDebugLog::Add(unsigned int source, unsigned int type, unsigned
   ++this->NumberOfErrors;
   this->LastError = message ? message : "";
   std::cout << "GL DEBUG " << (type == GL_DEBUG_TYPE_ERROR ? "ERROR" : "UNDEFINED BEHAVIOUR")
-            << " (source 0x" << std::hex << source << ", id 0x" << id << ", severity 0x"
-            << severity << std::dec << "): " << this->LastError << "\n";
+            << " (source 0x" << std::hex << source << ", id 0x" << id << ", severity 0x" << severity
+            << std::dec << "): " << this->LastError << "\n";
   std::cout.flush();
 }
 

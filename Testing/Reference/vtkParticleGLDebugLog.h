@@ -9,8 +9,8 @@
  * counted in GetNumberOfErrors(); other messages (performance notes, portability) only in
  * GetNumberOfMessages(). The suite's repeatability checks (vtkParticleImageComparison::
  * TestRepeatable, the Python harnesses) draw their second frame between StartFrame and EndFrame,
- * so a GL error during any image test's frame fails that test. One log per process (GetInstance()); a context is watched once. Needs
- * OpenGL 4.3 or KHR_debug (Watch returns false without it).
+ * so a GL error during any image test's frame fails that test. One log per process (GetInstance());
+ * a context is watched once. Needs OpenGL 4.3 or KHR_debug (Watch returns false without it).
  */
 #ifndef vtkParticleGLDebugLog_h
 #define vtkParticleGLDebugLog_h

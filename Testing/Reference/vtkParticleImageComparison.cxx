@@ -9,8 +9,8 @@
 #include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkParticleGLDebugLog.h"
 #include "vtkPNGWriter.h"
+#include "vtkParticleGLDebugLog.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -106,8 +106,8 @@ void ResizeMask(vtkUnsignedCharArray* mask, vtkIdType pixels)
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleImageComparison::Compare(vtkImageData* a, vtkImageData* b,
-  vtkDataArray* excluded, double tolerance, Result& result, int maxComponents)
+bool vtkParticleImageComparison::Compare(vtkImageData* a, vtkImageData* b, vtkDataArray* excluded,
+  double tolerance, Result& result, int maxComponents)
 {
   result = Result();
   ImageValues va;
@@ -127,7 +127,8 @@ bool vtkParticleImageComparison::Compare(vtkImageData* a, vtkImageData* b,
   {
     return false;
   }
-  const int nc = std::max(1, std::min(std::min(va.Components, vb.Components), std::min(maxComponents, 4)));
+  const int nc =
+    std::max(1, std::min(std::min(va.Components, vb.Components), std::min(maxComponents, 4)));
   result.NumberOfComponents = nc;
   double sum2 = 0.0;
   double sum[4] = { 0, 0, 0, 0 };
@@ -211,7 +212,6 @@ bool vtkParticleImageComparison::CompareImages(
   return ok;
 }
 
-
 //------------------------------------------------------------------------------
 // Image tests
 //------------------------------------------------------------------------------
@@ -260,9 +260,9 @@ double vtkParticleImageComparison::Evaluate(const Result& r, std::string& reason
   }
   if (terms[2] > 1.0)
   {
-    why << separator << r.NumberOfPixelsOverTolerance << " pixels ("
-        << std::setprecision(3) << 100.0 * share << " %) over " << Format255(this->Tolerance)
-        << " > " << 100.0 * this->MaximumOverToleranceFraction << " %";
+    why << separator << r.NumberOfPixelsOverTolerance << " pixels (" << std::setprecision(3)
+        << 100.0 * share << " %) over " << Format255(this->Tolerance) << " > "
+        << 100.0 * this->MaximumOverToleranceFraction << " %";
   }
   if (r.NumberOfComparedPixels == 0)
   {
@@ -297,8 +297,8 @@ vtkSmartPointer<vtkUnsignedCharArray> vtkParticleImageComparison::CriteriaMask(
   {
     if (excluded->GetNumberOfTuples() != mask->GetNumberOfTuples())
     {
-      vtkErrorMacro(<< "The exclusion mask has " << excluded->GetNumberOfTuples()
-                    << " values for " << mask->GetNumberOfTuples() << " pixels.");
+      vtkErrorMacro(<< "The exclusion mask has " << excluded->GetNumberOfTuples() << " values for "
+                    << mask->GetNumberOfTuples() << " pixels.");
       return nullptr;
     }
     for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
@@ -352,10 +352,9 @@ bool vtkParticleImageComparison::TestImages(vtkImageData* image, vtkImageData* e
             << " %, mask radius " << this->MaskRadius << "\n";
   if (compared)
   {
-    std::cout << "  measured: mean " << Format255(worstMean) << ", max "
-              << Format255(r.MaxAbsError) << " at (" << r.MaxErrorPixel[0] << ", "
-              << r.MaxErrorPixel[1] << "), " << r.NumberOfPixelsOverTolerance
-              << " pixels over tolerance";
+    std::cout << "  measured: mean " << Format255(worstMean) << ", max " << Format255(r.MaxAbsError)
+              << " at (" << r.MaxErrorPixel[0] << ", " << r.MaxErrorPixel[1] << "), "
+              << r.NumberOfPixelsOverTolerance << " pixels over tolerance";
     if (r.NumberOfPixelsOverTolerance > 0)
     {
       std::cout << " in x " << r.OverToleranceBox[0] << ".." << r.OverToleranceBox[1] << ", y "
@@ -390,8 +389,9 @@ bool vtkParticleImageComparison::TestRejects(
   const bool compared = this->Judge(wrong, expected, excluded, r, score, reason);
   const bool rejected = compared && score > 1.0;
   std::cout << "MUST-FAIL " << (name ? name : "picture") << ": "
-            << (rejected ? "rejected" : (compared ? "ACCEPTED (the criteria cannot see it)"
-                                                  : "NOT COMPARED (wrong reason)"))
+            << (rejected ? "rejected"
+                         : (compared ? "ACCEPTED (the criteria cannot see it)"
+                                     : "NOT COMPARED (wrong reason)"))
             << ", score " << std::setprecision(4) << score;
   if (!reason.empty())
   {
@@ -438,8 +438,8 @@ bool vtkParticleImageComparison::TestImage(
 
   // The criteria must see what a baseline test exists for: a 10 % darker picture and an edge
   // one pixel outside the mask.
-  const bool darkened = this->TestRejects(Scaled(baseline, 0.9), baseline, nullptr,
-    (label + " (baseline 10 % darker)").c_str());
+  const bool darkened = this->TestRejects(
+    Scaled(baseline, 0.9), baseline, nullptr, (label + " (baseline 10 % darker)").c_str());
   this->DarkenedScore = this->Score;
   const int shift = this->MaskRadius + 1;
   const bool shifted = this->TestRejects(Shifted(baseline, shift, 0), baseline, nullptr,
@@ -488,7 +488,8 @@ vtkSmartPointer<vtkImageData> vtkParticleImageComparison::Scaled(vtkImageData* i
   return out;
 }
 
-vtkSmartPointer<vtkImageData> vtkParticleImageComparison::Shifted(vtkImageData* image, int dx, int dy)
+vtkSmartPointer<vtkImageData> vtkParticleImageComparison::Shifted(
+  vtkImageData* image, int dx, int dy)
 {
   auto out = vtkSmartPointer<vtkImageData>::New();
   if (!image || !image->GetPointData()->GetScalars())
@@ -506,8 +507,8 @@ vtkSmartPointer<vtkImageData> vtkParticleImageComparison::Shifted(vtkImageData* 
     for (int x = 0; x < dims[0]; ++x)
     {
       const int sx = std::min(dims[0] - 1, std::max(0, x - dx));
-      values->SetTuple(static_cast<vtkIdType>(y) * dims[0] + x,
-        static_cast<vtkIdType>(sy) * dims[0] + sx, in);
+      values->SetTuple(
+        static_cast<vtkIdType>(y) * dims[0] + x, static_cast<vtkIdType>(sy) * dims[0] + sx, in);
     }
   }
   return out;

@@ -45,7 +45,7 @@
 
 #include "vtkObject.h"
 #include "vtkParticleRenderingReferenceModule.h" // for export macro
-#include "vtkSmartPointer.h"            // for vtkSmartPointer
+#include "vtkSmartPointer.h"                     // for vtkSmartPointer
 
 #include <string> // for std::string
 
@@ -73,9 +73,9 @@ public:
     double MaxAbsError = 0.0; // over every compared channel
     double ChannelMaxAbsError[4] = { 0, 0, 0, 0 };
     double ChannelMeanAbsError[4] = { 0, 0, 0, 0 };
-    int MaxErrorPixel[2] = { -1, -1 }; // (x, y) of the largest error
+    int MaxErrorPixel[2] = { -1, -1 };            // (x, y) of the largest error
     int OverToleranceBox[4] = { -1, -1, -1, -1 }; // x0, x1, y0, y1 of the pixels over tolerance
-    int NumberOfComponents = 0;        // channels compared
+    int NumberOfComponents = 0;                   // channels compared
     long long NumberOfComparedPixels = 0;
     long long NumberOfExcludedPixels = 0;
     long long NumberOfPixelsOverTolerance = 0; // pixels with a channel error > tolerance
@@ -158,7 +158,10 @@ public:
    * TestImages/TestRejects/TestImage comparison of the image itself.
    */
   vtkGetMacro(Score, double);
-  const char* GetFailureReason() { return this->FailureReason.c_str(); }
+  const char* GetFailureReason()
+  {
+    return this->FailureReason.c_str();
+  }
   vtkGetVector4Macro(ChannelMeanAbsError, double);
 
   /**
@@ -307,7 +310,8 @@ protected:
   // Score and reason of a result under the criteria.
   double Evaluate(const Result& result, std::string& reason) const;
   // The mask of the criteria (MaskRadius around the edges of expected) or'ed with excluded.
-  vtkSmartPointer<vtkUnsignedCharArray> CriteriaMask(vtkImageData* expected, vtkDataArray* excluded);
+  vtkSmartPointer<vtkUnsignedCharArray> CriteriaMask(
+    vtkImageData* expected, vtkDataArray* excluded);
   // Compare under the criteria; false when the images cannot be compared.
   bool Judge(vtkImageData* image, vtkImageData* expected, vtkDataArray* excluded, Result& result,
     double& score, std::string& reason);

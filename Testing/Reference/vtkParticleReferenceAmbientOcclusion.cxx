@@ -28,8 +28,8 @@ void Hammersley(int k, int n, double rotU, double rotV, double& u, double& w)
 }
 
 //------------------------------------------------------------------------------
-double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vtkIdType own,
-  int px, int py, AmbientScratch& scratch, double light[3])
+double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vtkIdType own, int px,
+  int py, AmbientScratch& scratch, double light[3])
 {
   const int aoSamples = frame.AmbientOcclusionSamples;
   const double aoDistance = frame.AmbientOcclusionDistance;
@@ -50,8 +50,8 @@ double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vt
   double t2[3];
   vtkMath::Cross(n, t1, t2);
   // per-pixel Cranley-Patterson rotation from a hash of the pixel
-  std::uint32_t h = static_cast<std::uint32_t>(px) * 73856093u ^
-    static_cast<std::uint32_t>(py) * 19349663u;
+  std::uint32_t h =
+    static_cast<std::uint32_t>(px) * 73856093u ^ static_cast<std::uint32_t>(py) * 19349663u;
   h ^= h >> 13;
   h *= 0x5bd1e995u;
   h ^= h >> 15;
@@ -151,8 +151,8 @@ double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vt
       const double tc = -vtkMath::Dot(oc, dir);
       const double q[3] = { oc[0] + tc * dir[0], oc[1] + tc * dir[1], oc[2] + tc * dir[2] };
       const double impact = std::sqrt(vtkMath::Dot(q, q));
-      const double integral = IntegrateDensityImpl(frame.DensityModel, frame.HollowFraction,
-        sv.R, impact, piece.Start - tc, std::min(piece.End, tOpaque) - tc);
+      const double integral = IntegrateDensityImpl(frame.DensityModel, frame.HollowFraction, sv.R,
+        impact, piece.Start - tc, std::min(piece.End, tOpaque) - tc);
       const double opticalDepth =
         frame.SphereKappa[piece.Index] * (integral / frame.SphereMaximum[piece.Index]);
       if (!(opticalDepth > 0.0) || !std::isfinite(opticalDepth))

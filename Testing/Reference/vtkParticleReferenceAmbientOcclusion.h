@@ -41,8 +41,8 @@ struct AmbientScratch
  * emission is composited in the order of their entry along the ray (exact where they do not
  * overlap). own is the sphere the point lies on, (px, py) the pixel (it rotates the pattern).
  */
-double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vtkIdType own,
-  int px, int py, AmbientScratch& scratch, double light[3]);
+double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vtkIdType own, int px,
+  int py, AmbientScratch& scratch, double light[3]);
 } // namespace prReference
 
 #endif

@@ -84,7 +84,8 @@ void CompositeExactly(TranslucentScratch& scratch, int model, double hollowFract
     }
   }
   // ends before starts at equal t: touching spheres do not overlap
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b)
+  std::sort(events.begin(), events.end(),
+    [](const Event& a, const Event& b)
     { return a.T < b.T || (a.T == b.T && !a.Start && b.Start); });
   active.clear();
   const double rs = std::min(std::max(hollowFraction, 0.0), 1.0);
@@ -179,8 +180,8 @@ void CompositeExactly(TranslucentScratch& scratch, int model, double hollowFract
             if (depths[a] > 0.0)
             {
               const Emitter& e = emitters[active[a]];
-              s += e.Lambda *
-                PieceIntegral(model, e.Impact * e.Impact, u0 - e.Seg->Tc, t - e.Seg->Tc);
+              s +=
+                e.Lambda * PieceIntegral(model, e.Impact * e.Impact, u0 - e.Seg->Tc, t - e.Seg->Tc);
             }
           }
           return s;
@@ -351,7 +352,7 @@ void RenderTranslucent(const Frame& frame)
           applyAmbient(p, n, static_cast<std::uint32_t>(opaqueHit.Index), color, occlusion, light);
         }
         const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
-                            std::isfinite(color[2]) && std::isfinite(alpha);
+          std::isfinite(color[2]) && std::isfinite(alpha);
         // otherwise the GPU discards the fragment; at a tie the particle (drawn later,
         // GL_LEQUAL) wins over the opaque layer
         if (finite && alpha > 0.0 && opaqueHit.T <= tStop)
@@ -429,7 +430,7 @@ void RenderTranslucent(const Frame& frame)
           double surface[3];
           cones = frame.Shade(n, p, amb, dif, surface);
           if (!std::isfinite(surface[0]) || !std::isfinite(surface[1]) ||
-              !std::isfinite(surface[2]))
+            !std::isfinite(surface[2]))
           {
             continue; // discarded
           }

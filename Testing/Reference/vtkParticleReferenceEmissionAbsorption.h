@@ -21,9 +21,10 @@ struct Frame;
 //------------------------------------------------------------------------------
 // Numerical integration (transparent mode). Gauss-Kronrod 7/15 nodes and weights (QUADPACK qk15).
 const double GKNodes[8] = { 0.991455371120812639206854697526329,
-  0.949107912342758524526189684047851, 0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-  0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-  0.207784955007898467600689403773245, 0.000000000000000000000000000000000 };
+  0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
+  0.741531185599394439863864773280788, 0.586087235467691130294144845693013,
+  0.405845151377397166906606412076961, 0.207784955007898467600689403773245,
+  0.000000000000000000000000000000000 };
 const double KronrodWeights[8] = { 0.022935322010529224963732008058970,
   0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
   0.140653259715525918745189590510238, 0.169004726639267902826583426598550,
@@ -154,11 +155,10 @@ inline double IntegrateDensityImpl(
   if (model == vtkTransparentSphereMapper::SQUARED_DISTANCE_DENSITY)
   {
     const double b2 = b * b;
-    return AdaptiveIntegrate([b2](double tau) { return b2 + tau * tau; }, pieces, numPieces,
-      IntegrationTolerance);
+    return AdaptiveIntegrate(
+      [b2](double tau) { return b2 + tau * tau; }, pieces, numPieces, IntegrationTolerance);
   }
-  return AdaptiveIntegrate(
-    [](double) { return 1.0; }, pieces, numPieces, IntegrationTolerance);
+  return AdaptiveIntegrate([](double) { return 1.0; }, pieces, numPieces, IntegrationTolerance);
 }
 
 // See vtkParticleReferenceRenderer::NumericalMaximumPathIntegral.
@@ -227,14 +227,14 @@ inline double OpacityFromOpticalDepth(double opticalDepth)
 // the centre (tau = t - Tc).
 struct Segment
 {
-  double Key;     // ray parameter of the segment's start (t_n after clipping)
-  double Tc;      // ray parameter of the closest approach
-  double Q[3];    // closest approach point relative to the centre
-  double H;       // half chord
-  double Tau0;    // start (-inf: the entry point)
-  double Tau1;    // end (+inf: the exit point)
+  double Key;  // ray parameter of the segment's start (t_n after clipping)
+  double Tc;   // ray parameter of the closest approach
+  double Q[3]; // closest approach point relative to the centre
+  double H;    // half chord
+  double Tau0; // start (-inf: the entry point)
+  double Tau1; // end (+inf: the exit point)
   std::uint32_t Index;
-  bool Entry;     // the segment starts at the visible entry point
+  bool Entry; // the segment starts at the visible entry point
 };
 
 // The chord of a sphere clipped to the visible part of the ray with the GPU's rule (see the

@@ -141,22 +141,24 @@ void ForEachPixelRay(const Frame& frame, PerPixel perPixel)
 {
   const int width = frame.Width;
   const RayCamera& cam = *frame.Camera;
-  vtkSMPTools::For(0, frame.Height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
-    Scratch scratch;
-    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+  vtkSMPTools::For(0, frame.Height,
+    [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
-      for (int x = 0; x < width; ++x)
+      Scratch scratch;
+      for (vtkIdType y = rowBegin; y < rowEnd; ++y)
       {
-        const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
-        double o[3];
-        double d[3];
-        double tNear;
-        double tFar;
-        cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
-        perPixel(x, static_cast<int>(y), pixel, o, d, tNear, tFar, scratch);
+        for (int x = 0; x < width; ++x)
+        {
+          const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+          double o[3];
+          double d[3];
+          double tNear;
+          double tFar;
+          cam.PixelRay(x + 0.5, y + 0.5, o, d, tNear, tFar);
+          perPixel(x, static_cast<int>(y), pixel, o, d, tNear, tFar, scratch);
+        }
       }
-    }
-  });
+    });
 }
 } // namespace prReference
 

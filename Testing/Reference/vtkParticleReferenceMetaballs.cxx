@@ -271,8 +271,8 @@ void vtkParticleReferenceMetaballs::Prepare()
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
-  const double direction[3], double tMin, double tMax, double& t, double normal[3], bool& inside)
+bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3], const double direction[3],
+  double tMin, double tMax, double& t, double normal[3], bool& inside)
 {
   this->Prepare();
   vtkIdType candidates = 0;
@@ -283,8 +283,8 @@ bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3],
-  const double direction[3], double tMin, double tMax, double& t, double normal[3], bool& inside,
+bool vtkParticleReferenceMetaballs::IntersectRay(const double origin[3], const double direction[3],
+  double tMin, double tMax, double& t, double normal[3], bool& inside,
   std::vector<Contribution>* contributions, vtkIdType& candidateCount) const
 {
   const vtkInternals& internals = *this->Internals;

@@ -1,6 +1,7 @@
-// Private header of ParticleRendering::Reference (vtkParticleReferenceRenderer): rays and the sphere grid -- the
-// camera as the rays see it, spheres in view coordinates, the ray-sphere intersection of
-// RaySphere.glsl in double, and the uniform grid that finds the spheres along a ray.
+// Private header of ParticleRendering::Reference (vtkParticleReferenceRenderer): rays and the
+// sphere grid -- the camera as the rays see it, spheres in view coordinates, the ray-sphere
+// intersection of RaySphere.glsl in double, and the uniform grid that finds the spheres along a
+// ray.
 #ifndef vtkParticleReferenceRays_h
 #define vtkParticleReferenceRays_h
 
@@ -125,8 +126,8 @@ struct RayCamera
     double px, double py, double depth, const double o[3], const double d[3]) const
   {
     double p[3];
-    this->Unproject(2.0 * px / this->Width - 1.0, 2.0 * py / this->Height - 1.0,
-      2.0 * depth - 1.0, p);
+    this->Unproject(
+      2.0 * px / this->Width - 1.0, 2.0 * py / this->Height - 1.0, 2.0 * depth - 1.0, p);
     const double rel[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
     return Dot(rel, d);
   }
@@ -371,16 +372,18 @@ public:
     {
       IntersectSphere(cam, o, d, spheres[i], i, best);
     }
-    this->Walk(o, d, tMin, tMax, [&](size_t c, double cellExit, double t1) {
-      for (std::uint64_t r = this->Cells[c]; r < this->Cells[c + 1]; ++r)
+    this->Walk(o, d, tMin, tMax,
+      [&](size_t c, double cellExit, double t1)
       {
-        const std::uint32_t i = this->References[r];
-        IntersectSphere(cam, o, d, spheres[i], i, best);
-      }
-      // a hit inside this cell cannot be beaten by spheres of later cells; the margin covers
-      // the rounding of the cell boundaries
-      return !(best.T <= cellExit - 1e-12 * std::abs(cellExit) || cellExit > t1);
-    });
+        for (std::uint64_t r = this->Cells[c]; r < this->Cells[c + 1]; ++r)
+        {
+          const std::uint32_t i = this->References[r];
+          IntersectSphere(cam, o, d, spheres[i], i, best);
+        }
+        // a hit inside this cell cannot be beaten by spheres of later cells; the margin covers
+        // the rounding of the cell boundaries
+        return !(best.T <= cellExit - 1e-12 * std::abs(cellExit) || cellExit > t1);
+      });
   }
 
   // Every sphere referenced by a cell the ray crosses between tMin and tMax, plus the large
@@ -389,12 +392,15 @@ public:
     std::vector<std::uint32_t>& out) const
   {
     out.insert(out.end(), this->Large.begin(), this->Large.end());
-    this->Walk(o, d, tMin, tMax, [&](size_t c, double cellExit, double t1) {
-      out.insert(out.end(), this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c]),
-        this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c + 1]));
-      // the cell boundaries are rounded: continue a little past t1
-      return !(cellExit > t1 + 1e-12 * std::abs(t1));
-    });
+    this->Walk(o, d, tMin, tMax,
+      [&](size_t c, double cellExit, double t1)
+      {
+        out.insert(out.end(),
+          this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c]),
+          this->References.begin() + static_cast<std::ptrdiff_t>(this->Cells[c + 1]));
+        // the cell boundaries are rounded: continue a little past t1
+        return !(cellExit > t1 + 1e-12 * std::abs(t1));
+      });
   }
 
   const int* GetResolution() const { return this->N; }

@@ -177,8 +177,8 @@ double vtkParticleReferenceRenderer::NumericalMaximumPathIntegral(int model, dou
   return NumericalMaximumPathIntegralImpl(model, hollowFraction);
 }
 
-double vtkParticleReferenceRenderer::SegmentOpacity(int model, double hollowFraction,
-  double radius, double impact, double tau0, double tau1, double thetaMax)
+double vtkParticleReferenceRenderer::SegmentOpacity(int model, double hollowFraction, double radius,
+  double impact, double tau0, double tau1, double thetaMax)
 {
   if (!(thetaMax > 0.0))
   {
@@ -343,8 +343,9 @@ bool vtkParticleReferenceRenderer::Render()
     {
       return fail("The particle attributes do not have one tuple (RGBA colours) per point.");
     }
-    radiusScale =
-      this->Actor->GetIsIdentity() ? 1.0 : std::cbrt(std::abs(this->Actor->GetMatrix()->Determinant()));
+    radiusScale = this->Actor->GetIsIdentity()
+      ? 1.0
+      : std::cbrt(std::abs(this->Actor->GetMatrix()->Determinant()));
   }
   else
   {
@@ -568,16 +569,18 @@ bool vtkParticleReferenceRenderer::Render()
   std::uint32_t* coneOut = internals.ConeBits.data();
   this->TranslucentAlphaImage = NewImage(width, height, 1, "TranslucentAlpha");
   this->AmbientOcclusionImage = NewImage(width, height, 1, "AmbientOcclusion");
-  double* aoOut = vtkDoubleArray::SafeDownCast(
-    this->AmbientOcclusionImage->GetPointData()->GetScalars())->GetPointer(0);
+  double* aoOut =
+    vtkDoubleArray::SafeDownCast(this->AmbientOcclusionImage->GetPointData()->GetScalars())
+      ->GetPointer(0);
   std::fill(aoOut, aoOut + static_cast<size_t>(width) * height, 1.0);
   this->AmbientLightImage = NewImage(width, height, 3, "AmbientLight");
-  double* ambientLightOut = vtkDoubleArray::SafeDownCast(
-    this->AmbientLightImage->GetPointData()->GetScalars())->GetPointer(0);
+  double* ambientLightOut =
+    vtkDoubleArray::SafeDownCast(this->AmbientLightImage->GetPointData()->GetScalars())
+      ->GetPointer(0);
   std::fill(ambientLightOut, ambientLightOut + 3 * static_cast<size_t>(width) * height, 0.0);
-  double* translucentAlphaOut = vtkDoubleArray::SafeDownCast(
-    this->TranslucentAlphaImage->GetPointData()->GetScalars())
-                                  ->GetPointer(0);
+  double* translucentAlphaOut =
+    vtkDoubleArray::SafeDownCast(this->TranslucentAlphaImage->GetPointData()->GetScalars())
+      ->GetPointer(0);
 
   const SphereGrid& grid = internals.Grid;
   const unsigned char* rgba = colors ? colors->GetPointer(0) : nullptr;

@@ -14,11 +14,11 @@
  *   parallel rays start at the plane z_VC = 0 (the plane of the camera position).
  * - Spheres: the centres are the input points transformed by the actor's matrix and the view
  *   matrix in double (the mapper uploads float positions, so for data far from the origin the
- *   GPU's spheres are displaced by that rounding and the reference's are not); the radii are the mapper's GetParticleRadii() times GetRadiusScaleVC(actor),
- *   or, with SetParticleAttributes(), the caller's radii times |det(actor matrix)|^(1/3).
- *   Skipped particles (radius 0), particles clipped by the mapper's clipping planes (by their
- *   centre, as on the GPU) and particles with opacity 0 (all their fragments are discarded on the
- *   GPU) are not drawn.
+ *   GPU's spheres are displaced by that rounding and the reference's are not); the radii are the
+ * mapper's GetParticleRadii() times GetRadiusScaleVC(actor), or, with SetParticleAttributes(), the
+ * caller's radii times |det(actor matrix)|^(1/3). Skipped particles (radius 0), particles clipped
+ * by the mapper's clipping planes (by their centre, as on the GPU) and particles with opacity 0
+ * (all their fragments are discarded on the GPU) are not drawn.
  * - Intersection: in the sphere-relative form of Shaders/RaySphere.glsl (closest approach point
  *   relative to the centre, no cancellation). The visible surface is the first intersection that
  *   lies in front of the eye and within the near and far planes (tested with the projection
@@ -156,7 +156,7 @@
 
 #include "vtkObject.h"
 #include "vtkParticleRenderingReferenceModule.h" // for export macro
-#include "vtkSmartPointer.h"            // for vtkSmartPointer
+#include "vtkSmartPointer.h"                     // for vtkSmartPointer
 
 class vtkActor;
 class vtkDataArray;
@@ -305,8 +305,8 @@ public:
    * ends are allowed); 0 when it is empty or the ray misses. Adaptive Gauss-Kronrod 7/15 with
    * breakpoints at the sphere's and the core's boundaries, relative tolerance 1e-12.
    */
-  static double IntegrateDensity(int model, double hollowFraction, double radius, double impact,
-    double tau0, double tau1);
+  static double IntegrateDensity(
+    int model, double hollowFraction, double radius, double impact, double tau0, double tau1);
 
   /**
    * Numerical maximum over impact parameters b in [0, 1] of the full-chord IntegrateDensity()

@@ -142,7 +142,7 @@ int SetUpLights(vtkRenderer* renderer, vtkCamera* camera, const double viewMatri
   {
     const bool haveNormals = input && input->GetPointData()->GetNormals() != nullptr;
     needLighting = (property->GetInterpolation() != VTK_FLAT && haveNormals) ||
-                   property->GetRenderPointsAsSpheres();
+      property->GetRenderPointsAsSpheres();
   }
   if (!property->GetLighting() || !needLighting || lights.empty())
   {
@@ -295,7 +295,7 @@ void RenderOpaque(const Frame& frame)
           }
         }
         const bool finite = std::isfinite(color[0]) && std::isfinite(color[1]) &&
-                            std::isfinite(color[2]) && std::isfinite(alpha);
+          std::isfinite(color[2]) && std::isfinite(alpha);
         if (finite && alpha > 0.0) // otherwise the GPU discards the fragment
         {
           aoOut[pixel] = occlusion;
