@@ -35,6 +35,7 @@
 #include "vtkRenderState.h"
 #include "vtkSMPTools.h"
 #include "vtkSNDFTileCache.h"
+#include "vtkSNDFViewPlacement.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -297,27 +298,12 @@ public:
   bool HaveTable = false;
   int TableBins = 0;
   // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
-  // position, focal point and parallel scale in parallel projection), and its virtual plane:
-  // the view rotation, the camera's offset from the focal point, the focal point's distance
-  // along the view, the size of a level-0 texel and the plane position of texel (0, 0)'s
-  // lower-left corner.
+  // position, focal point and parallel scale in parallel projection), and its virtual plane
+  // (View).
   std::vector<double> FixedState;
   bool FrameValid = false;
-  double Rotation[3][3] = { { 0.0 } };
-  double Offset[3] = { 0.0, 0.0, 0.0 };
-  double Along = 0.0;
-  double TexelSize = 1.0;
-  double Plane[2] = { 0.0, 0.0 };
-  // A view between two levels of the S-MIP (PlaceView()): its pixels are Scale texels of the
-  // placed level wide, the window's lower-left corner lies at Offset in the rectangle of Size
-  // texels that is sampled and shaded (SNDFBoxFilter.glsl makes the window's pixels).
-  struct Between
-  {
-    bool Active = false;
-    double Scale = 1.0;
-    double Offset[2] = { 0.0, 0.0 };
-    int Size[2] = { 0, 0 };
-  };
+  vtkSNDFViewPlacement View;
+  using Between = vtkSNDFViewPlacement::Between;
   vtkSmartPointer<vtkTextureObject> DisplayImage;
   vtkSmartPointer<vtkTextureObject> DisplayDepth;
   vtkNew<vtkParticleComputeProgram> BoxFilter;
@@ -958,161 +944,12 @@ public:
   // GPU times of the last timed Render() per stage (sample, accumulate, shade)
   vtkParticleStageTimer Timer{ 3 };
 
-  // The lower-left corner of a width x height parallel view in the coordinates of the frame's
-  // rotation (right, up) and the distance of its focal point along the view: VTK's orthographic
-  // window spans (WindowCenter -/+ 1) * (parallel scale * aspect, parallel scale) around the
-  // focal point.
-  void Corner(vtkCamera* camera, int width, int height, double corner[2], double& along) const
-  {
-    const double* focal = camera->GetFocalPoint();
-    double plane[3] = { 0.0, 0.0, 0.0 };
-    for (int row = 0; row < 3; ++row)
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        plane[row] += this->Rotation[row][a] * focal[a];
-      }
-    }
-    const double* centre = camera->GetWindowCenter();
-    const double scale = camera->GetParallelScale();
-    corner[0] = plane[0] + (centre[0] - 1.0) * scale * width / height;
-    corner[1] = plane[1] + (centre[1] - 1.0) * scale;
-    along = plane[2];
-  }
-
-  // Starts the S-MIP's frame at this view: its pixels are the level-0 texels.
+  // Starts the S-MIP's frame at this view (View: its plane; no view placed yet).
   void StartFrame(vtkCamera* camera, int width, int height)
   {
-    vtkMatrix4x4* view = camera->GetViewTransformMatrix();
-    for (int row = 0; row < 3; ++row)
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        this->Rotation[row][a] = view->GetElement(row, a);
-      }
-      this->Offset[row] = camera->GetPosition()[row] - camera->GetFocalPoint()[row];
-    }
-    this->TexelSize =
-      camera->GetParallelProjection() ? 2.0 * camera->GetParallelScale() / height : 1.0;
-    this->Corner(camera, width, height, this->Plane, this->Along);
+    this->View.Start(camera, width, height);
     this->Placement = vtkSNDFTileCache::Placement();
     this->FrameValid = true;
-  }
-
-  // Where a parallel view of the frame lies in the S-MIP: false unless its pixels are the
-  // texels of a level (pixel size 2^L level-0 texels; the camera moved in the view plane only,
-  // the direction kept). Its grid is placed to 1/256 level-0 texel.
-  //
-  // A parallel view whose pixel size is not a power of two times the level-0 texel lies between
-  // two levels (ZoomBetweenLevels; otherwise false): it is placed at the finer of the two, L
-  // (its pixels 1 to 2 texels of L wide: the coarser level, magnified, measured mean 5.9 /255
-  // from the super-sampled view on the test crystal, where the plain image is 9.6), on the
-  // phase-0 grid of that level, with a rectangle of texels that covers the window and a texel
-  // more on each side; the samples go into those texels and the window shows their box filter
-  // (`between`). False where the rectangle needs more than `slots` tiles.
-  bool PlaceView(vtkCamera* camera, int width, int height, int slots, bool allowBetween,
-    vtkSNDFTileCache::Placement& placed, Between& between) const
-  {
-    between = Between();
-    if (!camera->GetParallelProjection())
-    {
-      placed = vtkSNDFTileCache::Placement();
-      return true;
-    }
-    const double pixel = 2.0 * camera->GetParallelScale() / height;
-    const double lod = std::log2(pixel / this->TexelSize);
-    if (!std::isfinite(lod))
-    {
-      return false;
-    }
-    between.Active = std::abs(lod - std::round(lod)) > 1e-6;
-    if (between.Active && !allowBetween)
-    {
-      return false;
-    }
-    // (between two levels: the finer one, its texels at most a pixel wide)
-    const long level = between.Active ? static_cast<long>(std::floor(lod)) : std::lround(lod);
-    if (level < vtkSNDFTileCache::MinimumLevel || level > vtkSNDFTileCache::MaximumLevel)
-    {
-      return false;
-    }
-    double reach = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      reach += this->Offset[a] * this->Offset[a];
-    }
-    reach = std::sqrt(reach);
-    for (int a = 0; a < 3; ++a)
-    {
-      const double offset = camera->GetPosition()[a] - camera->GetFocalPoint()[a];
-      if (std::abs(offset - this->Offset[a]) > 1e-9 * reach + 1e-6 * this->TexelSize)
-      {
-        return false;
-      }
-    }
-    double corner[2];
-    double along;
-    this->Corner(camera, width, height, corner, along);
-    if (std::abs(along - this->Along) > 1e-3 * this->TexelSize)
-    {
-      return false;
-    }
-    placed.Level = static_cast<int>(level);
-    const long long texel = 1LL << (level + 8);
-    for (int a = 0; a < 2; ++a)
-    {
-      // in 1/256 of a level-0 texel
-      const double position = 256.0 * (corner[a] - this->Plane[a]) / this->TexelSize;
-      if (!(std::abs(position) < 1e15))
-      {
-        return false;
-      }
-      if (between.Active)
-      {
-        const double at = position / static_cast<double>(texel); // in texels of the level
-        placed.Phase[a] = 0;
-        placed.Origin[a] = static_cast<long long>(std::floor(at)) - 1;
-        between.Offset[a] = at - static_cast<double>(placed.Origin[a]);
-        continue;
-      }
-      // (a grid of 1/256 pixel: the texels lie within 1/512 level-0 pixel of the view's pixels)
-      const long long whole = std::llround(position);
-      placed.Phase[a] = ((whole % texel) + texel) % texel;
-      placed.Origin[a] = (whole - placed.Phase[a]) / texel;
-    }
-    if (between.Active)
-    {
-      between.Scale = pixel / (this->TexelSize * std::ldexp(1.0, static_cast<int>(level)));
-      between.Size[0] = static_cast<int>(std::ceil(between.Offset[0] + width * between.Scale)) + 1;
-      between.Size[1] = static_cast<int>(std::ceil(between.Offset[1] + height * between.Scale)) + 1;
-      if (vtkSNDFTileCache::GetTilesForView(between.Size[0], between.Size[1]) > slots)
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-
-  // The parallel scale and window centre of a camera whose texelsX x texelsY pixels are the
-  // texels of the rectangle of a view between two levels (`placed`: on the level's phase-0 grid,
-  // its lower-left texel at Origin); the aspect ratio is texelsX / texelsY.
-  void SamplingWindow(vtkCamera* camera, const vtkSNDFTileCache::Placement& placed, int texelsX,
-    int texelsY, double& scale, double centre[2]) const
-  {
-    const double texel = this->TexelSize * std::ldexp(1.0, placed.Level);
-    scale = 0.5 * texelsY * texel;
-    const double aspect = static_cast<double>(texelsX) / texelsY;
-    const double* focal = camera->GetFocalPoint();
-    for (int a = 0; a < 2; ++a)
-    {
-      double plane = 0.0; // the focal point in the frame's rotation
-      for (int k = 0; k < 3; ++k)
-      {
-        plane += this->Rotation[a][k] * focal[k];
-      }
-      const double corner = this->Plane[a] + static_cast<double>(placed.Origin[a]) * texel;
-      centre[a] = (corner - plane) / (scale * (a == 0 ? aspect : 1.0)) + 1.0;
-    }
   }
 
   // true the first time `what` is reported
@@ -1896,7 +1733,8 @@ void vtkSNDFRenderPass::DescribeView(vtkFrame& frame)
   // The view: camera, size, bins, background. The camera's values are compared in single
   // precision: vtkWindowToImageFilter restores the view angle with a last-bit difference. In
   // parallel projection the position, focal point and parallel scale are left out: a view
-  // whose pixels are the texels of an S-MIP level keeps the samples (PlaceView()).
+  // whose pixels are the texels of an S-MIP level keeps the samples
+  // (vtkSNDFViewPlacement::Place()).
   vtkCamera* camera = ren->GetActiveCamera();
   frame.Camera = camera;
   const bool parallel = camera->GetParallelProjection() != 0;
@@ -1995,7 +1833,7 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
   sameFrame = internals.FrameValid && state == internals.FixedState &&
     internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
     internals.Cache->GetMoments() == moments &&
-    internals.PlaceView(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
+    internals.View.Place(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
   // a new colour map: the samples are recoloured where the new colours are a linear function of
   // the old ones, else taken again
   if (sameFrame && colourKey != internals.ColourKey)
@@ -2485,7 +2323,7 @@ void vtkSNDFRenderPass::TakeSamples(vtkFrame& frame)
   if (between.Active && samples > 0)
   {
     double scale = viewScale;
-    internals.SamplingWindow(camera, placement, texelsX, texelsY, scale, centre);
+    internals.View.SamplingWindow(camera, placement, texelsX, texelsY, scale, centre);
     camera->SetParallelScale(scale);
     camera->SetExplicitAspectRatio(static_cast<double>(texelsX) / texelsY);
     camera->UseExplicitAspectRatioOn();
