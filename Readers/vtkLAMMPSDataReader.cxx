@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <unordered_map>
 
 vtkStandardNewMacro(vtkLAMMPSDataReader);
@@ -89,47 +90,126 @@ int vtkLAMMPSDataReader::CanReadFile(const char* fileName)
 }
 
 //------------------------------------------------------------------------------
+// What RequestData reads, stage by stage: the file and its lines, the header, and the arrays the
+// sections fill.
+struct vtkLAMMPSDataReader::vtkParse
+{
+  explicit vtkParse(const std::string& name)
+    : Name(name)
+  {
+  }
+
+  // The next data line of the current section, split into words; false at the next section's
+  // header (then in Section and SectionComment) or at the end of the file.
+  bool NextData(std::vector<std::string>& out)
+  {
+    while (this->Lines->Next(this->Line))
+    {
+      std::string comment;
+      out = Split(StripComment(this->Line, &comment));
+      if (out.empty())
+      {
+        continue;
+      }
+      if (!IsNumber(out[0]))
+      {
+        this->Section = out[0];
+        for (size_t k = 1; k < out.size(); ++k)
+        {
+          this->Section += " " + out[k];
+        }
+        this->SectionComment = comment;
+        return false;
+      }
+      return true;
+    }
+    return false;
+  }
+
+  std::string Name;
+  InputFile File;
+  std::unique_ptr<LineReader> Lines;
+  std::string Line;
+  // the header
+  long long Timestep = 0;
+  long long Atoms = -1;
+  long long Types = 0;
+  Box Cell;
+  // the section header that ended the last section ("": the end of the file)
+  std::string Section;
+  std::string SectionComment;
+  // the sections' data, N atoms
+  vtkIdType N = 0;
+  std::vector<std::string> Columns;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkIdTypeArray> Ids;
+  std::map<std::string, vtkSmartPointer<vtkDataArray>> Arrays;
+  vtkSmartPointer<vtkIntArray> Image;
+  vtkSmartPointer<vtkFloatArray> Velocity;
+  std::map<long long, double> Masses;
+  bool HaveAtoms = false;
+  std::vector<std::string> Words;
+};
+
+//------------------------------------------------------------------------------
 int vtkLAMMPSDataReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* outline = vtkPolyData::GetData(outputVector, 1);
-  const std::string& name = this->FileName;
-  if (name.empty())
+  if (this->FileName.empty())
   {
     vtkErrorMacro(<< "No file name.");
     return 0;
   }
-  InputFile file;
-  if (!file.Open(name))
+  vtkParse p(this->FileName);
+  if (!this->OpenFile(p) || !this->ReadTitle(p) || !this->ReadHeader(p) || !this->ReadSections(p))
   {
-    vtkErrorMacro(<< name << ": cannot open the file");
     return 0;
   }
-  LineReader lines(file);
-  auto fail = [&](const std::string& what)
-  {
-    vtkErrorMacro(<< name << ", line " << lines.LineNumber() << ": " << what);
-    return 0;
-  };
+  this->UnwrapPositions(p);
+  this->AddDerivedArrays(p);
+  this->Assemble(p, output, outline);
+  return 1;
+}
 
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::Fail(const vtkParse& p, const std::string& what)
+{
+  vtkErrorMacro(<< p.Name << ", line " << p.Lines->LineNumber() << ": " << what);
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::OpenFile(vtkParse& p)
+{
+  if (!p.File.Open(p.Name))
+  {
+    vtkErrorMacro(<< p.Name << ": cannot open the file");
+    return false;
+  }
+  p.Lines.reset(new LineReader(p.File));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::ReadTitle(vtkParse& p)
+{
   // title, e.g. "LAMMPS data file via write_data, version ..., timestep = 200, units = lj"
-  std::string line;
-  if (!lines.Next(line))
+  if (!p.Lines->Next(p.Line))
   {
-    vtkErrorMacro(<< name << ": the file is empty");
-    return 0;
+    vtkErrorMacro(<< p.Name << ": the file is empty");
+    return false;
   }
-  if (line.find('\0') != std::string::npos)
+  if (p.Line.find('\0') != std::string::npos)
   {
-    return fail("a binary file, not a LAMMPS data file");
+    return this->Fail(p, "a binary file, not a LAMMPS data file");
   }
-  long long timestep = 0;
   {
-    const size_t at = line.find("timestep =");
+    const size_t at = p.Line.find("timestep =");
     if (at != std::string::npos)
     {
-      const std::vector<std::string> words = Split(line.substr(at + 10));
+      const std::vector<std::string> words = Split(p.Line.substr(at + 10));
       if (!words.empty())
       {
         std::string digits = words[0];
@@ -137,362 +217,376 @@ int vtkLAMMPSDataReader::RequestData(
         {
           digits.pop_back(); // "200,"
         }
-        ParseInt64(digits.data(), digits.data() + digits.size(), timestep);
+        ParseInt64(digits.data(), digits.data() + digits.size(), p.Timestep);
       }
     }
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::ReadHeader(vtkParse& p)
+{
   // header
-  long long atoms = -1;
-  long long types = 0;
-  Box box;
-  std::string section;
-  std::string sectionComment;
-  while (lines.Next(line))
+  while (p.Lines->Next(p.Line))
   {
     std::string comment;
-    const std::vector<std::string> words = Split(StripComment(line, &comment));
+    const std::vector<std::string> words = Split(StripComment(p.Line, &comment));
     if (words.empty())
     {
       continue;
     }
     if (!IsNumber(words[0]))
     {
-      section = words[0];
+      p.Section = words[0];
       for (size_t k = 1; k < words.size(); ++k)
       {
-        section += " " + words[k];
+        p.Section += " " + words[k];
       }
-      sectionComment = comment;
+      p.SectionComment = comment;
       break;
     }
     double a, b, c;
     if (words.size() == 2 && words[1] == "atoms")
     {
-      ParseInt64(words[0].data(), words[0].data() + words[0].size(), atoms);
+      ParseInt64(words[0].data(), words[0].data() + words[0].size(), p.Atoms);
     }
     else if (words.size() == 3 && words[1] == "atom" && words[2] == "types")
     {
-      ParseInt64(words[0].data(), words[0].data() + words[0].size(), types);
+      ParseInt64(words[0].data(), words[0].data() + words[0].size(), p.Types);
     }
     else if (words.size() == 4 && ParseWord(words[0], a) && ParseWord(words[1], b) &&
       (words[2] == "xlo" || words[2] == "ylo" || words[2] == "zlo"))
     {
       const int k = words[2][0] - 'x';
-      box.Lo[k] = a;
-      box.Hi[k] = b;
+      p.Cell.Lo[k] = a;
+      p.Cell.Hi[k] = b;
     }
     else if (words.size() == 6 && words[3] == "xy" && ParseWord(words[0], a) &&
       ParseWord(words[1], b) && ParseWord(words[2], c))
     {
-      box.Tilt[0] = a;
-      box.Tilt[1] = b;
-      box.Tilt[2] = c;
-      box.Triclinic = true;
+      p.Cell.Tilt[0] = a;
+      p.Cell.Tilt[1] = b;
+      p.Cell.Tilt[2] = c;
+      p.Cell.Triclinic = true;
     }
   }
-  if (atoms < 0)
+  if (p.Atoms < 0)
   {
-    return fail("no 'N atoms' line in the header: not a LAMMPS data file?");
+    return this->Fail(p, "no 'N atoms' line in the header: not a LAMMPS data file?");
   }
 
-  // sections
-  const vtkIdType n = static_cast<vtkIdType>(atoms);
-  std::vector<std::string> columns;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("id");
-  ids->SetNumberOfTuples(n);
-  std::map<std::string, vtkSmartPointer<vtkDataArray>> arrays;
-  vtkSmartPointer<vtkIntArray> image;
-  vtkSmartPointer<vtkFloatArray> velocity;
-  std::map<long long, double> masses;
-  bool haveAtoms = false;
-  std::vector<std::string> words;
-  while (!section.empty())
+  // the arrays of the N atoms the sections fill
+  p.N = static_cast<vtkIdType>(p.Atoms);
+  p.Points->SetDataTypeToDouble();
+  p.Points->SetNumberOfPoints(p.N);
+  p.Ids->SetName("id");
+  p.Ids->SetNumberOfTuples(p.N);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::ReadSections(vtkParse& p)
+{
+  while (!p.Section.empty())
   {
-    const std::string current = section;
-    const std::string currentComment = sectionComment;
-    section.clear();
-    // the lines of this section up to the next section header (or the end)
-    auto nextData = [&](std::vector<std::string>& out) -> bool
-    {
-      while (lines.Next(line))
-      {
-        std::string comment;
-        out = Split(StripComment(line, &comment));
-        if (out.empty())
-        {
-          continue;
-        }
-        if (!IsNumber(out[0]))
-        {
-          section = out[0];
-          for (size_t k = 1; k < out.size(); ++k)
-          {
-            section += " " + out[k];
-          }
-          sectionComment = comment;
-          return false;
-        }
-        return true;
-      }
-      return false;
-    };
+    const std::string current = p.Section;
+    const std::string comment = p.SectionComment;
+    p.Section.clear();
+    bool ok = true;
     if (current == "Atoms")
     {
-      std::string style =
-        Split(currentComment).empty() ? this->AtomStyle : Split(currentComment)[0];
-      const auto it = AtomStyles().find(style);
-      if (it == AtomStyles().end())
-      {
-        std::string known;
-        for (const auto& item : AtomStyles())
-        {
-          known += " " + item.first;
-        }
-        return fail("atom style '" + style + "' is not supported (supported:" + known + ")");
-      }
-      columns = it->second;
-      for (const std::string& c : columns)
-      {
-        if (c == "x" || c == "y" || c == "z" || c == "mux" || c == "muy" || c == "muz")
-        {
-          continue;
-        }
-        vtkSmartPointer<vtkDataArray> a;
-        if (c == "type" || c == "mol")
-        {
-          a = vtkSmartPointer<vtkIntArray>::New();
-        }
-        else
-        {
-          a = vtkSmartPointer<vtkFloatArray>::New();
-        }
-        a->SetName(c.c_str());
-        a->SetNumberOfTuples(n);
-        arrays[c] = a;
-      }
-      vtkSmartPointer<vtkFloatArray> mu;
-      if (style == "dipole")
-      {
-        mu = vtkSmartPointer<vtkFloatArray>::New();
-        mu->SetName("mu");
-        mu->SetNumberOfComponents(3);
-        mu->SetNumberOfTuples(n);
-        arrays["mu"] = mu;
-      }
-      const size_t base = columns.size() + 1;
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        if (!nextData(words))
-        {
-          return fail("the Atoms section ends after " + std::to_string(i) + " of " +
-            std::to_string(atoms) + " atoms");
-        }
-        if (words.size() != base && words.size() != base + 3)
-        {
-          return fail(std::to_string(words.size()) + " values where atom style '" + style +
-            "' has " + std::to_string(base) + " (or " + std::to_string(base + 3) +
-            " with image flags)");
-        }
-        long long id;
-        if (!ParseInt64(words[0].data(), words[0].data() + words[0].size(), id))
-        {
-          return fail("the atom id '" + words[0] + "' is not an integer");
-        }
-        ids->SetValue(i, static_cast<vtkIdType>(id));
-        double x[3] = { 0, 0, 0 };
-        for (size_t c = 0; c < columns.size(); ++c)
-        {
-          const std::string& word = words[c + 1];
-          const std::string& col = columns[c];
-          double value;
-          long long integer;
-          const bool isInt = col == "type" || col == "mol";
-          if (isInt ? !ParseInt64(word.data(), word.data() + word.size(), integer)
-                    : !ParseWord(word, value))
-          {
-            return fail(
-              "'" + word + "' (" + col + ") is not " + (isInt ? "an integer" : "a number"));
-          }
-          if (col == "x" || col == "y" || col == "z")
-          {
-            x[col[0] - 'x'] = value;
-          }
-          else if (col == "mux" || col == "muy" || col == "muz")
-          {
-            mu->SetComponent(i, col[2] - 'x', value);
-          }
-          else
-          {
-            arrays[col]->SetComponent(i, 0, isInt ? static_cast<double>(integer) : value);
-          }
-        }
-        if (words.size() == base + 3)
-        {
-          if (!image)
-          {
-            image = vtkSmartPointer<vtkIntArray>::New();
-            image->SetName("image");
-            image->SetNumberOfComponents(3);
-            image->SetNumberOfTuples(n);
-            image->FillValue(0);
-          }
-          for (int k = 0; k < 3; ++k)
-          {
-            long long flag;
-            const std::string& word = words[base + k];
-            if (!ParseInt64(word.data(), word.data() + word.size(), flag))
-            {
-              return fail("the image flag '" + word + "' is not an integer");
-            }
-            image->SetTypedComponent(i, k, static_cast<int>(flag));
-          }
-        }
-        points->SetPoint(i, x);
-      }
-      haveAtoms = true;
-      if (!section.empty() || nextData(words))
-      {
-        if (section.empty())
-        {
-          return fail("more lines in the Atoms section than the header's " + std::to_string(atoms) +
-            " atoms");
-        }
-      }
+      ok = this->ReadAtoms(p, comment);
     }
     else if (current == "Velocities")
     {
-      if (!haveAtoms)
-      {
-        return fail("Velocities before Atoms");
-      }
-      std::unordered_map<long long, vtkIdType> row;
-      row.reserve(static_cast<size_t>(n));
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        row[ids->GetValue(i)] = i;
-      }
-      velocity = vtkSmartPointer<vtkFloatArray>::New();
-      velocity->SetName("velocity");
-      velocity->SetNumberOfComponents(3);
-      velocity->SetNumberOfTuples(n);
-      velocity->FillValue(0.0f);
-      while (nextData(words))
-      {
-        long long id;
-        double v[3];
-        if (words.size() < 4 ||
-          !ParseInt64(words[0].data(), words[0].data() + words[0].size(), id) ||
-          !ParseWord(words[1], v[0]) || !ParseWord(words[2], v[1]) || !ParseWord(words[3], v[2]))
-        {
-          return fail("expected 'id vx vy vz' in the Velocities section");
-        }
-        const auto it = row.find(id);
-        if (it == row.end())
-        {
-          return fail("velocity of atom " + std::to_string(id) + ", which is not in Atoms");
-        }
-        velocity->SetTuple(it->second, v);
-      }
+      ok = this->ReadVelocities(p);
     }
     else if (current == "Masses")
     {
-      while (nextData(words))
-      {
-        long long type;
-        double mass;
-        if (words.size() < 2 ||
-          !ParseInt64(words[0].data(), words[0].data() + words[0].size(), type) ||
-          !ParseWord(words[1], mass))
-        {
-          return fail("expected 'type mass' in the Masses section");
-        }
-        masses[type] = mass;
-      }
+      ok = this->ReadMasses(p);
     }
     else
     {
-      while (nextData(words))
+      while (p.NextData(p.Words))
       {
       }
     }
+    if (!ok)
+    {
+      return false;
+    }
   }
-  if (!haveAtoms && n > 0)
+  if (!p.HaveAtoms && p.N > 0)
   {
-    return fail("the file has no Atoms section");
+    return this->Fail(p, "the file has no Atoms section");
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::ReadAtoms(vtkParse& p, const std::string& comment)
+{
+  std::string style = Split(comment).empty() ? this->AtomStyle : Split(comment)[0];
+  const auto it = AtomStyles().find(style);
+  if (it == AtomStyles().end())
+  {
+    std::string known;
+    for (const auto& item : AtomStyles())
+    {
+      known += " " + item.first;
+    }
+    return this->Fail(p, "atom style '" + style + "' is not supported (supported:" + known + ")");
+  }
+  p.Columns = it->second;
+  for (const std::string& c : p.Columns)
+  {
+    if (c == "x" || c == "y" || c == "z" || c == "mux" || c == "muy" || c == "muz")
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> a;
+    if (c == "type" || c == "mol")
+    {
+      a = vtkSmartPointer<vtkIntArray>::New();
+    }
+    else
+    {
+      a = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    a->SetName(c.c_str());
+    a->SetNumberOfTuples(p.N);
+    p.Arrays[c] = a;
+  }
+  vtkSmartPointer<vtkFloatArray> mu;
+  if (style == "dipole")
+  {
+    mu = vtkSmartPointer<vtkFloatArray>::New();
+    mu->SetName("mu");
+    mu->SetNumberOfComponents(3);
+    mu->SetNumberOfTuples(p.N);
+    p.Arrays["mu"] = mu;
+  }
+  const size_t base = p.Columns.size() + 1;
+  for (vtkIdType i = 0; i < p.N; ++i)
+  {
+    if (!p.NextData(p.Words))
+    {
+      return this->Fail(p,
+        "the Atoms section ends after " + std::to_string(i) + " of " + std::to_string(p.Atoms) +
+          " atoms");
+    }
+    if (p.Words.size() != base && p.Words.size() != base + 3)
+    {
+      return this->Fail(p,
+        std::to_string(p.Words.size()) + " values where atom style '" + style + "' has " +
+          std::to_string(base) + " (or " + std::to_string(base + 3) + " with image flags)");
+    }
+    long long id;
+    if (!ParseInt64(p.Words[0].data(), p.Words[0].data() + p.Words[0].size(), id))
+    {
+      return this->Fail(p, "the atom id '" + p.Words[0] + "' is not an integer");
+    }
+    p.Ids->SetValue(i, static_cast<vtkIdType>(id));
+    double x[3] = { 0, 0, 0 };
+    for (size_t c = 0; c < p.Columns.size(); ++c)
+    {
+      const std::string& word = p.Words[c + 1];
+      const std::string& col = p.Columns[c];
+      double value;
+      long long integer;
+      const bool isInt = col == "type" || col == "mol";
+      if (isInt ? !ParseInt64(word.data(), word.data() + word.size(), integer)
+                : !ParseWord(word, value))
+      {
+        return this->Fail(
+          p, "'" + word + "' (" + col + ") is not " + (isInt ? "an integer" : "a number"));
+      }
+      if (col == "x" || col == "y" || col == "z")
+      {
+        x[col[0] - 'x'] = value;
+      }
+      else if (col == "mux" || col == "muy" || col == "muz")
+      {
+        mu->SetComponent(i, col[2] - 'x', value);
+      }
+      else
+      {
+        p.Arrays[col]->SetComponent(i, 0, isInt ? static_cast<double>(integer) : value);
+      }
+    }
+    if (p.Words.size() == base + 3)
+    {
+      if (!p.Image)
+      {
+        p.Image = vtkSmartPointer<vtkIntArray>::New();
+        p.Image->SetName("image");
+        p.Image->SetNumberOfComponents(3);
+        p.Image->SetNumberOfTuples(p.N);
+        p.Image->FillValue(0);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        long long flag;
+        const std::string& word = p.Words[base + k];
+        if (!ParseInt64(word.data(), word.data() + word.size(), flag))
+        {
+          return this->Fail(p, "the image flag '" + word + "' is not an integer");
+        }
+        p.Image->SetTypedComponent(i, k, static_cast<int>(flag));
+      }
+    }
+    p.Points->SetPoint(i, x);
+  }
+  p.HaveAtoms = true;
+  if (!p.Section.empty() || p.NextData(p.Words))
+  {
+    if (p.Section.empty())
+    {
+      return this->Fail(p,
+        "more lines in the Atoms section than the header's " + std::to_string(p.Atoms) + " atoms");
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::ReadVelocities(vtkParse& p)
+{
+  if (!p.HaveAtoms)
+  {
+    return this->Fail(p, "Velocities before Atoms");
+  }
+  std::unordered_map<long long, vtkIdType> row;
+  row.reserve(static_cast<size_t>(p.N));
+  for (vtkIdType i = 0; i < p.N; ++i)
+  {
+    row[p.Ids->GetValue(i)] = i;
+  }
+  p.Velocity = vtkSmartPointer<vtkFloatArray>::New();
+  p.Velocity->SetName("velocity");
+  p.Velocity->SetNumberOfComponents(3);
+  p.Velocity->SetNumberOfTuples(p.N);
+  p.Velocity->FillValue(0.0f);
+  while (p.NextData(p.Words))
+  {
+    long long id;
+    double v[3];
+    if (p.Words.size() < 4 ||
+      !ParseInt64(p.Words[0].data(), p.Words[0].data() + p.Words[0].size(), id) ||
+      !ParseWord(p.Words[1], v[0]) || !ParseWord(p.Words[2], v[1]) || !ParseWord(p.Words[3], v[2]))
+    {
+      return this->Fail(p, "expected 'id vx vy vz' in the Velocities section");
+    }
+    const auto it = row.find(id);
+    if (it == row.end())
+    {
+      return this->Fail(p, "velocity of atom " + std::to_string(id) + ", which is not in Atoms");
+    }
+    p.Velocity->SetTuple(it->second, v);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLAMMPSDataReader::ReadMasses(vtkParse& p)
+{
+  while (p.NextData(p.Words))
+  {
+    long long type;
+    double mass;
+    if (p.Words.size() < 2 ||
+      !ParseInt64(p.Words[0].data(), p.Words[0].data() + p.Words[0].size(), type) ||
+      !ParseWord(p.Words[1], mass))
+    {
+      return this->Fail(p, "expected 'type mass' in the Masses section");
+    }
+    p.Masses[type] = mass;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLAMMPSDataReader::UnwrapPositions(vtkParse& p)
+{
   // unwrapped positions, radius, mass
   if (this->PositionSource == UNWRAPPED)
   {
-    if (!image)
+    if (!p.Image)
     {
-      vtkWarningMacro(<< name << ": no image flags in Atoms: the positions stay wrapped.");
+      vtkWarningMacro(<< p.Name << ": no image flags in Atoms: the positions stay wrapped.");
     }
     else
     {
-      const double l[3] = { box.Length(0), box.Length(1), box.Length(2) };
-      for (vtkIdType i = 0; i < n; ++i)
+      const double l[3] = { p.Cell.Length(0), p.Cell.Length(1), p.Cell.Length(2) };
+      for (vtkIdType i = 0; i < p.N; ++i)
       {
         double x[3];
-        points->GetPoint(i, x);
+        p.Points->GetPoint(i, x);
         int im[3];
-        image->GetTypedTuple(i, im);
-        x[0] += im[0] * l[0] + im[1] * box.Tilt[0] + im[2] * box.Tilt[1];
-        x[1] += im[1] * l[1] + im[2] * box.Tilt[2];
+        p.Image->GetTypedTuple(i, im);
+        x[0] += im[0] * l[0] + im[1] * p.Cell.Tilt[0] + im[2] * p.Cell.Tilt[1];
+        x[1] += im[1] * l[1] + im[2] * p.Cell.Tilt[2];
         x[2] += im[2] * l[2];
-        points->SetPoint(i, x);
+        p.Points->SetPoint(i, x);
       }
     }
   }
-  vtkIntArray* type = vtkIntArray::SafeDownCast(arrays.count("type") ? arrays["type"] : nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkLAMMPSDataReader::AddDerivedArrays(vtkParse& p)
+{
+  vtkIntArray* type =
+    vtkIntArray::SafeDownCast(p.Arrays.count("type") ? p.Arrays["type"] : nullptr);
   if (this->GenerateRadius)
   {
     vtkNew<vtkFloatArray> radius;
     radius->SetName("radius");
-    radius->SetNumberOfTuples(n);
-    vtkDataArray* diameter = arrays.count("diameter") ? arrays["diameter"].GetPointer() : nullptr;
-    for (vtkIdType i = 0; i < n; ++i)
+    radius->SetNumberOfTuples(p.N);
+    vtkDataArray* diameter =
+      p.Arrays.count("diameter") ? p.Arrays["diameter"].GetPointer() : nullptr;
+    for (vtkIdType i = 0; i < p.N; ++i)
     {
       radius->SetValue(i,
         static_cast<float>(diameter ? 0.5 * diameter->GetComponent(i, 0)
             : type                  ? this->GetTypeRadius(type->GetValue(i))
                                     : this->DefaultRadius));
     }
-    arrays["radius"] = radius;
+    p.Arrays["radius"] = radius;
   }
-  if (!masses.empty() && type)
+  if (!p.Masses.empty() && type)
   {
     vtkNew<vtkFloatArray> mass;
     mass->SetName("mass");
-    mass->SetNumberOfTuples(n);
-    for (vtkIdType i = 0; i < n; ++i)
+    mass->SetNumberOfTuples(p.N);
+    for (vtkIdType i = 0; i < p.N; ++i)
     {
-      const auto it = masses.find(type->GetValue(i));
-      mass->SetValue(i, it == masses.end() ? std::nanf("") : static_cast<float>(it->second));
+      const auto it = p.Masses.find(type->GetValue(i));
+      mass->SetValue(i, it == p.Masses.end() ? std::nanf("") : static_cast<float>(it->second));
     }
-    arrays["mass"] = mass;
+    p.Arrays["mass"] = mass;
   }
-  if (image)
+  if (p.Image)
   {
-    arrays["image"] = image;
+    p.Arrays["image"] = p.Image;
   }
-  if (velocity)
+  if (p.Velocity)
   {
-    arrays["velocity"] = velocity;
+    p.Arrays["velocity"] = p.Velocity;
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkLAMMPSDataReader::Assemble(vtkParse& p, vtkPolyData* output, vtkPolyData* outline)
+{
   // output, optionally ordered by id
   std::vector<vtkIdType> order;
-  if (this->SortById && n > 1)
+  if (this->SortById && p.N > 1)
   {
-    order.resize(static_cast<size_t>(n));
+    order.resize(static_cast<size_t>(p.N));
     std::iota(order.begin(), order.end(), 0);
-    const vtkIdType* id = ids->GetPointer(0);
+    const vtkIdType* id = p.Ids->GetPointer(0);
     std::stable_sort(
       order.begin(), order.end(), [id](vtkIdType a, vtkIdType b) { return id[a] < id[b]; });
   }
@@ -500,24 +594,23 @@ int vtkLAMMPSDataReader::RequestData(
   { return order.empty() ? vtkSmartPointer<vtkAbstractArray>(a) : Permuted(a, order); };
   if (order.empty())
   {
-    output->SetPoints(points);
+    output->SetPoints(p.Points);
   }
   else
   {
     vtkNew<vtkPoints> sorted;
-    sorted->SetData(vtkDataArray::SafeDownCast(Permuted(points->GetData(), order)));
+    sorted->SetData(vtkDataArray::SafeDownCast(Permuted(p.Points->GetData(), order)));
     output->SetPoints(sorted);
   }
-  output->GetPointData()->AddArray(place(ids));
-  for (const auto& item : arrays)
+  output->GetPointData()->AddArray(place(p.Ids));
+  for (const auto& item : p.Arrays)
   {
     output->GetPointData()->AddArray(place(item.second));
   }
-  output->SetVerts(VertexCells(n));
-  AddBoxFieldData(output->GetFieldData(), box, timestep);
-  outline->ShallowCopy(BoxOutline(box));
-  AddBoxFieldData(outline->GetFieldData(), box, timestep);
-  return 1;
+  output->SetVerts(VertexCells(p.N));
+  AddBoxFieldData(output->GetFieldData(), p.Cell, p.Timestep);
+  outline->ShallowCopy(BoxOutline(p.Cell));
+  AddBoxFieldData(outline->GetFieldData(), p.Cell, p.Timestep);
 }
 
 //------------------------------------------------------------------------------

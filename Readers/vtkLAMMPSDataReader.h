@@ -92,6 +92,25 @@ protected:
 private:
   vtkLAMMPSDataReader(const vtkLAMMPSDataReader&) = delete;
   void operator=(const vtkLAMMPSDataReader&) = delete;
+
+  ///@{
+  /**
+   * The stages of RequestData, in the order of the file (each that returns bool returns false
+   * after reporting the file's error, with its line), and what they share.
+   */
+  struct vtkParse;
+  bool Fail(const vtkParse& p, const std::string& what);
+  bool OpenFile(vtkParse& p);
+  bool ReadTitle(vtkParse& p);
+  bool ReadHeader(vtkParse& p);
+  bool ReadSections(vtkParse& p);
+  bool ReadAtoms(vtkParse& p, const std::string& comment);
+  bool ReadVelocities(vtkParse& p);
+  bool ReadMasses(vtkParse& p);
+  void UnwrapPositions(vtkParse& p);
+  void AddDerivedArrays(vtkParse& p);
+  void Assemble(vtkParse& p, vtkPolyData* output, vtkPolyData* outline);
+  ///@}
 };
 
 #endif
