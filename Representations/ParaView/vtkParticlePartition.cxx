@@ -208,21 +208,70 @@ void vtkParticlePartition::GetBox(double box[6]) const
 }
 
 //------------------------------------------------------------------------------
+// What one Partition() shares between its stages: this process, its particles, the k-d tree
+// of the boxes, the arrays every process keeps, where each particle goes and what came in.
+struct vtkParticlePartition::vtkRun
+{
+  vtkMultiProcessController* Controller = nullptr;
+  int Size = 1;
+  int Rank = 0;
+  vtkPolyData* Particles = nullptr;
+  vtkIdType LocalCount = 0;
+  vtkDataArray* Points = nullptr;
+  vtkDataArray* Radii = nullptr;
+  vtkUnsignedCharArray* UpstreamGhosts = nullptr;
+  double Root[6];
+  std::vector<vtkIdType> Finite; // the taken particles with a finite centre
+  std::vector<KdNode> Nodes;
+  int SchemaRank = 0;
+  std::vector<ArraySpec> Kept; // the arrays every process with particles has (0: the points)
+  std::vector<vtkDataArray*> LocalArrays;
+  std::vector<vtkSmartPointer<vtkIdList>> SendIds; // per destination
+  std::vector<std::vector<unsigned char>> SendGhost;
+  std::vector<vtkIdType> Matrix; // counts[source * size + destination]
+  vtkIdType Total = 0;           // the particles this process receives
+  std::vector<vtkSmartPointer<vtkDataArray>> OutArrays;
+  vtkNew<vtkUnsignedCharArray> Ghosts;
+  double BytesSent = 0.0;
+};
+
+//------------------------------------------------------------------------------
 bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusArray, double radius,
   double radiusScale, double reach, const double sphereBounds[6])
 {
   const double start = vtkTimerLog::GetUniversalTime();
+  vtkRun run;
+  this->BeginRun(run, particles, radiusArray);
+  this->FindRootBox(run, sphereBounds);
+  if (!this->SplitIntoBoxes(run))
+  {
+    return false; // no process has a particle
+  }
+  this->AgreeOnArrays(run);
+  this->AssignParticles(run, radius, radiusScale, reach);
+  this->ExchangeParticles(run);
+  this->AssembleOutput(run);
+  this->GatherDistribution(run, start);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticlePartition::BeginRun(vtkRun& run, vtkPolyData* particles, const char* radiusArray)
+{
   vtkMultiProcessController* controller = this->Controller;
-  const int size = controller ? controller->GetNumberOfProcesses() : 1;
-  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  run.Controller = controller;
+  run.Size = controller ? controller->GetNumberOfProcesses() : 1;
+  run.Rank = controller ? controller->GetLocalProcessId() : 0;
+  const int size = run.Size;
   this->Output = vtkSmartPointer<vtkPolyData>::New();
   this->Output->SetPoints(vtkSmartPointer<vtkPoints>::New());
   this->Boxes.assign(6 * size, 0.0);
   this->Distribution.assign(5 * size, 0.0);
 
-  const vtkIdType localCount =
+  const vtkIdType localCount = run.LocalCount =
     (particles && particles->GetPoints()) ? particles->GetNumberOfPoints() : 0;
-  vtkDataArray* points = localCount > 0 ? particles->GetPoints()->GetData() : nullptr;
+  run.Particles = particles;
+  run.Points = localCount > 0 ? particles->GetPoints()->GetData() : nullptr;
   vtkDataArray* radii = (localCount > 0 && radiusArray && *radiusArray)
     ? particles->GetPointData()->GetArray(radiusArray)
     : nullptr;
@@ -230,14 +279,21 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
   {
     radii = nullptr;
   }
+  run.Radii = radii;
   // particles that are ghosts upstream are another process's: not taken
-  auto upstreamGhosts = localCount > 0
+  run.UpstreamGhosts = localCount > 0
     ? vtkUnsignedCharArray::SafeDownCast(
         particles->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
     : nullptr;
+}
 
+//------------------------------------------------------------------------------
+void vtkParticlePartition::FindRootBox(vtkRun& run, const double sphereBounds[6])
+{
+  vtkMultiProcessController* controller = run.Controller;
+  const int size = run.Size;
+  double(&root)[6] = run.Root;
   // the root box: the union of every process's sphere bounds
-  double root[6];
   {
     vtkBoundingBox local;
     if (sphereBounds && vtkMath::AreBoundsInitialized(sphereBounds))
@@ -264,9 +320,20 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
       root[2 * k + 1] = globalMaxs[k];
     }
   }
+}
 
+//------------------------------------------------------------------------------
+bool vtkParticlePartition::SplitIntoBoxes(vtkRun& run)
+{
+  vtkMultiProcessController* controller = run.Controller;
+  const int size = run.Size;
+  const vtkIdType localCount = run.LocalCount;
+  vtkDataArray* points = run.Points;
+  vtkUnsignedCharArray* upstreamGhosts = run.UpstreamGhosts;
+  double(&root)[6] = run.Root;
+  std::vector<vtkIdType>& finite = run.Finite;
+  std::vector<KdNode>& nodes = run.Nodes;
   // the samples of the splits: finite centres, strided, weighted by the local count
-  std::vector<vtkIdType> finite;
   finite.reserve(localCount);
   for (vtkIdType i = 0; i < localCount; ++i)
   {
@@ -315,11 +382,23 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     }
     return false;
   }
-  std::vector<KdNode> nodes;
   std::vector<vtkIdType> indices(samples.size() / 4);
   std::iota(indices.begin(), indices.end(), 0);
   BuildTree(nodes, this->Boxes, samples.data(), indices, 0, indices.size(), root, 0, size);
+  return true;
+}
 
+//------------------------------------------------------------------------------
+void vtkParticlePartition::AgreeOnArrays(vtkRun& run)
+{
+  vtkMultiProcessController* controller = run.Controller;
+  const int size = run.Size;
+  const int rank = run.Rank;
+  vtkPolyData* particles = run.Particles;
+  const vtkIdType localCount = run.LocalCount;
+  vtkDataArray* points = run.Points;
+  std::vector<ArraySpec>& kept = run.Kept;
+  std::vector<vtkDataArray*>& localArrays = run.LocalArrays;
   // the arrays: the schema of the lowest process with particles, kept where every process
   // with particles has it
   std::vector<vtkIdType> counts(size, localCount);
@@ -327,8 +406,9 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
   {
     controller->AllGather(&localCount, counts.data(), 1);
   }
-  const int schemaRank = static_cast<int>(
+  run.SchemaRank = static_cast<int>(
     std::find_if(counts.begin(), counts.end(), [](vtkIdType c) { return c > 0; }) - counts.begin());
+  const int schemaRank = run.SchemaRank;
   std::vector<ArraySpec> specs;
   {
     vtkMultiProcessStream stream;
@@ -381,8 +461,6 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     controller->AllReduce(
       present.data(), everywhere.data(), present.size(), vtkCommunicator::MIN_OP);
   }
-  std::vector<vtkDataArray*> localArrays;
-  std::vector<ArraySpec> kept;
   for (size_t a = 0; a < specs.size(); ++a)
   {
     if (!everywhere[a])
@@ -400,10 +478,25 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
         : a == 0                          ? points
                  : particles->GetPointData()->GetArray(specs[a].Name.c_str()));
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkParticlePartition::AssignParticles(
+  vtkRun& run, double radius, double radiusScale, double reach)
+{
+  const int size = run.Size;
+  const int rank = run.Rank;
+  const vtkIdType localCount = run.LocalCount;
+  vtkDataArray* points = run.Points;
+  vtkDataArray* radii = run.Radii;
+  vtkUnsignedCharArray* upstreamGhosts = run.UpstreamGhosts;
+  std::vector<vtkIdType>& finite = run.Finite;
+  std::vector<KdNode>& nodes = run.Nodes;
+  std::vector<vtkSmartPointer<vtkIdList>>& sendIds = run.SendIds;
+  std::vector<std::vector<unsigned char>>& sendGhost = run.SendGhost;
   // where each particle goes: its owner, and as a ghost every other process its cube reaches
-  std::vector<vtkSmartPointer<vtkIdList>> sendIds(size);
-  std::vector<std::vector<unsigned char>> sendGhost(size);
+  sendIds.resize(size);
+  sendGhost.resize(size);
   for (auto& ids : sendIds)
   {
     ids = vtkSmartPointer<vtkIdList>::New();
@@ -448,14 +541,30 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
       }
     }
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkParticlePartition::ExchangeParticles(vtkRun& run)
+{
+  vtkMultiProcessController* controller = run.Controller;
+  const int size = run.Size;
+  const int rank = run.Rank;
+  std::vector<ArraySpec>& kept = run.Kept;
+  std::vector<vtkDataArray*>& localArrays = run.LocalArrays;
+  std::vector<vtkSmartPointer<vtkIdList>>& sendIds = run.SendIds;
+  std::vector<std::vector<unsigned char>>& sendGhost = run.SendGhost;
+  std::vector<vtkIdType>& matrix = run.Matrix;
+  vtkIdType& total = run.Total;
+  std::vector<vtkSmartPointer<vtkDataArray>>& outArrays = run.OutArrays;
+  vtkUnsignedCharArray* ghosts = run.Ghosts;
+  double& bytesSent = run.BytesSent;
   // counts[source * size + destination]
   std::vector<vtkIdType> sendCounts(size);
   for (int r = 0; r < size; ++r)
   {
     sendCounts[r] = sendIds[r]->GetNumberOfIds();
   }
-  std::vector<vtkIdType> matrix(size * size, 0);
+  matrix.assign(size * size, 0);
   if (size > 1)
   {
     controller->AllGather(sendCounts.data(), matrix.data(), size);
@@ -464,14 +573,13 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
   {
     matrix = sendCounts;
   }
-  vtkIdType total = 0;
+  total = 0;
   for (int s = 0; s < size; ++s)
   {
     total += matrix[s * size + rank];
   }
 
   // the output arrays, filled by source process in order
-  std::vector<vtkSmartPointer<vtkDataArray>> outArrays;
   for (const auto& spec : kept)
   {
     auto array = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(spec.Type));
@@ -483,11 +591,10 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     }
     outArrays.push_back(array);
   }
-  vtkNew<vtkUnsignedCharArray> ghosts;
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
   ghosts->SetNumberOfTuples(total);
 
-  double bytesSent = 0.0;
+  bytesSent = 0.0;
   vtkIdType offset = 0;
   for (int source = 0; source < size; ++source)
   {
@@ -545,7 +652,13 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     }
     offset += incoming;
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkParticlePartition::AssembleOutput(vtkRun& run)
+{
+  std::vector<vtkSmartPointer<vtkDataArray>>& outArrays = run.OutArrays;
+  vtkUnsignedCharArray* ghosts = run.Ghosts;
   vtkNew<vtkPoints> outPoints;
   if (!outArrays.empty())
   {
@@ -557,7 +670,17 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
     this->Output->GetPointData()->AddArray(outArrays[a]);
   }
   this->Output->GetPointData()->AddArray(ghosts);
+}
 
+//------------------------------------------------------------------------------
+void vtkParticlePartition::GatherDistribution(vtkRun& run, double start)
+{
+  vtkMultiProcessController* controller = run.Controller;
+  const int size = run.Size;
+  const vtkIdType localCount = run.LocalCount;
+  vtkIdType& total = run.Total;
+  vtkUnsignedCharArray* ghosts = run.Ghosts;
+  double& bytesSent = run.BytesSent;
   vtkIdType owned = 0;
   for (vtkIdType i = 0; i < total; ++i)
   {
@@ -573,7 +696,6 @@ bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusA
   {
     std::copy(stats, stats + 5, this->Distribution.begin());
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -105,6 +105,22 @@ protected:
   std::vector<double> Distribution;
 
 private:
+  ///@{
+  /**
+   * The stages of Partition(), in order, each collective, and what they share. SplitIntoBoxes
+   * returns false when no process has a particle (every box uninitialised).
+   */
+  struct vtkRun;
+  void BeginRun(vtkRun& run, vtkPolyData* particles, const char* radiusArray);
+  void FindRootBox(vtkRun& run, const double sphereBounds[6]);
+  bool SplitIntoBoxes(vtkRun& run);
+  void AgreeOnArrays(vtkRun& run);
+  void AssignParticles(vtkRun& run, double radius, double radiusScale, double reach);
+  void ExchangeParticles(vtkRun& run);
+  void AssembleOutput(vtkRun& run);
+  void GatherDistribution(vtkRun& run, double start);
+  ///@}
+
   vtkParticlePartition(const vtkParticlePartition&) = delete;
   void operator=(const vtkParticlePartition&) = delete;
 };
