@@ -142,36 +142,28 @@ int BracketIndex(const std::string& column, std::string& base)
   return index;
 }
 
-Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::string>& firstRow,
-  int positionSource)
+// The index of the column called name, -1 when there is none.
+int FindColumn(const std::vector<std::string>& columns, const char* name)
 {
-  Plan plan;
-  plan.Columns.resize(columns.size());
-  std::vector<bool> done(columns.size(), false);
-  auto find = [&columns](const char* name) -> int
+  for (size_t i = 0; i < columns.size(); ++i)
   {
-    for (size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name)
     {
-      if (columns[i] == name)
-      {
-        return static_cast<int>(i);
-      }
-    }
-    return -1;
-  };
-  // coordinate flavours present (all three components)
-  int flavourColumns[NumberOfFlavours][3];
-  bool present[NumberOfFlavours];
-  for (int f = 0; f < NumberOfFlavours; ++f)
-  {
-    present[f] = true;
-    for (int k = 0; k < 3; ++k)
-    {
-      flavourColumns[f][k] = find(FlavourColumns[f][k]);
-      present[f] &= flavourColumns[f][k] >= 0;
+      return static_cast<int>(i);
     }
   }
-  // which flavour becomes the points
+  return -1;
+}
+
+int AddArray(Plan& plan, const std::string& name, Kind type, int components)
+{
+  plan.Arrays.push_back({ name, type, components });
+  return static_cast<int>(plan.Arrays.size()) - 1;
+}
+
+// Which flavour becomes the points (plan.PointFlavour, Scaled, UnwrapWithImage, Warning).
+void ChoosePoints(const bool present[NumberOfFlavours], int positionSource, Plan& plan)
+{
   const int automatic[4] = { WrappedXYZ, UnwrappedXYZ, ScaledXYZ, ScaledUnwrappedXYZ };
   int chosen = -1;
   if (positionSource == vtkLAMMPSDumpReader::WRAPPED)
@@ -215,11 +207,12 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
       "no complete set of coordinates (x y z, xu yu zu, xs ys zs or xsu ysu zsu): every atom "
       "is at the origin";
   }
-  auto addArray = [&plan](const std::string& name, Kind type, int components) -> int
-  {
-    plan.Arrays.push_back({ name, type, components });
-    return static_cast<int>(plan.Arrays.size()) - 1;
-  };
+}
+
+// The coordinate flavours present: the points, and a 3-component array for each of the others.
+void PlanCoordinates(const bool present[NumberOfFlavours],
+  const int flavourColumns[NumberOfFlavours][3], Plan& plan, std::vector<bool>& done)
+{
   for (int f = 0; f < NumberOfFlavours; ++f)
   {
     if (!present[f])
@@ -228,10 +221,10 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
     }
     int array = -1;
     Kind type = Kind::Point;
-    if (f != chosen)
+    if (f != plan.PointFlavour)
     {
       type = f == ImageXYZ ? Kind::Int : Kind::Float;
-      array = addArray(FlavourArrays[f], type, 3);
+      array = AddArray(plan, FlavourArrays[f], type, 3);
       if (f == ImageXYZ)
       {
         plan.ImageArray = array;
@@ -243,19 +236,23 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
       done[flavourColumns[f][k]] = true;
     }
   }
-  // vectors: vx vy vz and friends
+}
+
+// vectors: vx vy vz and friends
+void PlanVectors(const std::vector<std::string>& columns, Plan& plan, std::vector<bool>& done)
+{
   for (const auto& item : VectorNames())
   {
     int c[3];
     bool all = true;
     for (int k = 0; k < 3; ++k)
     {
-      c[k] = find((item.first + "xyz"[k]).c_str());
+      c[k] = FindColumn(columns, (item.first + "xyz"[k]).c_str());
       all &= c[k] >= 0 && !done[c[k]];
     }
     if (all)
     {
-      const int array = addArray(item.second, Kind::Float, 3);
+      const int array = AddArray(plan, item.second, Kind::Float, 3);
       for (int k = 0; k < 3; ++k)
       {
         plan.Columns[c[k]] = { Kind::Float, array, k };
@@ -263,7 +260,12 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
       }
     }
   }
-  // bracketed vectors c_name[1] c_name[2] ... (consecutive, starting at 1)
+}
+
+// bracketed vectors c_name[1] c_name[2] ... (consecutive, starting at 1)
+void PlanBracketedVectors(
+  const std::vector<std::string>& columns, Plan& plan, std::vector<bool>& done)
+{
   for (size_t i = 0; i < columns.size(); ++i)
   {
     std::string base;
@@ -282,14 +284,19 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
     {
       continue;
     }
-    const int array = addArray(base, Kind::Float, static_cast<int>(n));
+    const int array = AddArray(plan, base, Kind::Float, static_cast<int>(n));
     for (size_t k = 0; k < n; ++k)
     {
       plan.Columns[i + k] = { Kind::Float, array, static_cast<int>(k) };
       done[i + k] = true;
     }
   }
-  // everything else, one array per column
+}
+
+// everything else, one array per column
+void PlanScalars(const std::vector<std::string>& columns, const std::vector<std::string>& firstRow,
+  Plan& plan, const std::vector<bool>& done)
+{
   for (size_t i = 0; i < columns.size(); ++i)
   {
     if (done[i])
@@ -310,7 +317,7 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
     {
       type = Kind::String;
     }
-    const int array = addArray(columns[i], type, 1);
+    const int array = AddArray(plan, columns[i], type, 1);
     plan.Columns[i] = { type, array, 0 };
     if (columns[i] == "id")
     {
@@ -329,6 +336,32 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
       plan.DiameterArray = array;
     }
   }
+}
+
+Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::string>& firstRow,
+  int positionSource)
+{
+  Plan plan;
+  plan.Columns.resize(columns.size());
+  std::vector<bool> done(columns.size(), false);
+  // coordinate flavours present (all three components)
+  int flavourColumns[NumberOfFlavours][3];
+  bool present[NumberOfFlavours];
+  for (int f = 0; f < NumberOfFlavours; ++f)
+  {
+    present[f] = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      flavourColumns[f][k] = FindColumn(columns, FlavourColumns[f][k]);
+      present[f] &= flavourColumns[f][k] >= 0;
+    }
+  }
+  // which flavour becomes the points
+  ChoosePoints(present, positionSource, plan);
+  PlanCoordinates(present, flavourColumns, plan, done);
+  PlanVectors(columns, plan, done);
+  PlanBracketedVectors(columns, plan, done);
+  PlanScalars(columns, firstRow, plan, done);
   return plan;
 }
 
@@ -604,6 +637,149 @@ int vtkLAMMPSDumpReader::CanReadFile(const char* fileName)
 //------------------------------------------------------------------------------
 namespace
 {
+// The next line that is not empty (only blanks); false at the end of the file.
+bool NextNonEmpty(LineReader& lines, std::string& out)
+{
+  while (lines.Next(out))
+  {
+    if (!Split(out).empty())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Why the file is not a text dump (empty, unreadable, binary), or "" when it may be one. The
+// file is read from its start and left there.
+std::string CheckText(InputFile& file, const std::string& name)
+{
+  // a binary file (NUL bytes) is not a text dump
+  std::vector<char> head(4096);
+  const long long got = file.Read(head.data(), head.size());
+  if (got == 0)
+  {
+    return name + ": the file is empty";
+  }
+  if (got < 0)
+  {
+    return name + ": cannot read the file";
+  }
+  if (std::memchr(head.data(), '\0', static_cast<size_t>(got)))
+  {
+    return name +
+      ": a binary file, not a LAMMPS text dump (binary dumps can be converted with LAMMPS's "
+      "tools/binary2txt)";
+  }
+  file.Seek(0);
+  return std::string();
+}
+
+// The box of a snapshot from its line "ITEM: BOX BOUNDS ..." (in line) and the three lines after
+// it. Returns what is wrong, or "".
+std::string ReadBoxBounds(LineReader& lines, std::string& line, Snapshot& s)
+{
+  std::vector<std::string> words = Split(line.substr(std::strlen("ITEM: BOX BOUNDS")));
+  s.SimulationBox.Triclinic = words.size() >= 3 && words[0] == "xy";
+  std::string periodicity;
+  for (size_t k = s.SimulationBox.Triclinic ? 3 : 0; k < words.size(); ++k)
+  {
+    periodicity += (periodicity.empty() ? "" : " ") + words[k];
+  }
+  s.SimulationBox.Periodicity = periodicity;
+  double bounds[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!NextNonEmpty(lines, line))
+    {
+      return "the file ends inside ITEM: BOX BOUNDS";
+    }
+    words = Split(line);
+    const size_t need = s.SimulationBox.Triclinic ? 3 : 2;
+    if (words.size() < need)
+    {
+      return "expected " + std::to_string(need) + " numbers in the box bounds";
+    }
+    for (size_t j = 0; j < need; ++j)
+    {
+      if (!ParseWord(words[j], bounds[k][j]))
+      {
+        return "'" + words[j] + "' in the box bounds is not a number";
+      }
+    }
+  }
+  Box& box = s.SimulationBox;
+  for (int k = 0; k < 3; ++k)
+  {
+    box.Tilt[k] = s.SimulationBox.Triclinic ? bounds[k][2] : 0.0;
+  }
+  // LAMMPS writes the bounding box of a triclinic box: remove the tilt (dump manual)
+  const double xy = box.Tilt[0];
+  const double xz = box.Tilt[1];
+  const double yz = box.Tilt[2];
+  box.Lo[0] = bounds[0][0] - std::min({ 0.0, xy, xz, xy + xz });
+  box.Hi[0] = bounds[0][1] - std::max({ 0.0, xy, xz, xy + xz });
+  box.Lo[1] = bounds[1][0] - std::min(0.0, yz);
+  box.Hi[1] = bounds[1][1] - std::max(0.0, yz);
+  box.Lo[2] = bounds[2][0];
+  box.Hi[2] = bounds[2][1];
+  return std::string();
+}
+
+// The header of a snapshot, from its first line (in line) to ITEM: ATOMS and the column names:
+// timestep, number of atoms, box, columns. Returns what is wrong, or "".
+std::string ReadHeader(LineReader& lines, std::string& line, Snapshot& s)
+{
+  // optional ITEM: UNITS / ITEM: TIME blocks (dump_modify units/time)
+  while (StartsWith(line, "ITEM: UNITS") ||
+    (StartsWith(line, "ITEM: TIME") && !StartsWith(line, "ITEM: TIMESTEP")))
+  {
+    if (!NextNonEmpty(lines, line) || !NextNonEmpty(lines, line))
+    {
+      return "the file ends inside a snapshot header";
+    }
+  }
+  if (!StartsWith(line, "ITEM: TIMESTEP"))
+  {
+    return "expected 'ITEM: TIMESTEP', found '" + line.substr(0, 60) + "'";
+  }
+  std::vector<std::string> words;
+  if (!NextNonEmpty(lines, line) || (words = Split(line)).size() != 1 ||
+    !ParseInt64(words[0].data(), words[0].data() + words[0].size(), s.Timestep))
+  {
+    return "expected the timestep (an integer) after ITEM: TIMESTEP";
+  }
+  if (!NextNonEmpty(lines, line) || !StartsWith(line, "ITEM: NUMBER OF ATOMS"))
+  {
+    return "expected 'ITEM: NUMBER OF ATOMS'";
+  }
+  if (!NextNonEmpty(lines, line) || (words = Split(line)).size() != 1 ||
+    !ParseInt64(words[0].data(), words[0].data() + words[0].size(), s.NumberOfAtoms) ||
+    s.NumberOfAtoms < 0)
+  {
+    return "expected the number of atoms (an integer >= 0)";
+  }
+  if (!NextNonEmpty(lines, line) || !StartsWith(line, "ITEM: BOX BOUNDS"))
+  {
+    return "expected 'ITEM: BOX BOUNDS'";
+  }
+  const std::string box = ReadBoxBounds(lines, line, s);
+  if (!box.empty())
+  {
+    return box;
+  }
+  if (!NextNonEmpty(lines, line) || !StartsWith(line, "ITEM: ATOMS"))
+  {
+    return "expected 'ITEM: ATOMS' and the column names";
+  }
+  s.Columns = Split(line.substr(std::strlen("ITEM: ATOMS")));
+  if (s.Columns.empty() && s.NumberOfAtoms > 0)
+  {
+    return "ITEM: ATOMS names no columns";
+  }
+  return std::string();
+}
+
 // Index the snapshots of one file. Returns false (with a message) when the file cannot be used
 // at all; a bad or truncated snapshot after good ones ends the file with a warning in warning.
 bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& steps,
@@ -615,28 +791,11 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
     error = name + ": cannot open the file";
     return false;
   }
-  // a binary file (NUL bytes) is not a text dump
+  const std::string notText = CheckText(file, name);
+  if (!notText.empty())
   {
-    std::vector<char> head(4096);
-    const long long got = file.Read(head.data(), head.size());
-    if (got == 0)
-    {
-      error = name + ": the file is empty";
-      return false;
-    }
-    if (got < 0)
-    {
-      error = name + ": cannot read the file";
-      return false;
-    }
-    if (std::memchr(head.data(), '\0', static_cast<size_t>(got)))
-    {
-      error = name +
-        ": a binary file, not a LAMMPS text dump (binary dumps can be converted with LAMMPS's "
-        "tools/binary2txt)";
-      return false;
-    }
-    file.Seek(0);
+    error = notText;
+    return false;
   }
   const auto size = vtksys::SystemTools::FileLength(name);
   LineReader lines(file, static_cast<size_t>(std::min<decltype(size)>(size + 1, 1 << 20)));
@@ -654,106 +813,14 @@ bool IndexFile(const std::string& name, int fileIndex, std::vector<Snapshot>& st
       where + "; the " + std::to_string(steps.size() - first) + " snapshot(s) before it are read. ";
     return true;
   };
-  auto next = [&](std::string& out) -> bool
-  {
-    while (lines.Next(out))
-    {
-      if (!Split(out).empty())
-      {
-        return true;
-      }
-    }
-    return false;
-  };
-  while (next(line))
+  while (NextNonEmpty(lines, line))
   {
     Snapshot s;
     s.File = fileIndex;
-    // optional ITEM: UNITS / ITEM: TIME blocks (dump_modify units/time)
-    while (StartsWith(line, "ITEM: UNITS") ||
-      (StartsWith(line, "ITEM: TIME") && !StartsWith(line, "ITEM: TIMESTEP")))
+    const std::string problem = ReadHeader(lines, line, s);
+    if (!problem.empty())
     {
-      if (!next(line) || !next(line))
-      {
-        return fail("the file ends inside a snapshot header");
-      }
-    }
-    if (!StartsWith(line, "ITEM: TIMESTEP"))
-    {
-      return fail("expected 'ITEM: TIMESTEP', found '" + line.substr(0, 60) + "'");
-    }
-    std::vector<std::string> words;
-    if (!next(line) || (words = Split(line)).size() != 1 ||
-      !ParseInt64(words[0].data(), words[0].data() + words[0].size(), s.Timestep))
-    {
-      return fail("expected the timestep (an integer) after ITEM: TIMESTEP");
-    }
-    if (!next(line) || !StartsWith(line, "ITEM: NUMBER OF ATOMS"))
-    {
-      return fail("expected 'ITEM: NUMBER OF ATOMS'");
-    }
-    if (!next(line) || (words = Split(line)).size() != 1 ||
-      !ParseInt64(words[0].data(), words[0].data() + words[0].size(), s.NumberOfAtoms) ||
-      s.NumberOfAtoms < 0)
-    {
-      return fail("expected the number of atoms (an integer >= 0)");
-    }
-    if (!next(line) || !StartsWith(line, "ITEM: BOX BOUNDS"))
-    {
-      return fail("expected 'ITEM: BOX BOUNDS'");
-    }
-    words = Split(line.substr(std::strlen("ITEM: BOX BOUNDS")));
-    s.SimulationBox.Triclinic = words.size() >= 3 && words[0] == "xy";
-    std::string periodicity;
-    for (size_t k = s.SimulationBox.Triclinic ? 3 : 0; k < words.size(); ++k)
-    {
-      periodicity += (periodicity.empty() ? "" : " ") + words[k];
-    }
-    s.SimulationBox.Periodicity = periodicity;
-    double bounds[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-    for (int k = 0; k < 3; ++k)
-    {
-      if (!next(line))
-      {
-        return fail("the file ends inside ITEM: BOX BOUNDS");
-      }
-      words = Split(line);
-      const size_t need = s.SimulationBox.Triclinic ? 3 : 2;
-      if (words.size() < need)
-      {
-        return fail("expected " + std::to_string(need) + " numbers in the box bounds");
-      }
-      for (size_t j = 0; j < need; ++j)
-      {
-        if (!ParseWord(words[j], bounds[k][j]))
-        {
-          return fail("'" + words[j] + "' in the box bounds is not a number");
-        }
-      }
-    }
-    Box& box = s.SimulationBox;
-    for (int k = 0; k < 3; ++k)
-    {
-      box.Tilt[k] = s.SimulationBox.Triclinic ? bounds[k][2] : 0.0;
-    }
-    // LAMMPS writes the bounding box of a triclinic box: remove the tilt (dump manual)
-    const double xy = box.Tilt[0];
-    const double xz = box.Tilt[1];
-    const double yz = box.Tilt[2];
-    box.Lo[0] = bounds[0][0] - std::min({ 0.0, xy, xz, xy + xz });
-    box.Hi[0] = bounds[0][1] - std::max({ 0.0, xy, xz, xy + xz });
-    box.Lo[1] = bounds[1][0] - std::min(0.0, yz);
-    box.Hi[1] = bounds[1][1] - std::max(0.0, yz);
-    box.Lo[2] = bounds[2][0];
-    box.Hi[2] = bounds[2][1];
-    if (!next(line) || !StartsWith(line, "ITEM: ATOMS"))
-    {
-      return fail("expected 'ITEM: ATOMS' and the column names");
-    }
-    s.Columns = Split(line.substr(std::strlen("ITEM: ATOMS")));
-    if (s.Columns.empty() && s.NumberOfAtoms > 0)
-    {
-      return fail("ITEM: ATOMS names no columns");
+      return fail(problem);
     }
     s.AtomsOffset = lines.Offset();
     s.AtomsLine = lines.LineNumber() + 1;
@@ -850,8 +917,140 @@ int vtkLAMMPSDumpReader::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
+// The state of one RequestData: the snapshot read, its file, the plan of its columns and the
+// outputs being filled.
+struct vtkLAMMPSDumpReader::vtkRequestState
+{
+  vtkRequestState(const Snapshot& step, const std::string& fileName)
+    : Step(step)
+    , FileName(fileName)
+    , N(step.NumberOfAtoms)
+  {
+  }
+
+  const Snapshot& Step;
+  const std::string& FileName;
+  const long long N; // atoms
+  InputFile File;
+  Plan Columns;
+  vtkNew<vtkPoints> Points;
+  Outputs Out;
+  std::vector<vtkIdType> Order; // the atoms in id order (SortById); empty: as read
+};
+
+//------------------------------------------------------------------------------
 namespace
 {
+// The step of the requested time: the last one at or before it.
+size_t RequestedStep(const std::vector<double>& timeValues, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  size_t step = 0;
+  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    const auto it = std::upper_bound(timeValues.begin(), timeValues.end(), t);
+    step = it == timeValues.begin() ? 0 : static_cast<size_t>(it - timeValues.begin()) - 1;
+  }
+  return step;
+}
+
+// Split the complete lines data[0, complete) into pieces at line ends: the bounds of the pieces.
+std::vector<size_t> SplitAtLineEnds(const char* data, size_t complete)
+{
+  const size_t pieces = std::max<size_t>(1, std::min<size_t>(complete / 65536, 256));
+  std::vector<size_t> bounds(pieces + 1, complete);
+  bounds[0] = 0;
+  for (size_t i = 1; i < pieces; ++i)
+  {
+    const size_t guess = std::max(bounds[i - 1], complete * i / pieces);
+    const char* nl = guess < complete
+      ? static_cast<const char*>(std::memchr(data + guess, '\n', complete - guess))
+      : nullptr;
+    bounds[i] = nl ? static_cast<size_t>(nl - data) + 1 : complete;
+  }
+  return bounds;
+}
+
+// Count the lines of each piece, in parallel.
+void CountLines(
+  const char* data, const std::vector<size_t>& bounds, std::vector<long long>& lineCounts)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(lineCounts.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        long long count = 0;
+        const char* p = data + bounds[i];
+        const char* stop = data + bounds[i + 1];
+        while (p < stop)
+        {
+          const char* nl = static_cast<const char*>(std::memchr(p, '\n', stop - p));
+          ++count;
+          p = nl ? nl + 1 : stop;
+        }
+        lineCounts[i] = count;
+      }
+    });
+}
+
+// Parse the complete lines data[0, complete) of one block in parallel pieces (with STDThread
+// when threads is set) into the rows from row on, and move row past them. The first error, by
+// row, goes to firstError.
+void ParseBlock(const char* data, size_t complete, long long n, const std::vector<Target>& targets,
+  bool threads, long long& row, ParseError& firstError, std::atomic<long long>& nonFinite)
+{
+  // split the complete lines into pieces at line ends, count the lines of each piece
+  const std::vector<size_t> bounds = SplitAtLineEnds(data, complete);
+  const size_t pieces = bounds.size() - 1;
+  std::vector<long long> lineCounts(pieces, 0);
+  std::vector<ParseError> errors(pieces);
+  auto run = [&]()
+  {
+    CountLines(data, bounds, lineCounts);
+    long long lines = 0;
+    std::vector<long long> firstRows(pieces);
+    for (size_t i = 0; i < pieces; ++i)
+    {
+      firstRows[i] = row + lines;
+      lines += lineCounts[i];
+    }
+    if (row + lines > n)
+    {
+      firstError.Row = n;
+      firstError.What = "more atom lines than ITEM: NUMBER OF ATOMS";
+      return;
+    }
+    vtkSMPTools::For(0, static_cast<vtkIdType>(pieces),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        long long localNonFinite = 0;
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          ParseLines(data + bounds[i], data + bounds[i + 1], firstRows[i], targets, errors[i],
+            localNonFinite);
+        }
+        nonFinite += localNonFinite;
+      });
+    row += lines;
+  };
+  if (threads)
+  {
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("STDThread") }, run);
+  }
+  else
+  {
+    run();
+  }
+  for (const ParseError& e : errors)
+  {
+    if (e.Row >= 0 && (firstError.Row < 0 || e.Row < firstError.Row))
+    {
+      firstError = e;
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -865,19 +1064,10 @@ int vtkLAMMPSDumpReader::RequestData(
   {
     return 0;
   }
-  // the step of the requested time: the last one at or before it
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  size_t step = 0;
-  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    const auto it = std::upper_bound(internals.TimeValues.begin(), internals.TimeValues.end(), t);
-    step = it == internals.TimeValues.begin()
-      ? 0
-      : static_cast<size_t>(it - internals.TimeValues.begin()) - 1;
-  }
+  // the step of the requested time, its time and its box
+  const size_t step = RequestedStep(internals.TimeValues, outputVector);
   const Snapshot& s = internals.Steps[step];
-  const std::string& fileName = internals.FileNames[s.File];
+  vtkRequestState state(s, internals.FileNames[s.File]);
   for (int port = 0; port < 2; ++port)
   {
     outputVector->GetInformationObject(port)->Set(
@@ -886,37 +1076,73 @@ int vtkLAMMPSDumpReader::RequestData(
   outline->ShallowCopy(BoxOutline(s.SimulationBox));
   AddBoxFieldData(outline->GetFieldData(), s.SimulationBox, s.Timestep);
 
-  const long long n = s.NumberOfAtoms;
-  InputFile file;
-  if (!file.Open(fileName) || !file.Seek(s.AtomsOffset))
+  if (!this->OpenAtoms(state))
   {
-    vtkErrorMacro(<< fileName << ": cannot open or seek the file (was it changed?)");
     return 0;
   }
+  this->PlanColumns(state);
+  AllocateOutputs(state);
+  if (!this->ParseAtoms(state))
+  {
+    return 0;
+  }
+  MapPoints(state);
+  MoveStrings(state);
+  this->AddRadius(state);
+  this->OrderById(state);
+  AssembleOutput(state, output);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
+//------------------------------------------------------------------------------
+// Open the file at the first atom line of the step.
+bool vtkLAMMPSDumpReader::OpenAtoms(vtkRequestState& state)
+{
+  if (!state.File.Open(state.FileName) || !state.File.Seek(state.Step.AtomsOffset))
+  {
+    vtkErrorMacro(<< state.FileName << ": cannot open or seek the file (was it changed?)");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Where each column goes (MakePlan), with a warning when it differs from the last one.
+void vtkLAMMPSDumpReader::PlanColumns(vtkRequestState& state)
+{
+  vtkInternals& internals = *this->Internals;
+  const Snapshot& s = state.Step;
   // the first atom line decides which non-numeric columns hold strings
   std::vector<std::string> firstRow;
-  if (n > 0)
+  if (state.N > 0)
   {
-    LineReader lines(
-      file, static_cast<size_t>(std::min<std::uint64_t>(s.EndOffset - s.AtomsOffset + 1, 1 << 16)));
+    LineReader lines(state.File,
+      static_cast<size_t>(std::min<std::uint64_t>(s.EndOffset - s.AtomsOffset + 1, 1 << 16)));
     std::string line;
     lines.Next(line);
     firstRow = Split(line);
-    file.Seek(s.AtomsOffset);
+    state.File.Seek(s.AtomsOffset);
   }
-  const Plan plan = MakePlan(s.Columns, firstRow, this->PositionSource);
+  state.Columns = MakePlan(s.Columns, firstRow, this->PositionSource);
+  const Plan& plan = state.Columns;
   if (!plan.Warning.empty() && plan.Warning != internals.LastWarning)
   {
-    vtkWarningMacro(<< fileName << ": " << plan.Warning);
+    vtkWarningMacro(<< state.FileName << ": " << plan.Warning);
   }
   internals.LastWarning = plan.Warning;
+}
 
-  // allocate the outputs
-  vtkNew<vtkPoints> points;
+//------------------------------------------------------------------------------
+// Allocate the outputs: the points and one array per planned array, N tuples each.
+void vtkLAMMPSDumpReader::AllocateOutputs(vtkRequestState& state)
+{
+  const long long n = state.N;
+  const Plan& plan = state.Columns;
+  Outputs& out = state.Out;
+  vtkPoints* points = state.Points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(n));
-  Outputs out;
   out.Points = static_cast<double*>(points->GetVoidPointer(0));
   AdviseHugePages(out.Points, sizeof(double) * 3 * static_cast<size_t>(n));
   if (plan.PointFlavour < 0)
@@ -960,8 +1186,18 @@ int vtkLAMMPSDumpReader::RequestData(
     }
     out.Objects.push_back(array);
   }
+}
 
-  const std::vector<Target> targets = MakeTargets(plan, out);
+//------------------------------------------------------------------------------
+// Parse the atom lines block by block, each block in parallel (ParseBlock), straight into the
+// outputs. Returns false, with an error, on a bad line or a short read.
+bool vtkLAMMPSDumpReader::ParseAtoms(vtkRequestState& state)
+{
+  const Snapshot& s = state.Step;
+  const std::string& fileName = state.FileName;
+  const long long n = state.N;
+  InputFile& file = state.File;
+  const std::vector<Target> targets = MakeTargets(state.Columns, state.Out);
 
   // parse the atom lines block by block, each block in parallel
   const std::uint64_t total = s.EndOffset - s.AtomsOffset;
@@ -983,7 +1219,7 @@ int vtkLAMMPSDumpReader::RequestData(
     {
       vtkErrorMacro(<< fileName << ": the file ends or cannot be read before line "
                     << s.AtomsLine + row << " (was it changed?)");
-      return 0;
+      return false;
     }
     consumed += static_cast<std::uint64_t>(got);
     const size_t length = carry + static_cast<size_t>(got);
@@ -1003,81 +1239,7 @@ int vtkLAMMPSDumpReader::RequestData(
       }
       complete = static_cast<size_t>(last - buffer.data()) + 1;
     }
-    // split the complete lines into pieces at line ends, count the lines of each piece
-    const char* data = buffer.data();
-    const size_t pieces = std::max<size_t>(1, std::min<size_t>(complete / 65536, 256));
-    std::vector<size_t> bounds(pieces + 1, complete);
-    bounds[0] = 0;
-    for (size_t i = 1; i < pieces; ++i)
-    {
-      const size_t guess = std::max(bounds[i - 1], complete * i / pieces);
-      const char* nl = guess < complete
-        ? static_cast<const char*>(std::memchr(data + guess, '\n', complete - guess))
-        : nullptr;
-      bounds[i] = nl ? static_cast<size_t>(nl - data) + 1 : complete;
-    }
-    std::vector<long long> lineCounts(pieces, 0);
-    std::vector<ParseError> errors(pieces);
-    auto run = [&]()
-    {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(pieces),
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            long long count = 0;
-            const char* p = data + bounds[i];
-            const char* stop = data + bounds[i + 1];
-            while (p < stop)
-            {
-              const char* nl = static_cast<const char*>(std::memchr(p, '\n', stop - p));
-              ++count;
-              p = nl ? nl + 1 : stop;
-            }
-            lineCounts[i] = count;
-          }
-        });
-      long long lines = 0;
-      std::vector<long long> firstRows(pieces);
-      for (size_t i = 0; i < pieces; ++i)
-      {
-        firstRows[i] = row + lines;
-        lines += lineCounts[i];
-      }
-      if (row + lines > n)
-      {
-        firstError.Row = n;
-        firstError.What = "more atom lines than ITEM: NUMBER OF ATOMS";
-        return;
-      }
-      vtkSMPTools::For(0, static_cast<vtkIdType>(pieces),
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          long long localNonFinite = 0;
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            ParseLines(data + bounds[i], data + bounds[i + 1], firstRows[i], targets, errors[i],
-              localNonFinite);
-          }
-          nonFinite += localNonFinite;
-        });
-      row += lines;
-    };
-    if (threads)
-    {
-      vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("STDThread") }, run);
-    }
-    else
-    {
-      run();
-    }
-    for (const ParseError& e : errors)
-    {
-      if (e.Row >= 0 && (firstError.Row < 0 || e.Row < firstError.Row))
-      {
-        firstError = e;
-      }
-    }
+    ParseBlock(buffer.data(), complete, n, targets, threads, row, firstError, nonFinite);
     if (firstError.Row >= 0)
     {
       break;
@@ -1101,52 +1263,66 @@ int vtkLAMMPSDumpReader::RequestData(
   {
     vtkErrorMacro(<< fileName << ", line " << s.AtomsLine + firstError.Row << ": "
                   << firstError.What << " (timestep " << s.Timestep << ")");
-    return 0;
+    return false;
   }
   if (nonFinite > 0)
   {
     vtkWarningMacro(<< fileName << ", timestep " << s.Timestep << ": " << nonFinite.load()
                     << " NaN or infinite value(s).");
   }
+  return true;
+}
 
-  // points: scaled coordinates through the box, wrapped ones unwrapped with the image flags
-  const Box& box = s.SimulationBox;
-  if (plan.Scaled || plan.UnwrapWithImage)
+//------------------------------------------------------------------------------
+// Points: scaled coordinates through the box, wrapped ones unwrapped with the image flags.
+void vtkLAMMPSDumpReader::MapPoints(vtkRequestState& state)
+{
+  const Plan& plan = state.Columns;
+  if (!plan.Scaled && !plan.UnwrapWithImage)
   {
-    const double l[3] = { box.Length(0), box.Length(1), box.Length(2) };
-    const double xy = box.Tilt[0];
-    const double xz = box.Tilt[1];
-    const double yz = box.Tilt[2];
-    const int* image =
-      plan.UnwrapWithImage ? static_cast<int*>(out.Arrays[plan.ImageArray]) : nullptr;
-    double* p = out.Points;
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          double* x = p + 3 * i;
-          if (plan.Scaled)
-          {
-            const double sx = x[0];
-            const double sy = x[1];
-            const double sz = x[2];
-            x[0] = box.Lo[0] + sx * l[0] + sy * xy + sz * xz;
-            x[1] = box.Lo[1] + sy * l[1] + sz * yz;
-            x[2] = box.Lo[2] + sz * l[2];
-          }
-          else
-          {
-            const int* im = image + 3 * i;
-            x[0] += im[0] * l[0] + im[1] * xy + im[2] * xz;
-            x[1] += im[1] * l[1] + im[2] * yz;
-            x[2] += im[2] * l[2];
-          }
-        }
-      });
+    return;
   }
+  const Box& box = state.Step.SimulationBox;
+  const double l[3] = { box.Length(0), box.Length(1), box.Length(2) };
+  const double xy = box.Tilt[0];
+  const double xz = box.Tilt[1];
+  const double yz = box.Tilt[2];
+  const int* image =
+    plan.UnwrapWithImage ? static_cast<int*>(state.Out.Arrays[plan.ImageArray]) : nullptr;
+  double* p = state.Out.Points;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(state.N),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        double* x = p + 3 * i;
+        if (plan.Scaled)
+        {
+          const double sx = x[0];
+          const double sy = x[1];
+          const double sz = x[2];
+          x[0] = box.Lo[0] + sx * l[0] + sy * xy + sz * xz;
+          x[1] = box.Lo[1] + sy * l[1] + sz * yz;
+          x[2] = box.Lo[2] + sz * l[2];
+        }
+        else
+        {
+          const int* im = image + 3 * i;
+          x[0] += im[0] * l[0] + im[1] * xy + im[2] * xz;
+          x[1] += im[1] * l[1] + im[2] * yz;
+          x[2] += im[2] * l[2];
+        }
+      }
+    });
+}
 
-  // string columns into their arrays
+//------------------------------------------------------------------------------
+// String columns into their arrays.
+void vtkLAMMPSDumpReader::MoveStrings(vtkRequestState& state)
+{
+  const Plan& plan = state.Columns;
+  Outputs& out = state.Out;
+  const long long n = state.N;
   for (size_t a = 0; a < plan.Arrays.size(); ++a)
   {
     if (plan.Arrays[a].Type == Kind::String)
@@ -1159,74 +1335,87 @@ int vtkLAMMPSDumpReader::RequestData(
       }
     }
   }
+}
 
-  // radius
-  vtkSmartPointer<vtkFloatArray> radius;
-  if (this->GenerateRadius)
+//------------------------------------------------------------------------------
+// Radius (GenerateRadius): the radius column as read, or an array from half the diameter
+// column, the per-type table or DefaultRadius.
+void vtkLAMMPSDumpReader::AddRadius(vtkRequestState& state)
+{
+  const Plan& plan = state.Columns;
+  Outputs& out = state.Out;
+  const long long n = state.N;
+  if (!this->GenerateRadius || plan.RadiusArray >= 0)
   {
-    if (plan.RadiusArray >= 0)
+    return; // no radius, or the radius column, already an output array
+  }
+  vtkSmartPointer<vtkFloatArray> radius = vtkSmartPointer<vtkFloatArray>::New();
+  radius->SetName("radius");
+  radius->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  float* r = radius->GetPointer(0);
+  AdviseHugePages(r, sizeof(float) * static_cast<size_t>(n));
+  if (plan.DiameterArray >= 0)
+  {
+    const float* d = static_cast<const float*>(out.Arrays[plan.DiameterArray]);
+    for (long long i = 0; i < n; ++i)
     {
-      radius = vtkFloatArray::SafeDownCast(out.Objects[plan.RadiusArray]);
-    }
-    else
-    {
-      radius = vtkSmartPointer<vtkFloatArray>::New();
-      radius->SetName("radius");
-      radius->SetNumberOfTuples(static_cast<vtkIdType>(n));
-      float* r = radius->GetPointer(0);
-      AdviseHugePages(r, sizeof(float) * static_cast<size_t>(n));
-      if (plan.DiameterArray >= 0)
-      {
-        const float* d = static_cast<const float*>(out.Arrays[plan.DiameterArray]);
-        for (long long i = 0; i < n; ++i)
-        {
-          r[i] = 0.5f * d[i];
-        }
-      }
-      else if (plan.TypeArray >= 0 && n > 0)
-      {
-        // a table over the types present (LAMMPS types are small positive integers)
-        const int* type = static_cast<const int*>(out.Arrays[plan.TypeArray]);
-        const auto range = std::minmax_element(type, type + n);
-        const long long lo = *range.first;
-        const long long span = static_cast<long long>(*range.second) - lo + 1;
-        if (span <= (1 << 20))
-        {
-          std::vector<float> table(static_cast<size_t>(span));
-          for (long long t = 0; t < span; ++t)
-          {
-            table[t] = static_cast<float>(this->GetTypeRadius(static_cast<int>(lo + t)));
-          }
-          vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-            [&](vtkIdType begin, vtkIdType end)
-            {
-              for (vtkIdType i = begin; i < end; ++i)
-              {
-                r[i] = table[static_cast<size_t>(type[i] - lo)];
-              }
-            });
-        }
-        else
-        {
-          for (long long i = 0; i < n; ++i)
-          {
-            r[i] = static_cast<float>(this->GetTypeRadius(type[i]));
-          }
-        }
-      }
-      else
-      {
-        std::fill(r, r + n, static_cast<float>(this->DefaultRadius));
-      }
-      out.Objects.push_back(radius);
+      r[i] = 0.5f * d[i];
     }
   }
+  else if (plan.TypeArray >= 0 && n > 0)
+  {
+    this->RadiiFromTypes(static_cast<const int*>(out.Arrays[plan.TypeArray]), n, r);
+  }
+  else
+  {
+    std::fill(r, r + n, static_cast<float>(this->DefaultRadius));
+  }
+  out.Objects.push_back(radius);
+}
 
-  // order by id
-  std::vector<vtkIdType> order;
+//------------------------------------------------------------------------------
+// The radii r[0, n) of the types type[0, n) (n > 0), from the per-type table.
+void vtkLAMMPSDumpReader::RadiiFromTypes(const int* type, long long n, float* r)
+{
+  // a table over the types present (LAMMPS types are small positive integers)
+  const auto range = std::minmax_element(type, type + n);
+  const long long lo = *range.first;
+  const long long span = static_cast<long long>(*range.second) - lo + 1;
+  if (span <= (1 << 20))
+  {
+    std::vector<float> table(static_cast<size_t>(span));
+    for (long long t = 0; t < span; ++t)
+    {
+      table[t] = static_cast<float>(this->GetTypeRadius(static_cast<int>(lo + t)));
+    }
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          r[i] = table[static_cast<size_t>(type[i] - lo)];
+        }
+      });
+  }
+  else
+  {
+    for (long long i = 0; i < n; ++i)
+    {
+      r[i] = static_cast<float>(this->GetTypeRadius(type[i]));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Order by id (SortById): the order of the atoms when the ids are not sorted already.
+void vtkLAMMPSDumpReader::OrderById(vtkRequestState& state)
+{
+  const Plan& plan = state.Columns;
+  const long long n = state.N;
+  std::vector<vtkIdType>& order = state.Order;
   if (this->SortById && plan.IdArray >= 0 && n > 1)
   {
-    const vtkIdType* ids = static_cast<const vtkIdType*>(out.Arrays[plan.IdArray]);
+    const vtkIdType* ids = static_cast<const vtkIdType*>(state.Out.Arrays[plan.IdArray]);
     if (!std::is_sorted(ids, ids + n))
     {
       order.resize(static_cast<size_t>(n));
@@ -1237,23 +1426,29 @@ int vtkLAMMPSDumpReader::RequestData(
   }
   else if (this->SortById && plan.IdArray < 0 && n > 0)
   {
-    vtkWarningMacro(<< fileName << ": SortById is on, but the dump has no id column.");
+    vtkWarningMacro(<< state.FileName << ": SortById is on, but the dump has no id column.");
   }
+}
+
+//------------------------------------------------------------------------------
+// The output: the points and the arrays (in id order when sorted), a vertex per atom, the box.
+void vtkLAMMPSDumpReader::AssembleOutput(vtkRequestState& state, vtkPolyData* output)
+{
+  const std::vector<vtkIdType>& order = state.Order;
+  vtkPoints* points = state.Points;
   if (!order.empty())
   {
     vtkSmartPointer<vtkAbstractArray> sorted = Permuted(points->GetData(), order);
     points->SetData(vtkDataArray::SafeDownCast(sorted));
   }
   output->SetPoints(points);
-  for (auto& array : out.Objects)
+  for (auto& array : state.Out.Objects)
   {
     output->GetPointData()->AddArray(order.empty() ? array : Permuted(array, order));
   }
-  vtkSmartPointer<vtkCellArray> verts = VertexCells(static_cast<vtkIdType>(n));
+  vtkSmartPointer<vtkCellArray> verts = VertexCells(static_cast<vtkIdType>(state.N));
   output->SetVerts(verts);
-  AddBoxFieldData(output->GetFieldData(), box, s.Timestep);
-  this->UpdateProgress(1.0);
-  return 1;
+  AddBoxFieldData(output->GetFieldData(), state.Step.SimulationBox, state.Step.Timestep);
 }
 
 //------------------------------------------------------------------------------

@@ -156,6 +156,24 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  ///@{
+  /**
+   * The stages of RequestData, in order, on the state of one request (the snapshot, its file,
+   * the plan of its columns, the outputs). OpenAtoms and ParseAtoms return false after an error.
+   */
+  struct vtkRequestState;
+  bool OpenAtoms(vtkRequestState& state);
+  void PlanColumns(vtkRequestState& state);
+  static void AllocateOutputs(vtkRequestState& state);
+  bool ParseAtoms(vtkRequestState& state);
+  static void MapPoints(vtkRequestState& state);
+  static void MoveStrings(vtkRequestState& state);
+  void AddRadius(vtkRequestState& state);
+  void RadiiFromTypes(const int* type, long long n, float* r);
+  void OrderById(vtkRequestState& state);
+  static void AssembleOutput(vtkRequestState& state, vtkPolyData* output);
+  ///@}
 };
 
 #endif
