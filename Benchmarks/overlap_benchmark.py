@@ -18,7 +18,7 @@ Opacity 0.5 (the film also 0.9), constant density, VolumeMix 0.5. "penetrating":
 spheres penetrate by more than OverlapTolerance (0.25), i.e. what AUTOMATIC picks.
 
 usage: Scripts/with_xvfb.sh /usr/bin/python3 Benchmarks/overlap_benchmark.py [--build build]
-       [--out Benchmarks/results] [--frames 7]
+       [--out Benchmarks/results] [--frames 7] [--quick]
 writes overlap_compositing.csv and overlap_compositing.png into --out
 """
 import argparse
@@ -38,6 +38,8 @@ def parse():
     p.add_argument("--build", default=os.path.join(TOP, "build"))
     p.add_argument("--out", default=os.path.join(HERE, "results"))
     p.add_argument("--frames", type=int, default=7)
+    p.add_argument("--quick", action="store_true",
+                   help="smoke run: the LJ film at opacity 0.5 and the 2k molecule only")
     return p.parse_args()
 
 
@@ -141,6 +143,9 @@ def scenes():
                          vtk_to_numpy(pd.GetArray("radius")),
                          type_colors(vtk_to_numpy(pd.GetArray("type"))))
     yield "lj_film", film_data, True, 0.5
+    if ARGS.quick:
+        yield "molecule_2k", polydata(*molecule(2000)), True, 0.5
+        return
     yield "lj_film_opacity0.9", film_data, True, 0.9
     for n, label in ((2000, "molecule_2k"), (20000, "molecule_20k")):
         yield label, polydata(*molecule(n)), True, 0.5

@@ -1,8 +1,10 @@
 """Plot Benchmarks/results/mpi_scaling.csv (Benchmarks/mpi_scaling.py): frame and time-step
 times against the number of ranks, per particle count (the newest row of each pair).
-usage: /usr/bin/python3 Benchmarks/plot_mpi_scaling.py"""
+usage: /usr/bin/python3 Benchmarks/plot_mpi_scaling.py [CSV [PNG]]
+(defaults Benchmarks/results/mpi_scaling.csv and mpi_scaling.png next to the CSV)"""
 import csv
 import os
+import sys
 
 import matplotlib
 
@@ -10,7 +12,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
-path = os.path.join(here, "results", "mpi_scaling.csv")
+path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "results", "mpi_scaling.csv")
+png = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(path), "mpi_scaling.png")
 rows = {}
 with open(path) as f:
     for row in csv.DictReader(f):
@@ -32,5 +35,5 @@ for ax, particles in zip(axes[0], counts):
     ax.grid(alpha=0.3)
 axes[0][0].legend(fontsize=8)
 fig.tight_layout()
-fig.savefig(os.path.join(here, "results", "mpi_scaling.png"), dpi=100)
-print("wrote", os.path.join(here, "results", "mpi_scaling.png"))
+fig.savefig(png, dpi=100)
+print("wrote", png)

@@ -4,9 +4,12 @@
 # all ranks. The machine has 2 cores: 4 ranks oversubscribe it. Appends to
 # Benchmarks/results/mpi_scaling.csv and draws mpi_scaling.png.
 # usage: Benchmarks/run_mpi_scaling.sh [BUILD_DIR]
+# env: RESULTS_DIR (default Benchmarks/results), BUILD_DIR (when no argument; default build)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$top/build}
+build=${1:-${BUILD_DIR:-$top/build}}
+results=${RESULTS_DIR:-$top/Benchmarks/results}
+mkdir -p "$results"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export PYTHONPATH="$build/lib/python3/dist-packages"
 for repeat in 2 7; do
@@ -14,7 +17,7 @@ for repeat in 2 7; do
     "$top/Scripts/with_xvfb.sh" mpiexec -np "$np" --oversubscribe -x DISPLAY -x PYTHONPATH \
       pvbatch "$top/Benchmarks/mpi_scaling.py" \
       --plugin "$build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so" \
-      --data "$top/Testing/Data" --repeat "$repeat"
+      --data "$top/Testing/Data" --repeat "$repeat" --csv "$results/mpi_scaling.csv"
   done
 done
-/usr/bin/python3 "$top/Benchmarks/plot_mpi_scaling.py"
+/usr/bin/python3 "$top/Benchmarks/plot_mpi_scaling.py" "$results/mpi_scaling.csv" "$results/mpi_scaling.png"

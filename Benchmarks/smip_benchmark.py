@@ -24,6 +24,7 @@ Measured in the same run, per scene:
 usage: Scripts/with_xvfb.sh /usr/bin/python3 Benchmarks/smip_benchmark.py [CELLS REPEAT WIDTH HEIGHT SAMPLES]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
 Benchmarks/results/smip_timings.csv and draws smip_timings.png from all its rows.
+(another directory: PR_BENCHMARK_RESULTS=DIR; Benchmarks/run.py --out sets it)
 """
 import os
 import sys
@@ -38,7 +39,8 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkLight
 
 here = os.path.dirname(os.path.abspath(__file__))
-results = os.path.join(here, "results")
+# PR_BENCHMARK_RESULTS (set by Benchmarks/run.py --out) overrides the results directory
+results = os.environ.get("PR_BENCHMARK_RESULTS") or os.path.join(here, "results")
 
 
 def liquid(n):

@@ -14,6 +14,7 @@ scale is multiplied by FACTOR about the centre. Measured:
 usage: Scripts/with_xvfb.sh /usr/bin/python3 Benchmarks/smip_between_levels.py [CELLS WIDTH HEIGHT SAMPLES FACTOR]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython:Benchmarks); appends to
 Benchmarks/results/smip_between_levels.csv
+(another directory: PR_BENCHMARK_RESULTS=DIR; Benchmarks/run.py --out sets it)
 """
 import os
 import sys
@@ -71,5 +72,5 @@ row = [len(scene[0]), width, height, samples, factor, first_frame, len(kept_time
        sum(kept_times), len(anew_times), sum(anew_times)] + list(e_kept) + list(e_anew)
 header = ("particles,width,height,samples,factor,kept_first_frame_s,kept_frames,kept_total_s,"
           "anew_frames,anew_total_s,kept_mean,kept_p99,kept_max,anew_mean,anew_p99,anew_max\n")
-path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "smip_between_levels.csv")
+path = os.path.join(sb.results, "smip_between_levels.csv")
 append_csv(path, header, row)

@@ -20,6 +20,7 @@ re-sampling to equal quality takes N* sample passes.
 usage: Scripts/with_xvfb.sh /usr/bin/python3 Benchmarks/smip_quality.py [CELLS REPEAT WIDTH HEIGHT SAMPLES SUPER]
 (defaults 63 8 640 360 64 16; PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython);
 writes Benchmarks/results/smip_quality.csv.
+(another directory: PR_BENCHMARK_RESULTS=DIR; Benchmarks/run.py --out sets it)
 """
 import os
 import sys

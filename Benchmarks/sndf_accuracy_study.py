@@ -15,6 +15,7 @@ Errors are mean and 99th percentile of the per-pixel largest channel difference,
 usage: Scripts/with_xvfb.sh /usr/bin/python3 Benchmarks/sndf_accuracy_study.py [WIDTH HEIGHT]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); writes
 Benchmarks/results/sndf_accuracy.csv and sndf_accuracy.png
+(another directory: PR_BENCHMARK_RESULTS=DIR; Benchmarks/run.py --out sets it)
 """
 import os
 import sys
@@ -28,7 +29,9 @@ from prVTKTesting import crystal_view, fcc_crystal, window_pixels
 W, H = (int(a) for a in (sys.argv[1:3] + ["160", "120"][len(sys.argv[1:3]):]))
 REFERENCE_FACTOR = 32
 xyz, rgb = fcc_crystal(16)
-results = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results")
+# PR_BENCHMARK_RESULTS (set by Benchmarks/run.py --out) overrides the results directory
+results = (os.environ.get("PR_BENCHMARK_RESULTS") or
+           os.path.join(os.path.dirname(os.path.abspath(__file__)), "results"))
 
 
 def view(size, sndf=None):

@@ -19,6 +19,7 @@ lattice constants, headlight, at WIDTHxHEIGHT. Measured in the same run:
 usage: Scripts/with_xvfb.sh python3 Benchmarks/sndf_benchmark.py [CELLS WIDTH HEIGHT SAMPLES]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
 Benchmarks/results/sndf_timings.csv and (the pan) sndf_pan.csv
+(another directory: PR_BENCHMARK_RESULTS=DIR; Benchmarks/run.py --out sets it)
 """
 import os
 import sys
@@ -122,12 +123,15 @@ restart = timed(window)
 row = [len(xyz), width, height, samples, sndf.GetActiveBinsPerAxis(), plain, sample,
        sample / plain, relight, resample, resample / relight, sndf.GetMemoryBytes() / 2**20,
        stages[0], stages[1], stages[2], relight_shade]
-path = os.path.join(os.path.dirname(__file__), "results", "sndf_timings.csv")
+# PR_BENCHMARK_RESULTS (set by Benchmarks/run.py --out) overrides the results directory
+results = os.environ.get("PR_BENCHMARK_RESULTS") or os.path.join(os.path.dirname(__file__),
+                                                                 "results")
+path = os.path.join(results, "sndf_timings.csv")
 header = ("particles,width,height,samples,bins,plain_s,sample_pass_s,sample_over_plain,"
           "relight_s,resample_s,resample_over_relight,memory_MB,gpu_sample_s,gpu_accumulate_s,"
           "gpu_shade_s,gpu_relight_shade_s\n")
 append_csv(path, header, row)
-pan_path = os.path.join(os.path.dirname(__file__), "results", "sndf_pan.csv")
+pan_path = os.path.join(results, "sndf_pan.csv")
 append_csv(pan_path, "particles,width,height,samples,pan_frame_s,restart_frame_s",
            [len(xyz), width, height, samples, pan, restart])
 print("pan frame %.3f s, restart frame %.3f s" % (pan, restart))

@@ -20,6 +20,7 @@ Measured in the same run:
 usage: Scripts/with_xvfb.sh python3 Benchmarks/sndf_recolour.py [CELLS WIDTH HEIGHT SAMPLES MODE KEEP]
 (PYTHONPATH=build/lib/python3/dist-packages:Testing/VTKPython); appends to
 Benchmarks/results/sndf_recolour.csv and draws sndf_recolour.png from its rows.
+(another directory: PR_BENCHMARK_RESULTS=DIR; Benchmarks/run.py --out sets it)
 """
 import os
 import sys
@@ -106,7 +107,10 @@ else:
 
 row = [len(xyz), width, height, samples, mode, int(keep), sample, accumulate, recolour, resample,
        ratio, tiles, sndf.GetMemoryBytes() / 1048576.0]
-path = os.path.join(os.path.dirname(__file__), "results", "sndf_recolour.csv")
+# PR_BENCHMARK_RESULTS (set by Benchmarks/run.py --out) overrides the results directory
+results = os.environ.get("PR_BENCHMARK_RESULTS") or os.path.join(os.path.dirname(__file__),
+                                                                 "results")
+path = os.path.join(results, "sndf_recolour.csv")
 header = ("particles,width,height,samples,mode,keep_coordinates,sample_pass_s,accumulate_s,"
           "recolour_s,resample_s,resample_over_recolour,tiles,cache_mb\n")
 append_csv(path, header, row)
