@@ -360,6 +360,136 @@ int vtkMMPLDReader::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
+// The state of one RequestData: the frame read, its file and lists, and the outputs being filled.
+struct vtkMMPLDReader::vtkRequestState
+{
+  size_t Index = 0; // the frame
+  prReader::InputFile File;
+  std::vector<List> Lists;
+  vtkIdType N = 0; // particles, all lists
+  bool DoublePoints = false;
+  bool AnyColour = false;
+  bool AnyIntensity = false;
+  vtkSmartPointer<vtkPoints> Points;
+  vtkSmartPointer<vtkFloatArray> Radius;
+  vtkSmartPointer<vtkIntArray> ListIndex;
+  vtkSmartPointer<vtkUnsignedCharArray> Colour;
+  vtkSmartPointer<vtkFloatArray> Intensity;
+  vtkSmartPointer<vtkFloatArray> IntensityRanges;
+};
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The frame of the requested time: the last one at or before it.
+size_t RequestedFrame(const std::vector<double>& timeValues, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  size_t index = 0;
+  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    const auto it = std::upper_bound(timeValues.begin(), timeValues.end(), t);
+    index = it == timeValues.begin() ? 0 : static_cast<size_t>(it - timeValues.begin()) - 1;
+  }
+  return index;
+}
+
+// The position (and, for float xyzr, the radius) of the particle at v in list l.
+void DecodePosition(const List& l, const unsigned char* v, int vertexSize, double x[3], float& r)
+{
+  switch (l.VertexType)
+  {
+    case 1:
+    case 2:
+    {
+      float f[4];
+      std::memcpy(f, v, vertexSize);
+      x[0] = f[0];
+      x[1] = f[1];
+      x[2] = f[2];
+      r = l.VertexType == 2 ? f[3] : r;
+      break;
+    }
+    case 3:
+    {
+      std::uint16_t s[3];
+      std::memcpy(s, v, 6);
+      x[0] = s[0];
+      x[1] = s[1];
+      x[2] = s[2];
+      break;
+    }
+    default:
+      std::memcpy(x, v, 24);
+  }
+}
+
+// The 8-bit RGBA colour of the particle whose colour is at c in list l.
+void DecodeColour(const List& l, const unsigned char* c, unsigned char rgba[4])
+{
+  std::memcpy(rgba, l.Colour, 4);
+  switch (l.ColourType)
+  {
+    case 1:
+      std::memcpy(rgba, c, 3);
+      rgba[3] = 255;
+      break;
+    case 2:
+      std::memcpy(rgba, c, 4);
+      break;
+    case 4:
+    case 5:
+    {
+      float f[4] = { 0, 0, 0, 1 };
+      std::memcpy(f, c, l.ColourType == 4 ? 12 : 16);
+      for (int k = 0; k < 4; ++k)
+      {
+        const float value = std::isfinite(f[k]) ? f[k] : 0.0f;
+        rgba[k] =
+          static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, value))));
+      }
+      break;
+    }
+    case 6:
+    {
+      std::uint16_t s[4];
+      std::memcpy(s, c, 8);
+      for (int k = 0; k < 4; ++k)
+      {
+        rgba[k] = static_cast<unsigned char>((s[k] + 128) / 257);
+      }
+      break;
+    }
+    case 3:
+    case 7:
+      rgba[0] = rgba[1] = rgba[2] = 192; // intensity lists: MegaMol's default grey
+      rgba[3] = 255;
+      break;
+    default:
+      break;
+  }
+}
+
+// The intensity of the particle whose colour is at c in list l (NaN for a list of colours).
+float DecodeIntensity(const List& l, const unsigned char* c)
+{
+  float value = std::numeric_limits<float>::quiet_NaN();
+  if (l.ColourType == 3)
+  {
+    std::memcpy(&value, c, 4);
+  }
+  else if (l.ColourType == 7)
+  {
+    double d;
+    std::memcpy(&d, c, 8);
+    value = static_cast<float>(d);
+  }
+  return value;
+}
+}
+
+//------------------------------------------------------------------------------
 int vtkMMPLDReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -369,80 +499,103 @@ int vtkMMPLDReader::RequestData(
   {
     return 0;
   }
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  size_t index = 0;
-  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    const auto it = std::upper_bound(this->TimeValues.begin(), this->TimeValues.end(), t);
-    index =
-      it == this->TimeValues.begin() ? 0 : static_cast<size_t>(it - this->TimeValues.begin()) - 1;
-  }
+  // the frame of the requested time and its time
+  vtkRequestState state;
+  state.Index = RequestedFrame(this->TimeValues, outputVector);
   for (int port = 0; port < 2; ++port)
   {
     outputVector->GetInformationObject(port)->Set(
-      vtkDataObject::DATA_TIME_STEP(), this->TimeValues[index]);
+      vtkDataObject::DATA_TIME_STEP(), this->TimeValues[state.Index]);
   }
-  const Frame& frame = this->Frames[index];
-  prReader::InputFile file;
-  std::vector<List> lists;
-  float time;
-  std::string why;
-  if (!file.Open(this->FileName) ||
-    !ScanFrameAnyway(file, frame.Begin, frame.End, this->Version, time, lists, why))
+
+  if (!this->OpenFrame(state))
   {
-    vtkErrorMacro(<< this->FileName << ": frame " << index << " cannot be read: " << why);
     return 0;
   }
+  AllocateOutputs(state);
+  if (!this->ReadParticles(state))
+  {
+    return 0;
+  }
+  this->AssembleOutput(state, output);
+  this->AddOutline(outline);
+  return 1;
+}
 
-  // the outputs, sized for all lists
+//------------------------------------------------------------------------------
+// Open the file and read the list headers of the frame (ScanFrameAnyway).
+bool vtkMMPLDReader::OpenFrame(vtkRequestState& state)
+{
+  const Frame& frame = this->Frames[state.Index];
+  float time;
+  std::string why;
+  if (!state.File.Open(this->FileName) ||
+    !ScanFrameAnyway(state.File, frame.Begin, frame.End, this->Version, time, state.Lists, why))
+  {
+    vtkErrorMacro(<< this->FileName << ": frame " << state.Index << " cannot be read: " << why);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The outputs, sized for all lists: the points (double when a list has double xyz), "radius",
+// "list", "color" when a list has colours, "intensity" when a list has intensities, and the
+// lists' intensity ranges.
+void vtkMMPLDReader::AllocateOutputs(vtkRequestState& state)
+{
   vtkIdType n = 0;
-  bool doublePoints = false;
-  bool anyColour = false;
-  bool anyIntensity = false;
-  for (const List& l : lists)
+  for (const List& l : state.Lists)
   {
     n += static_cast<vtkIdType>(l.Count);
-    doublePoints |= l.VertexType == 4 && l.Count > 0;
-    anyColour |= l.ColourType != 3 && l.ColourType != 7;
-    anyIntensity |= l.ColourType == 3 || l.ColourType == 7;
+    state.DoublePoints |= l.VertexType == 4 && l.Count > 0;
+    state.AnyColour |= l.ColourType != 3 && l.ColourType != 7;
+    state.AnyIntensity |= l.ColourType == 3 || l.ColourType == 7;
   }
-  vtkNew<vtkPoints> points;
-  points->SetDataType(doublePoints ? VTK_DOUBLE : VTK_FLOAT);
-  points->SetNumberOfPoints(n);
-  vtkNew<vtkFloatArray> radius;
-  radius->SetName("radius");
-  radius->SetNumberOfTuples(n);
-  vtkNew<vtkIntArray> listIndex;
-  listIndex->SetName("list");
-  listIndex->SetNumberOfTuples(n);
-  vtkNew<vtkUnsignedCharArray> colour;
-  colour->SetName("color");
-  colour->SetNumberOfComponents(4);
-  colour->SetNumberOfTuples(anyColour ? n : 0);
-  vtkNew<vtkFloatArray> intensity;
-  intensity->SetName("intensity");
-  intensity->SetNumberOfTuples(anyIntensity ? n : 0);
-  vtkNew<vtkFloatArray> intensityRanges;
-  intensityRanges->SetName("IntensityRange");
-  intensityRanges->SetNumberOfComponents(2);
+  state.N = n;
+  state.Points = vtkSmartPointer<vtkPoints>::New();
+  state.Points->SetDataType(state.DoublePoints ? VTK_DOUBLE : VTK_FLOAT);
+  state.Points->SetNumberOfPoints(n);
+  state.Radius = vtkSmartPointer<vtkFloatArray>::New();
+  state.Radius->SetName("radius");
+  state.Radius->SetNumberOfTuples(n);
+  state.ListIndex = vtkSmartPointer<vtkIntArray>::New();
+  state.ListIndex->SetName("list");
+  state.ListIndex->SetNumberOfTuples(n);
+  state.Colour = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  state.Colour->SetName("color");
+  state.Colour->SetNumberOfComponents(4);
+  state.Colour->SetNumberOfTuples(state.AnyColour ? n : 0);
+  state.Intensity = vtkSmartPointer<vtkFloatArray>::New();
+  state.Intensity->SetName("intensity");
+  state.Intensity->SetNumberOfTuples(state.AnyIntensity ? n : 0);
+  state.IntensityRanges = vtkSmartPointer<vtkFloatArray>::New();
+  state.IntensityRanges->SetName("IntensityRange");
+  state.IntensityRanges->SetNumberOfComponents(2);
+}
 
+//------------------------------------------------------------------------------
+// Read the particles of every list into the outputs, list after list. Returns false, with an
+// error, when a list's data cannot be read.
+bool vtkMMPLDReader::ReadParticles(vtkRequestState& state)
+{
+  const std::vector<List>& lists = state.Lists;
   std::vector<unsigned char> raw;
   vtkIdType row = 0;
   for (size_t li = 0; li < lists.size(); ++li)
   {
     const List& l = lists[li];
-    intensityRanges->InsertNextTuple2(l.IntensityRange[0], l.IntensityRange[1]);
+    state.IntensityRanges->InsertNextTuple2(l.IntensityRange[0], l.IntensityRange[1]);
     if (l.Count == 0)
     {
       continue;
     }
     raw.resize(static_cast<size_t>(l.Count) * l.Stride);
-    if (!file.Seek(l.Data) || !file.ReadAll(raw.data(), raw.size()))
+    if (!state.File.Seek(l.Data) || !state.File.ReadAll(raw.data(), raw.size()))
     {
-      vtkErrorMacro(<< this->FileName << ": cannot read the particles of frame " << index
+      vtkErrorMacro(<< this->FileName << ": cannot read the particles of frame " << state.Index
                     << ", list " << li << " (byte " << l.Data << ")");
-      return 0;
+      return false;
     }
     const int vertexSize = VertexSize(l.VertexType);
     for (std::uint64_t p = 0; p < l.Count; ++p, ++row)
@@ -451,110 +604,43 @@ int vtkMMPLDReader::RequestData(
       const unsigned char* c = v + vertexSize;
       double x[3];
       float r = l.Radius;
-      switch (l.VertexType)
+      DecodePosition(l, v, vertexSize, x, r);
+      state.Points->SetPoint(row, x);
+      state.Radius->SetValue(row, r);
+      state.ListIndex->SetValue(row, static_cast<int>(li));
+      if (state.AnyColour)
       {
-        case 1:
-        case 2:
-        {
-          float f[4];
-          std::memcpy(f, v, vertexSize);
-          x[0] = f[0];
-          x[1] = f[1];
-          x[2] = f[2];
-          r = l.VertexType == 2 ? f[3] : r;
-          break;
-        }
-        case 3:
-        {
-          std::uint16_t s[3];
-          std::memcpy(s, v, 6);
-          x[0] = s[0];
-          x[1] = s[1];
-          x[2] = s[2];
-          break;
-        }
-        default:
-          std::memcpy(x, v, 24);
+        unsigned char rgba[4];
+        DecodeColour(l, c, rgba);
+        state.Colour->SetTypedTuple(row, rgba);
       }
-      points->SetPoint(row, x);
-      radius->SetValue(row, r);
-      listIndex->SetValue(row, static_cast<int>(li));
-      if (anyColour)
+      if (state.AnyIntensity)
       {
-        unsigned char rgba[4] = { l.Colour[0], l.Colour[1], l.Colour[2], l.Colour[3] };
-        switch (l.ColourType)
-        {
-          case 1:
-            std::memcpy(rgba, c, 3);
-            rgba[3] = 255;
-            break;
-          case 2:
-            std::memcpy(rgba, c, 4);
-            break;
-          case 4:
-          case 5:
-          {
-            float f[4] = { 0, 0, 0, 1 };
-            std::memcpy(f, c, l.ColourType == 4 ? 12 : 16);
-            for (int k = 0; k < 4; ++k)
-            {
-              const float value = std::isfinite(f[k]) ? f[k] : 0.0f;
-              rgba[k] = static_cast<unsigned char>(
-                std::lround(255.0f * std::min(1.0f, std::max(0.0f, value))));
-            }
-            break;
-          }
-          case 6:
-          {
-            std::uint16_t s[4];
-            std::memcpy(s, c, 8);
-            for (int k = 0; k < 4; ++k)
-            {
-              rgba[k] = static_cast<unsigned char>((s[k] + 128) / 257);
-            }
-            break;
-          }
-          case 3:
-          case 7:
-            rgba[0] = rgba[1] = rgba[2] = 192; // intensity lists: MegaMol's default grey
-            rgba[3] = 255;
-            break;
-          default:
-            break;
-        }
-        colour->SetTypedTuple(row, rgba);
-      }
-      if (anyIntensity)
-      {
-        float value = std::numeric_limits<float>::quiet_NaN();
-        if (l.ColourType == 3)
-        {
-          std::memcpy(&value, c, 4);
-        }
-        else if (l.ColourType == 7)
-        {
-          double d;
-          std::memcpy(&d, c, 8);
-          value = static_cast<float>(d);
-        }
-        intensity->SetValue(row, value);
+        state.Intensity->SetValue(row, DecodeIntensity(l, c));
       }
     }
     this->UpdateProgress(0.1 + 0.9 * (li + 1) / lists.size());
   }
+  return true;
+}
 
-  output->SetPoints(points);
-  output->GetPointData()->AddArray(radius);
-  output->GetPointData()->AddArray(listIndex);
-  if (anyColour)
+//------------------------------------------------------------------------------
+// The output: the points and the arrays, a vertex per particle, the file's boxes and the lists'
+// intensity ranges in the field data.
+void vtkMMPLDReader::AssembleOutput(vtkRequestState& state, vtkPolyData* output)
+{
+  output->SetPoints(state.Points);
+  output->GetPointData()->AddArray(state.Radius);
+  output->GetPointData()->AddArray(state.ListIndex);
+  if (state.AnyColour)
   {
-    output->GetPointData()->AddArray(colour);
+    output->GetPointData()->AddArray(state.Colour);
   }
-  if (anyIntensity)
+  if (state.AnyIntensity)
   {
-    output->GetPointData()->AddArray(intensity);
+    output->GetPointData()->AddArray(state.Intensity);
   }
-  output->SetVerts(prReader::VertexCells(n));
+  output->SetVerts(prReader::VertexCells(state.N));
   vtkFieldData* fd = output->GetFieldData();
   vtkNew<vtkFloatArray> bbox;
   bbox->SetName("BoundingBox");
@@ -567,7 +653,13 @@ int vtkMMPLDReader::RequestData(
   }
   fd->AddArray(bbox);
   fd->AddArray(clip);
-  fd->AddArray(intensityRanges);
+  fd->AddArray(state.IntensityRanges);
+}
+
+//------------------------------------------------------------------------------
+// The outline of the file's bounding box (output port 1).
+void vtkMMPLDReader::AddOutline(vtkPolyData* outline)
+{
   prReader::Box box;
   for (int k = 0; k < 3; ++k)
   {
@@ -575,7 +667,6 @@ int vtkMMPLDReader::RequestData(
     box.Hi[k] = this->BoundingBox[k + 3];
   }
   outline->ShallowCopy(prReader::BoxOutline(box));
-  return 1;
 }
 
 //------------------------------------------------------------------------------

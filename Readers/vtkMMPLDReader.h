@@ -106,6 +106,19 @@ private:
   float ClipBox[6] = { 0, 0, 0, 0, 0, 0 };
   std::string IndexedFile;
   long long IndexedStamp = -1;
+
+  ///@{
+  /**
+   * The stages of RequestData, in order, on the state of one request (the frame, its file and
+   * lists, the outputs being filled). OpenFrame and ReadParticles return false after an error.
+   */
+  struct vtkRequestState;
+  bool OpenFrame(vtkRequestState& state);
+  static void AllocateOutputs(vtkRequestState& state);
+  bool ReadParticles(vtkRequestState& state);
+  void AssembleOutput(vtkRequestState& state, vtkPolyData* output);
+  void AddOutline(vtkPolyData* outline);
+  ///@}
 };
 
 #endif
