@@ -65,6 +65,30 @@ enum ShaderVariant
 // window-depth margin of the pre-pass limit (as vtkParticleOcclusionCuller's DepthMargin): far
 // above the float rounding of the depths the shaders write
 const float PrePassDepthMargin = 1.0f / 1048576.0f;
+
+// The neighbour-list build (vtkMetaballMapper::UpdateNeighborLists): what its stages share, the
+// particles and the search's parameters.
+struct NeighborSearch
+{
+  vtkIdType N = 0;
+  const float* R = nullptr;      // radii (model units, before RadiusScaleFactor)
+  std::vector<double> Positions; // 3 per particle
+  double Scale = 1.0;            // |RadiusScaleFactor|
+  double K = 2.0;                // InfluenceFactor
+  int MaximumNeighbors = 64;
+  double RMax = 0.0;         // the largest radius, scaled
+  double RadiusFactor = 1.0; // below 1: the query radius shrunk (crowded)
+  vtkParticleCellList Cells; // the candidates' cells
+};
+// The lists the search found for the particles from Begin on: per particle its length, the
+// neighbours of all (nearest first), how many lists were cut.
+struct NeighborChunk
+{
+  vtkIdType Begin = 0;
+  std::vector<std::int32_t> Counts;
+  std::vector<std::int32_t> Neighbors;
+  vtkIdType Truncated = 0;
+};
 }
 
 //------------------------------------------------------------------------------
@@ -151,6 +175,39 @@ public:
     vtkParticleComputeProgram::ReleaseStorage(this->ColorBuffer, current);
     this->ListsUploaded = false;
   }
+
+  // what the lists of `self`'s uploaded particles are built from
+  static Signature SignatureOf(vtkMetaballMapper* self)
+  {
+    vtkDataArray* positions = self->GetUploadedPositions();
+    vtkFloatArray* radii = self->GetUploadedRadii();
+    Signature signature;
+    signature.Positions = positions;
+    signature.PositionsTime = positions ? positions->GetMTime() : 0;
+    signature.Radii = radii;
+    signature.RadiiTime = radii ? radii->GetMTime() : 0;
+    signature.Count = radii ? radii->GetNumberOfTuples() : 0;
+    signature.Scale = std::abs(self->RadiusScaleFactor);
+    signature.Influence = self->InfluenceFactor;
+    signature.MaximumNeighbors = self->MaximumNumberOfNeighbors;
+    signature.MaximumMemory = self->MaximumListMemory;
+    return signature;
+  }
+
+  // the lists' arrays sized for n particles, with no entry
+  void ResetLists(vtkIdType n)
+  {
+    this->Ranges.assign(2 * static_cast<size_t>(n), 0);
+    this->Entries.clear();
+    this->Ids.clear();
+    this->Flags->SetNumberOfTuples(n);
+    this->CullingRadii.assign(static_cast<size_t>(n), 0.0f);
+  }
+
+  // the lists the search found, each cut to `cap` entries: ranges, entries, ids, flags and
+  // culling radii; returns the number of entries, adds the lists the cap cut to `cut`
+  vtkIdType WriteLists(const NeighborSearch& search, const std::vector<NeighborChunk>& chunks,
+    std::int32_t cap, vtkIdType& cut);
 };
 
 //------------------------------------------------------------------------------
@@ -229,63 +286,26 @@ bool vtkMetaballMapper::GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor
 }
 
 //------------------------------------------------------------------------------
-void vtkMetaballMapper::UpdateNeighborLists()
+namespace
 {
-  vtkInternals& internals = *this->Internals;
-  vtkDataArray* positions = this->GetUploadedPositions();
-  vtkFloatArray* radii = this->GetUploadedRadii();
-  const vtkIdType n = radii ? radii->GetNumberOfTuples() : 0;
-
-  vtkInternals::Signature signature;
-  signature.Positions = positions;
-  signature.PositionsTime = positions ? positions->GetMTime() : 0;
-  signature.Radii = radii;
-  signature.RadiiTime = radii ? radii->GetMTime() : 0;
-  signature.Count = n;
-  signature.Scale = std::abs(this->RadiusScaleFactor);
-  signature.Influence = this->InfluenceFactor;
-  signature.MaximumNeighbors = this->MaximumNumberOfNeighbors;
-  signature.MaximumMemory = this->MaximumListMemory;
-  if (internals.HaveLists && internals.Built == signature)
-  {
-    return;
-  }
-  const double start = vtkTimerLog::GetUniversalTime();
-  internals.Built = signature;
-  internals.HaveLists = true;
-  internals.ListsUploaded = false;
-  ++this->NumberOfListBuilds;
-
-  internals.Ranges.assign(2 * static_cast<size_t>(n), 0);
-  internals.Entries.clear();
-  internals.Ids.clear();
-  internals.Flags->SetNumberOfTuples(n);
-  internals.CullingRadii.assign(static_cast<size_t>(n), 0.0f);
-  this->NumberOfListEntries = 0;
-  this->NumberOfIsolatedParticles = 0;
-  this->NumberOfTruncatedLists = 0;
-  if (n == 0 || !positions)
-  {
-    this->LastListBuildSeconds = vtkTimerLog::GetUniversalTime() - start;
-    return;
-  }
-
-  const float* r = radii->GetPointer(0);
-  const double scale = signature.Scale;
-  const double k = this->InfluenceFactor;
-  const int maxNeighbors = this->MaximumNumberOfNeighbors;
+// The largest of the n radii r.
+float LargestRadius(const float* r, vtkIdType n)
+{
   float largest = 0.0f;
   for (vtkIdType i = 0; i < n; ++i)
   {
     largest = std::max(largest, r[i]);
   }
-  const double rMax = largest * scale;
+  return largest;
+}
 
-  // The positions in one double array (skipped particles sit on a valid one with radius 0 and
-  // are never neighbours, nor binned).
-  std::vector<double> copy(3 * static_cast<size_t>(n));
-  double* xyz = copy.data();
-  vtkSMPTools::For(0, n,
+// The positions in one double array (skipped particles sit on a valid one with radius 0 and
+// are never neighbours, nor binned).
+void CopyPositions(vtkDataArray* positions, NeighborSearch& search)
+{
+  search.Positions.resize(3 * static_cast<size_t>(search.N));
+  double* xyz = search.Positions.data();
+  vtkSMPTools::For(0, search.N,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -293,120 +313,152 @@ void vtkMetaballMapper::UpdateNeighborLists()
         positions->GetTuple(i, xyz + 3 * i);
       }
     });
+}
 
-  // Candidates: the centres within k (R_i + R_max) of each particle (every particle whose
-  // influence sphere can overlap its own), from cells of edge 2 k R_max. A sample of the
-  // particles first measures how many that is; when crowded (a huge InfluenceFactor makes every
-  // particle a neighbour of every other), the query radius and the cells shrink so that a query
-  // finds about 2 (M + 1) centres: the cost stays O(N M) instead of O(N^2), and the lists,
-  // possibly incomplete, are counted as cut.
-  double radiusFactor = 1.0;
-  vtkParticleCellList cells;
-  if (rMax > 0.0)
+// The mean number of candidates a query finds (itself included), from a sample of the
+// particles.
+double MeanCandidates(const NeighborSearch& search)
+{
+  const vtkIdType n = search.N;
+  const float* r = search.R;
+  const double k = search.K;
+  double sum = 0.0;
+  vtkIdType sampled = 0;
+  const vtkIdType step = std::max<vtkIdType>(1, n / 256);
+  for (vtkIdType i = 0; i < n; i += step)
   {
-    cells.Build(xyz, n, r, 2.0 * k * rMax);
-    double sum = 0.0;
-    vtkIdType sampled = 0;
-    const vtkIdType step = std::max<vtkIdType>(1, n / 256);
-    for (vtkIdType i = 0; i < n; i += step)
+    if (r[i] > 0.0f)
     {
-      if (r[i] > 0.0f)
-      {
-        const double q = k * (r[i] * scale + rMax);
-        vtkIdType found = 1; // itself
-        cells.ForEachCandidate(i, [&](vtkIdType, double d2) { found += d2 < q * q ? 1 : 0; });
-        sum += static_cast<double>(found);
-        ++sampled;
-      }
-    }
-    const double mean = sampled > 0 ? sum / sampled : 0.0;
-    if (mean > 4.0 * (maxNeighbors + 1))
-    {
-      radiusFactor = std::cbrt(2.0 * (maxNeighbors + 1) / mean);
-      cells.Build(xyz, n, r, radiusFactor * 2.0 * k * rMax);
+      const double q = k * (r[i] * search.Scale + search.RMax);
+      vtkIdType found = 1; // itself
+      search.Cells.ForEachCandidate(i, [&](vtkIdType, double d2) { found += d2 < q * q ? 1 : 0; });
+      sum += static_cast<double>(found);
+      ++sampled;
     }
   }
-  struct Chunk
+  return sampled > 0 ? sum / sampled : 0.0;
+}
+
+// Candidates: the centres within k (R_i + R_max) of each particle (every particle whose
+// influence sphere can overlap its own), from cells of edge 2 k R_max. A sample of the
+// particles first measures how many that is; when crowded (a huge InfluenceFactor makes every
+// particle a neighbour of every other), the query radius and the cells shrink so that a query
+// finds about 2 (M + 1) centres: the cost stays O(N M) instead of O(N^2), and the lists,
+// possibly incomplete, are counted as cut.
+void BuildCandidateCells(NeighborSearch& search)
+{
+  if (!(search.RMax > 0.0))
   {
-    vtkIdType Begin = 0;
-    std::vector<std::int32_t> Counts;
-    std::vector<std::int32_t> Neighbors;
-    vtkIdType Truncated = 0;
-  };
-  vtkSMPThreadLocal<std::vector<Chunk>> chunks;
-  vtkSMPTools::For(0, n,
+    return;
+  }
+  const double k = search.K;
+  const double rMax = search.RMax;
+  const int maxNeighbors = search.MaximumNeighbors;
+  search.Cells.Build(search.Positions.data(), search.N, search.R, 2.0 * k * rMax);
+  const double mean = MeanCandidates(search);
+  if (mean > 4.0 * (maxNeighbors + 1))
+  {
+    search.RadiusFactor = std::cbrt(2.0 * (maxNeighbors + 1) / mean);
+    search.Cells.Build(
+      search.Positions.data(), search.N, search.R, search.RadiusFactor * 2.0 * k * rMax);
+  }
+}
+
+// The list of particle i (radius > 0) appended to the chunk: the candidates whose influence
+// spheres overlap its own, the nearest M of them; returns its length. `overlapping` is scratch.
+std::int32_t FindNeighborsOf(const NeighborSearch& search, vtkIdType i,
+  std::vector<std::pair<double, std::int32_t>>& overlapping, NeighborChunk& chunk)
+{
+  const float* r = search.R;
+  const double scale = search.Scale;
+  const double k = search.K;
+  const double ri = r[i] * scale;
+  const double q = search.RadiusFactor * k * (ri + search.RMax);
+  overlapping.clear();
+  search.Cells.ForEachCandidate(i,
+    [&](vtkIdType j, double d2)
+    {
+      const double reach = k * (ri + r[j] * scale);
+      if (d2 < reach * reach && d2 < q * q)
+      {
+        overlapping.emplace_back(d2, static_cast<std::int32_t>(j));
+      }
+    });
+  // the nearest M (by centre distance), nearest first
+  const size_t keep = std::min<size_t>(overlapping.size(), search.MaximumNeighbors);
+  if (keep < overlapping.size())
+  {
+    std::nth_element(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
+  }
+  std::sort(overlapping.begin(), overlapping.begin() + keep);
+  for (size_t m = 0; m < keep; ++m)
+  {
+    chunk.Neighbors.push_back(overlapping[m].second);
+  }
+  if (overlapping.size() > keep || search.RadiusFactor < 1.0)
+  {
+    ++chunk.Truncated;
+  }
+  return static_cast<std::int32_t>(keep);
+}
+
+// The lists of all particles, in chunks (in parallel), ordered by their first particle.
+std::vector<NeighborChunk> FindNeighbors(const NeighborSearch& search)
+{
+  vtkSMPThreadLocal<std::vector<NeighborChunk>> chunks;
+  vtkSMPTools::For(0, search.N,
     [&](vtkIdType begin, vtkIdType end)
     {
-      Chunk chunk;
+      NeighborChunk chunk;
       chunk.Begin = begin;
       chunk.Counts.resize(static_cast<size_t>(end - begin));
       std::vector<std::pair<double, std::int32_t>> overlapping;
       for (vtkIdType i = begin; i < end; ++i)
       {
         std::int32_t count = 0;
-        if (r[i] > 0.0f)
+        if (search.R[i] > 0.0f)
         {
-          const double ri = r[i] * scale;
-          const double q = radiusFactor * k * (ri + rMax);
-          overlapping.clear();
-          cells.ForEachCandidate(i,
-            [&](vtkIdType j, double d2)
-            {
-              const double reach = k * (ri + r[j] * scale);
-              if (d2 < reach * reach && d2 < q * q)
-              {
-                overlapping.emplace_back(d2, static_cast<std::int32_t>(j));
-              }
-            });
-          // the nearest M (by centre distance), nearest first
-          const size_t keep = std::min<size_t>(overlapping.size(), maxNeighbors);
-          if (keep < overlapping.size())
-          {
-            std::nth_element(overlapping.begin(), overlapping.begin() + keep, overlapping.end());
-          }
-          std::sort(overlapping.begin(), overlapping.begin() + keep);
-          for (size_t m = 0; m < keep; ++m)
-          {
-            chunk.Neighbors.push_back(overlapping[m].second);
-          }
-          count = static_cast<std::int32_t>(keep);
-          if (overlapping.size() > keep || radiusFactor < 1.0)
-          {
-            ++chunk.Truncated;
-          }
+          count = FindNeighborsOf(search, i, overlapping, chunk);
         }
         chunk.Counts[i - begin] = count;
       }
       chunks.Local().push_back(std::move(chunk));
     });
 
-  std::vector<Chunk*> ordered;
-  for (std::vector<Chunk>& local : chunks)
+  std::vector<NeighborChunk> ordered;
+  for (std::vector<NeighborChunk>& local : chunks)
   {
-    for (Chunk& chunk : local)
+    for (NeighborChunk& chunk : local)
     {
-      ordered.push_back(&chunk);
+      ordered.push_back(std::move(chunk));
     }
   }
   std::sort(ordered.begin(), ordered.end(),
-    [](const Chunk* a, const Chunk* b) { return a->Begin < b->Begin; });
+    [](const NeighborChunk& a, const NeighborChunk& b) { return a.Begin < b.Begin; });
+  return ordered;
+}
 
-  // The memory bound: every list cut to the share that fits.
+// The memory bound: every list cut to the share that fits. Returns the entries a list keeps
+// (0 when the lists cannot be allocated), says why into `warning`; `truncated` is the number of
+// lists the search cut.
+std::int32_t ListCap(const NeighborSearch& search, const std::vector<NeighborChunk>& chunks,
+  double maximumListMemory, std::ostream& warning, vtkIdType& truncated)
+{
+  const vtkIdType n = search.N;
   double total = 0.0;
   vtkIdType listed = 0;
-  vtkIdType truncated = 0;
-  for (const Chunk* chunk : ordered)
+  truncated = 0;
+  for (const NeighborChunk& chunk : chunks)
   {
-    total += static_cast<double>(chunk->Neighbors.size());
-    truncated += chunk->Truncated;
-    for (std::int32_t c : chunk->Counts)
+    total += static_cast<double>(chunk.Neighbors.size());
+    truncated += chunk.Truncated;
+    for (std::int32_t c : chunk.Counts)
     {
       listed += c > 0 ? 1 : 0;
     }
   }
-  const double budget = this->MaximumListMemory * 1048576.0;
-  std::int32_t cap = maxNeighbors;
-  std::ostringstream warning;
+  const double budget = maximumListMemory * 1048576.0;
+  std::int32_t cap = search.MaximumNeighbors;
   if (n * ParticleBytes + total * EntryBytes > budget || total > 2147483647.0)
   {
     const double entries =
@@ -415,7 +467,7 @@ void vtkMetaballMapper::UpdateNeighborLists()
       std::max(0.0, std::floor(entries / std::max<vtkIdType>(1, listed))));
     warning << "The neighbour lists of " << n << " particles would take "
             << (n * ParticleBytes + total * EntryBytes) / 1048576.0
-            << " MiB, more than MaximumListMemory (" << this->MaximumListMemory
+            << " MiB, more than MaximumListMemory (" << maximumListMemory
             << " MiB): every list keeps its " << cap
             << " nearest neighbours; the surface is approximate where particles have more. ";
   }
@@ -427,30 +479,72 @@ void vtkMetaballMapper::UpdateNeighborLists()
             << "): the particles are drawn as spheres. ";
     cap = 0;
   }
+  return cap;
+}
 
-  // Offsets, then the entries (centre offsets formed in double: exact far from the origin).
-  std::vector<vtkIdType> chunkOffsets(ordered.size() + 1, 0);
-  vtkIdType cut = 0;
-  for (size_t c = 0; c < ordered.size(); ++c)
+// The first entry of each chunk's lists, each list cut to `cap` (one more: the total); adds the
+// lists the cap cuts to `cut`.
+std::vector<vtkIdType> ChunkOffsets(
+  const std::vector<NeighborChunk>& chunks, std::int32_t cap, vtkIdType& cut)
+{
+  std::vector<vtkIdType> chunkOffsets(chunks.size() + 1, 0);
+  for (size_t c = 0; c < chunks.size(); ++c)
   {
     vtkIdType sum = 0;
-    for (std::int32_t count : ordered[c]->Counts)
+    for (std::int32_t count : chunks[c].Counts)
     {
       sum += std::min(count, cap);
       cut += count > cap ? 1 : 0;
     }
     chunkOffsets[c + 1] = chunkOffsets[c] + sum;
   }
+  return chunkOffsets;
+}
+
+// The particles with a radius and an empty list (drawn as plain spheres).
+vtkIdType CountIsolated(const NeighborSearch& search, const std::vector<std::int32_t>& ranges)
+{
+  vtkIdType isolated = 0;
+  for (vtkIdType i = 0; i < search.N; ++i)
+  {
+    isolated += (search.R[i] > 0.0f && ranges[2 * i + 1] == 0) ? 1 : 0;
+  }
+  return isolated;
+}
+
+// The warning about the `truncated` lists the search cut.
+void DescribeTruncation(std::ostream& warning, const NeighborSearch& search, vtkIdType truncated)
+{
+  const int maxNeighbors = search.MaximumNeighbors;
+  warning << truncated << " of " << search.N
+          << " particles have more than MaximumNumberOfNeighbors (" << maxNeighbors
+          << ") particles within their influence radius (InfluenceFactor " << search.K
+          << (search.RadiusFactor < 1.0 ? "; so crowded that only the nearest were searched" : "")
+          << "): their " << maxNeighbors
+          << " nearest are used; the surface there is approximate. Lower InfluenceFactor or "
+             "raise MaximumNumberOfNeighbors (at most 255). ";
+}
+}
+
+//------------------------------------------------------------------------------
+// Offsets, then the entries (centre offsets formed in double: exact far from the origin).
+vtkIdType vtkMetaballMapper::vtkInternals::WriteLists(const NeighborSearch& search,
+  const std::vector<NeighborChunk>& chunks, std::int32_t cap, vtkIdType& cut)
+{
+  const std::vector<vtkIdType> chunkOffsets = ChunkOffsets(chunks, cap, cut);
   const vtkIdType entries = chunkOffsets.back();
-  internals.Entries.resize(4 * static_cast<size_t>(entries));
-  internals.Ids.resize(static_cast<size_t>(entries));
-  float* flags = internals.Flags->GetPointer(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(ordered.size()),
+  this->Entries.resize(4 * static_cast<size_t>(entries));
+  this->Ids.resize(static_cast<size_t>(entries));
+  float* flags = this->Flags->GetPointer(0);
+  const float* r = search.R;
+  const double* xyz = search.Positions.data();
+  const double k = search.K;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(chunks.size()),
     [&](vtkIdType cb, vtkIdType ce)
     {
       for (vtkIdType c = cb; c < ce; ++c)
       {
-        const Chunk& chunk = *ordered[c];
+        const NeighborChunk& chunk = chunks[c];
         vtkIdType out = chunkOffsets[c];
         size_t in = 0;
         for (size_t m = 0; m < chunk.Counts.size(); ++m)
@@ -458,47 +552,82 @@ void vtkMetaballMapper::UpdateNeighborLists()
           const vtkIdType i = chunk.Begin + static_cast<vtkIdType>(m);
           const std::int32_t count = chunk.Counts[m];
           const std::int32_t kept = std::min(count, cap);
-          internals.Ranges[2 * i] = static_cast<std::int32_t>(out);
-          internals.Ranges[2 * i + 1] = kept;
+          this->Ranges[2 * i] = static_cast<std::int32_t>(out);
+          this->Ranges[2 * i + 1] = kept;
           flags[i] = kept == 0 ? 0.0f : (kept == count ? static_cast<float>(kept) : -1.0f);
           // the culler tests a sphere containing the imposter: the influence sphere (the
           // iso-sphere of an isolated particle is inside it for every IsoValue)
-          internals.CullingRadii[i] = static_cast<float>(k * r[i]);
+          this->CullingRadii[i] = static_cast<float>(k * r[i]);
           const double* ci = xyz + 3 * i;
           for (std::int32_t e = 0; e < kept; ++e)
           {
             const std::int32_t j = chunk.Neighbors[in + e];
             const double* cj = xyz + 3 * static_cast<vtkIdType>(j);
-            float* entry = &internals.Entries[4 * static_cast<size_t>(out)];
+            float* entry = &this->Entries[4 * static_cast<size_t>(out)];
             entry[0] = static_cast<float>(cj[0] - ci[0]);
             entry[1] = static_cast<float>(cj[1] - ci[1]);
             entry[2] = static_cast<float>(cj[2] - ci[2]);
             entry[3] = r[j];
-            internals.Ids[static_cast<size_t>(out)] = j;
+            this->Ids[static_cast<size_t>(out)] = j;
             ++out;
           }
           in += static_cast<size_t>(count);
         }
       }
     });
-  internals.Flags->Modified();
+  this->Flags->Modified();
+  return entries;
+}
 
-  vtkIdType isolated = 0;
-  for (vtkIdType i = 0; i < n; ++i)
+//------------------------------------------------------------------------------
+void vtkMetaballMapper::UpdateNeighborLists()
+{
+  vtkInternals& internals = *this->Internals;
+  const vtkInternals::Signature signature = vtkInternals::SignatureOf(this);
+  if (internals.HaveLists && internals.Built == signature)
   {
-    isolated += (r[i] > 0.0f && internals.Ranges[2 * i + 1] == 0) ? 1 : 0;
+    return;
   }
+  const double start = vtkTimerLog::GetUniversalTime();
+  internals.Built = signature;
+  internals.HaveLists = true;
+  internals.ListsUploaded = false;
+  ++this->NumberOfListBuilds;
+
+  const vtkIdType n = signature.Count;
+  internals.ResetLists(n);
+  this->NumberOfListEntries = 0;
+  this->NumberOfIsolatedParticles = 0;
+  this->NumberOfTruncatedLists = 0;
+  if (n == 0 || !signature.Positions)
+  {
+    this->LastListBuildSeconds = vtkTimerLog::GetUniversalTime() - start;
+    return;
+  }
+
+  NeighborSearch search;
+  search.N = n;
+  search.R = signature.Radii->GetPointer(0);
+  search.Scale = signature.Scale;
+  search.K = this->InfluenceFactor;
+  search.MaximumNeighbors = this->MaximumNumberOfNeighbors;
+  search.RMax = LargestRadius(search.R, n) * search.Scale;
+  CopyPositions(signature.Positions, search);
+  BuildCandidateCells(search);
+  const std::vector<NeighborChunk> chunks = FindNeighbors(search);
+
+  std::ostringstream warning;
+  vtkIdType truncated = 0;
+  const std::int32_t cap = ListCap(search, chunks, this->MaximumListMemory, warning, truncated);
+  vtkIdType cut = 0;
+  const vtkIdType entries = internals.WriteLists(search, chunks, cap, cut);
+
   this->NumberOfListEntries = entries;
-  this->NumberOfIsolatedParticles = isolated;
+  this->NumberOfIsolatedParticles = CountIsolated(search, internals.Ranges);
   this->NumberOfTruncatedLists = std::max(truncated, cut);
   if (truncated > 0)
   {
-    warning << truncated << " of " << n << " particles have more than MaximumNumberOfNeighbors ("
-            << maxNeighbors << ") particles within their influence radius (InfluenceFactor " << k
-            << (radiusFactor < 1.0 ? "; so crowded that only the nearest were searched" : "")
-            << "): their " << maxNeighbors
-            << " nearest are used; the surface there is approximate. Lower InfluenceFactor or "
-               "raise MaximumNumberOfNeighbors (at most 255). ";
+    DescribeTruncation(warning, search, truncated);
   }
   this->WarnOnChange(warning.str(), internals.LastListWarning);
   this->LastListBuildSeconds = vtkTimerLog::GetUniversalTime() - start;

@@ -146,35 +146,54 @@ void vtkParticleFragmentLists::PrepareProgram(unsigned int handle)
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleFragmentLists::Render(
-  vtkOpenGLRenderWindow* context, vtkTextureObject* accumulation, const std::function<void()>& draw)
+// What the stages of one Render() share.
+struct vtkParticleFragmentLists::vtkFrame
+{
+  int Width = 0; // of the accumulation image
+  int Height = 0;
+  std::size_t HeadBytes = 0;     // of the head array
+  long long MaximumCapacity = 0; // the largest pool (nodes) within the budget
+  bool Grown = false;            // the pool grew in this frame
+};
+
+//------------------------------------------------------------------------------
+double vtkParticleFragmentLists::GetAllocatedListBytes(const vtkFrame& frame)
+{
+  return 2.0 * static_cast<double>(frame.HeadBytes) + this->Internals->Capacity * NodeBytes;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleFragmentLists::AllocateNodes(const vtkFrame& frame, long long capacity)
 {
   vtkInternals& internals = *this->Internals;
-  const int width = accumulation ? static_cast<int>(accumulation->GetWidth()) : 0;
-  const int height = accumulation ? static_cast<int>(accumulation->GetHeight()) : 0;
-  this->LastNumberOfFragments = 0;
-  this->LastNumberOfBands = 0;
-  this->LastNumberOfIncompletePixels = 0;
-  this->LastNumberOfDroppedFragments = 0;
-  this->LastNumberOfDeferredPixels = 0;
-  if (!context || width <= 0 || height <= 0)
+  capacity = std::max<long long>(1, std::min(capacity, frame.MaximumCapacity));
+  while (capacity >= frame.Width)
   {
-    return false;
+    if (vtkParticleComputeProgram::AllocateStorage(
+          internals.Nodes, static_cast<std::size_t>(capacity * NodeBytes)))
+    {
+      internals.Capacity = capacity;
+      return true;
+    }
+    capacity /= 2; // out of GPU memory: try with less
   }
-  if (internals.Context && internals.Context != context)
-  {
-    internals.Release(internals.Context);
-    context->MakeCurrent();
-  }
-  internals.Context = context;
-  internals.ContextAddress = context;
+  internals.Capacity = 0;
+  return false;
+}
 
-  // the head array, and the pool within the budget
+//------------------------------------------------------------------------------
+bool vtkParticleFragmentLists::AllocateLists(vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const int width = frame.Width;
+  const int height = frame.Height;
   const double budget = this->MemoryBudget * 1048576.0;
   const std::size_t headBytes = static_cast<std::size_t>(width) * height * sizeof(GLuint);
+  frame.HeadBytes = headBytes;
   // heads and the deferred pixels: 4 bytes per pixel each
   const long long maximumCapacity = static_cast<long long>(std::min(
     (budget - 2.0 * static_cast<double>(headBytes)) / NodeBytes, static_cast<double>(INT32_MAX)));
+  frame.MaximumCapacity = maximumCapacity;
   if (maximumCapacity < width)
   {
     // said once per view size and budget, not every frame
@@ -205,37 +224,25 @@ bool vtkParticleFragmentLists::Render(
     internals.HeadBytes = headBytes;
   }
   internals.Width = width;
-  auto allocatedBytes = [&]()
-  { return 2.0 * static_cast<double>(headBytes) + internals.Capacity * NodeBytes; };
-  auto allocateNodes = [&](long long capacity)
-  {
-    capacity = std::max<long long>(1, std::min(capacity, maximumCapacity));
-    while (capacity >= width)
-    {
-      if (vtkParticleComputeProgram::AllocateStorage(
-            internals.Nodes, static_cast<std::size_t>(capacity * NodeBytes)))
-      {
-        internals.Capacity = capacity;
-        return true;
-      }
-      capacity /= 2; // out of GPU memory: try with less
-    }
-    internals.Capacity = 0;
-    return false;
-  };
   if (internals.Capacity == 0 || internals.Capacity > maximumCapacity)
   {
     const double pixels = static_cast<double>(width) * height;
-    if (!allocateNodes(static_cast<long long>(
-          std::min(static_cast<double>(maximumCapacity), InitialNodesPerPixel * pixels))))
+    if (!this->AllocateNodes(frame,
+          static_cast<long long>(
+            std::min(static_cast<double>(maximumCapacity), InitialNodesPerPixel * pixels))))
     {
       vtkErrorMacro(<< "Could not allocate GPU memory for the fragment lists.");
       return false;
     }
   }
-  this->AllocatedBytes = allocatedBytes();
+  this->AllocatedBytes = this->GetAllocatedListBytes(frame);
+  return true;
+}
 
-  // the resolve programs (first and second pass), for the density model
+//------------------------------------------------------------------------------
+bool vtkParticleFragmentLists::BuildResolvePrograms(vtkOpenGLRenderWindow* context)
+{
+  vtkInternals& internals = *this->Internals;
   vtkParticleComputeProgram* resolve = internals.Resolve;
   vtkParticleComputeProgram* resolveDeferred = internals.ResolveDeferred;
   if (internals.ResolveModel != this->DensityModel)
@@ -259,40 +266,81 @@ bool vtkParticleFragmentLists::Render(
     vtkErrorMacro(<< "The fragment lists' resolve programs could not be built.");
     return false;
   }
+  return true;
+}
 
-  vtkOpenGLState* ostate = context->GetState();
-  vtkOpenGLState::ScopedglEnableDisable scissorSaved(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorBoxSaved(ostate);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
+//------------------------------------------------------------------------------
+long long vtkParticleFragmentLists::AppendBand(vtkOpenGLState* ostate,
+  const std::function<void()>& draw, const vtkFrame& frame, const std::pair<int, int>& band)
+{
+  vtkInternals& internals = *this->Internals;
   const GLuint zeros[3] = { 0, 0, 0 };
-  vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(zeros), zeros);
+  vtkParticleComputeProgram::ClearStorage(internals.Heads, frame.HeadBytes, 0xffffffffu);
+  // the band's fragment and deferred-pixel counts (the incomplete pixels add up over bands)
+  vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(GLuint), zeros);
+  vtkParticleComputeProgram::UploadStorage(
+    internals.Counters, 2 * sizeof(GLuint), sizeof(GLuint), zeros);
+  ostate->vtkglScissor(0, band.first, frame.Width, band.second - band.first);
+  draw();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint counters[3] = { 0, 0, 0 };
+  vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
+  return counters[0];
+}
 
-  bool grown = false;
-  std::vector<std::pair<int, int>> bands{ { 0, height } };
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::ResolveBand(
+  vtkTextureObject* accumulation, const vtkFrame& frame, const std::pair<int, int>& band)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkParticleComputeProgram* resolve = internals.Resolve;
+  vtkParticleComputeProgram* resolveDeferred = internals.ResolveDeferred;
+  const int width = frame.Width;
+  resolve->Use();
+  this->PrepareProgram(resolve->GetHandle());
+  resolve->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
+  resolve->SetUniform2i("prBandOrigin", 0, band.first);
+  resolve->SetUniform2i("prBandSize", width, band.second - band.first);
+  glBindImageTexture(
+    0, static_cast<GLuint>(accumulation->GetHandle()), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  resolve->Dispatch(static_cast<unsigned int>((width + 7) / 8),
+    static_cast<unsigned int>((band.second - band.first + 7) / 8));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint counters[3] = { 0, 0, 0 };
+  vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
+  this->LastNumberOfDeferredPixels += counters[2];
+  if (counters[2] > 0)
+  {
+    resolveDeferred->Use();
+    this->PrepareProgram(resolveDeferred->GetHandle());
+    resolveDeferred->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
+    resolveDeferred->SetUniformi("prDeferredCount", static_cast<int>(counters[2]));
+    resolveDeferred->Dispatch(static_cast<unsigned int>((counters[2] + 63) / 64));
+  }
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  vtkParticleComputeProgram::UseNone();
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleFragmentLists::DrawBands(vtkOpenGLState* ostate, vtkTextureObject* accumulation,
+  const std::function<void()>& draw, vtkFrame& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  std::vector<std::pair<int, int>> bands{ { 0, frame.Height } };
   while (!bands.empty())
   {
     const std::pair<int, int> band = bands.back();
     bands.pop_back();
-    vtkParticleComputeProgram::ClearStorage(internals.Heads, headBytes, 0xffffffffu);
-    // the band's fragment and deferred-pixel counts (the incomplete pixels add up over bands)
-    vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(GLuint), zeros);
-    vtkParticleComputeProgram::UploadStorage(
-      internals.Counters, 2 * sizeof(GLuint), sizeof(GLuint), zeros);
-    ostate->vtkglScissor(0, band.first, width, band.second - band.first);
-    draw();
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint counters[3] = { 0, 0, 0 };
-    vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
-    const long long count = counters[0];
+    const long long count = this->AppendBand(ostate, draw, frame, band);
     if (count > internals.Capacity)
     {
       // more room within the budget (once per frame), else bands of half the height
-      if (!grown && internals.Capacity < maximumCapacity)
+      if (!frame.Grown && internals.Capacity < frame.MaximumCapacity)
       {
-        grown = true;
-        if (allocateNodes(count + count / 4 + 1024))
+        frame.Grown = true;
+        if (this->AllocateNodes(frame, count + count / 4 + 1024))
         {
-          this->AllocatedBytes = allocatedBytes();
+          this->AllocatedBytes = this->GetAllocatedListBytes(frame);
           bands.push_back(band);
           continue;
         }
@@ -314,29 +362,15 @@ bool vtkParticleFragmentLists::Render(
 
     // resolve the band into the accumulation image: every pixel with a short list, then the
     // pixels with longer ones
-    resolve->Use();
-    this->PrepareProgram(resolve->GetHandle());
-    resolve->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
-    resolve->SetUniform2i("prBandOrigin", 0, band.first);
-    resolve->SetUniform2i("prBandSize", width, band.second - band.first);
-    glBindImageTexture(
-      0, static_cast<GLuint>(accumulation->GetHandle()), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    resolve->Dispatch(static_cast<unsigned int>((width + 7) / 8),
-      static_cast<unsigned int>((band.second - band.first + 7) / 8));
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    vtkParticleComputeProgram::DownloadStorage(internals.Counters, 0, sizeof(counters), counters);
-    this->LastNumberOfDeferredPixels += counters[2];
-    if (counters[2] > 0)
-    {
-      resolveDeferred->Use();
-      this->PrepareProgram(resolveDeferred->GetHandle());
-      resolveDeferred->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
-      resolveDeferred->SetUniformi("prDeferredCount", static_cast<int>(counters[2]));
-      resolveDeferred->Dispatch(static_cast<unsigned int>((counters[2] + 63) / 64));
-    }
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    vtkParticleComputeProgram::UseNone();
+    this->ResolveBand(accumulation, frame, band);
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::FinishLists()
+{
+  vtkInternals& internals = *this->Internals;
   // the accumulation is read by texture fetches and blending afterwards
   glMemoryBarrier(
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -348,7 +382,12 @@ bool vtkParticleFragmentLists::Render(
   {
     vtkParticleComputeProgram::BindStorage(binding, nullptr);
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::WarnOfLosses()
+{
+  vtkInternals& internals = *this->Internals;
   if (this->LastNumberOfDroppedFragments > 0 && !internals.DroppedWarned)
   {
     vtkWarningMacro(<< this->LastNumberOfDroppedFragments
@@ -366,6 +405,59 @@ bool vtkParticleFragmentLists::Render(
                        "spheres that found no room were left out of the exact compositing.");
   }
   internals.IncompleteWarned = this->LastNumberOfIncompletePixels > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleFragmentLists::Render(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* accumulation, const std::function<void()>& draw)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkFrame frame;
+  frame.Width = accumulation ? static_cast<int>(accumulation->GetWidth()) : 0;
+  frame.Height = accumulation ? static_cast<int>(accumulation->GetHeight()) : 0;
+  this->LastNumberOfFragments = 0;
+  this->LastNumberOfBands = 0;
+  this->LastNumberOfIncompletePixels = 0;
+  this->LastNumberOfDroppedFragments = 0;
+  this->LastNumberOfDeferredPixels = 0;
+  if (!context || frame.Width <= 0 || frame.Height <= 0)
+  {
+    return false;
+  }
+  if (internals.Context && internals.Context != context)
+  {
+    internals.Release(internals.Context);
+    context->MakeCurrent();
+  }
+  internals.Context = context;
+  internals.ContextAddress = context;
+
+  // the head array, and the pool within the budget
+  if (!this->AllocateLists(frame))
+  {
+    return false;
+  }
+  // the resolve programs (first and second pass), for the density model
+  if (!this->BuildResolvePrograms(context))
+  {
+    return false;
+  }
+
+  vtkOpenGLState* ostate = context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissorSaved(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBoxSaved(ostate);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  const GLuint zeros[3] = { 0, 0, 0 };
+  vtkParticleComputeProgram::UploadStorage(internals.Counters, 0, sizeof(zeros), zeros);
+
+  // the lists of each band drawn and resolved (the whole view when the pool holds it)
+  if (!this->DrawBands(ostate, accumulation, draw, frame))
+  {
+    return false;
+  }
+  // the incomplete pixels counted, the lists unbound; what was left out said
+  this->FinishLists();
+  this->WarnOfLosses();
   return true;
 }
 

@@ -46,8 +46,10 @@
 
 #include <functional> // for std::function
 #include <string>     // for std::string
+#include <utility>    // for std::pair
 
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
@@ -139,6 +141,24 @@ private:
 
   class vtkInternals;
   vtkInternals* Internals;
+
+  // the stages of Render(), sharing one frame's sizes and budget: the head array and the node
+  // pool allocated (the pool grown, its bytes), the resolve programs built, each band's
+  // fragments appended and resolved (in as many bands as the pool needs), the lists finished
+  // (incomplete pixels counted, buffers unbound), the losses warned of
+  struct vtkFrame;
+  bool AllocateLists(vtkFrame& frame);
+  bool AllocateNodes(const vtkFrame& frame, long long capacity);
+  double GetAllocatedListBytes(const vtkFrame& frame);
+  bool BuildResolvePrograms(vtkOpenGLRenderWindow* context);
+  bool DrawBands(vtkOpenGLState* ostate, vtkTextureObject* accumulation,
+    const std::function<void()>& draw, vtkFrame& frame);
+  long long AppendBand(vtkOpenGLState* ostate, const std::function<void()>& draw,
+    const vtkFrame& frame, const std::pair<int, int>& band);
+  void ResolveBand(
+    vtkTextureObject* accumulation, const vtkFrame& frame, const std::pair<int, int>& band);
+  void FinishLists();
+  void WarnOfLosses();
 };
 
 #endif
