@@ -56,7 +56,10 @@ class Cmd:
 
 class Suite:
     def __init__(self, name, interpreter, script, measures, peer, outputs, plot, full, quick,
-                 quick_text, positional=False, needs=(), time_text=""):
+                 quick_text, positional=False, needs=(), time_text="", inputs=()):
+        # needs: what the build must have; inputs: what an earlier run must have left there
+        # (checked when the suite runs, not by --dry-run or --check)
+        self.inputs = inputs
         self.name, self.interpreter, self.script = name, interpreter, script
         self.measures, self.peer, self.outputs, self.plot = measures, peer, outputs, plot
         self.full, self.quick, self.quick_text = full, quick, quick_text
@@ -92,6 +95,12 @@ def bash(script, c, env=None):
 
 
 # ---- the suites -------------------------------------------------------------------------------
+def margins_commands(c):
+    return [Cmd([PY, os.path.join(TOP, "Scripts", "image_test_margins.py"),
+                 os.path.join(c.build, "Testing", "Temporary", "LastTest.log"), "--csv",
+                 os.path.join(c.out, "image_test_margins.csv")], display=False, main=True)]
+
+
 def sphere_full(c):
     return [bash("run_sphere_core.sh", c)]
 
@@ -324,16 +333,9 @@ SUITES = [
           "- (the must-fail pictures)",
           ["image_test_margins.csv (the _debian13/_unstable variants come from those platforms' CI)"],
           "-",
-          lambda c: [Cmd([PY, os.path.join(TOP, "Scripts", "image_test_margins.py"),
-                          os.path.join(c.build, "Testing", "Temporary", "LastTest.log"), "--csv",
-                          os.path.join(c.out, "image_test_margins.csv")], display=False,
-                         main=True)],
-          lambda c: [Cmd([PY, os.path.join(TOP, "Scripts", "image_test_margins.py"),
-                          os.path.join(c.build, "Testing", "Temporary", "LastTest.log"), "--csv",
-                          os.path.join(c.out, "image_test_margins.csv")], display=False,
-                         main=True)],
+          margins_commands, margins_commands,
           "the same (it only reads <build>/Testing/Temporary/LastTest.log; run ctest first)",
-          needs=[os.path.join("Testing", "Temporary", "LastTest.log")]),
+          inputs=[os.path.join("Testing", "Temporary", "LastTest.log")]),
 ]
 BY_NAME = {s.name: s for s in SUITES}
 TOOLS = [("make_particles.py", "synthetic lattice / gas / clustered data sets (used by the suites)"),
@@ -475,6 +477,10 @@ def main():
         sys.exit("run.py: the build %s lacks %s (needed by %s): build it with Scripts/build.sh "
                  "(PARTICLERENDERING_WRAP_PYTHON on for the Python suites)"
                  % (build, ", ".join(missing), suite.name))
+    absent = [p for p in suite.inputs if not os.path.exists(os.path.join(build, p))]
+    if absent and not args.dry_run:
+        sys.exit("run.py: %s reads %s from an earlier run, and the build %s has none: run ctest "
+                 "there first (bash Scripts/run_tests.sh)" % (suite.name, ", ".join(absent), build))
     if args.out:
         out = os.path.abspath(args.out)
     elif args.quick:
