@@ -159,22 +159,15 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
   state.push_back(this->GenerationMode);
   // distributed rendering: the volume of all processes' particles, summed in the pipeline
-  vtkParticleDensityVolume* distributed = particles.size() == 1
-    ? vtkDensityVolumeAOPass::GetDistributedVolume(particles.front().first)
-    : nullptr;
-  state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
-  state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
+  auto* distributed = vtkParticleDensityVolume::SafeDownCast(
+    this->FindDistributedVolume(particles, vtkDensityVolumeAOPass::DISTRIBUTED_VOLUME(), state));
   if (!this->NeedsBuild(state))
   {
     return; // built already (or failed for the same input: no retry, no repeated message)
   }
-  if (particles.empty())
+  if (!this->CheckParticleProps(particles, vtkDensityVolumeAOPass::DISTRIBUTED_VOLUME(),
+        "no ambient occlusion to compute", "density volume"))
   {
-    if (this->WarnWithoutParticles)
-    {
-      vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
-                         "in the renderer: no ambient occlusion to compute.");
-    }
     return;
   }
 
@@ -192,11 +185,6 @@ void vtkDensityVolumeAOPass::UpdateVolume(const vtkRenderState* s)
       ++this->NumberOfVolumeBuilds;
     }
     return;
-  }
-  if (particles.size() > 1 && vtkDensityVolumeAOPass::GetDistributedVolume(particles.front().first))
-  {
-    vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
-                       "density volume holds only its own particles.");
   }
 
   // voxelise every particle prop into the volume and its texture (vtkParticleDensityVolume)

@@ -55,6 +55,39 @@ void vtkParticleVolumeAOPass::GatherParticleProps(
 }
 
 //------------------------------------------------------------------------------
+vtkObject* vtkParticleVolumeAOPass::FindDistributedVolume(
+  const ParticleProps& props, vtkInformationObjectBaseKey* key, std::vector<double>& state)
+{
+  vtkObject* distributed =
+    props.size() == 1 ? vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key) : nullptr;
+  state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
+  state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
+  return distributed;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleVolumeAOPass::CheckParticleProps(const ParticleProps& props,
+  vtkInformationObjectBaseKey* key, const char* without, const char* volumeName)
+{
+  if (props.empty())
+  {
+    if (this->WarnWithoutParticles)
+    {
+      vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
+                         "in the renderer: "
+                      << without << ".");
+    }
+    return false;
+  }
+  if (props.size() > 1 && vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key))
+  {
+    vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
+                    << volumeName << " holds only its own particles.");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleVolumeAOPass::NeedsBuild(const std::vector<double>& state)
 {
   if (state == this->BuiltState && this->Attempted)

@@ -106,6 +106,22 @@ protected:
   void ForgetBuild() { this->Attempted = false; }
 
   /**
+   * Distributed rendering: the volume of all processes' particles that the only particle prop
+   * carries under `key` (nullptr without one, or with several props), its address and
+   * modification time appended to `state`.
+   */
+  vtkObject* FindDistributedVolume(
+    const ParticleProps& props, vtkInformationObjectBaseKey* key, std::vector<double>& state);
+
+  /**
+   * False, with a warning (WarnWithoutParticles) ending in `without`, when there is no particle
+   * prop; with several props of which the first carries a volume under `key`, warns that each
+   * process's `volumeName` holds only its own particles.
+   */
+  bool CheckParticleProps(const ParticleProps& props, vtkInformationObjectBaseKey* key,
+    const char* without, const char* volumeName);
+
+  /**
    * For SetShaderParameters: true when the program is a particle mapper's that samples the
    * volume texture through the sampler `sampler` and the volume is valid; then the sampler is
    * set to the texture's unit. False: nothing of this pass to set.

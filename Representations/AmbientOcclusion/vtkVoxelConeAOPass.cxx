@@ -91,29 +91,16 @@ void vtkVoxelConeAOPass::UpdateVolume(const vtkRenderState* s)
   state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(internals.Volume.Get())));
   state.push_back(static_cast<double>(internals.Volume->GetMTime()));
   // distributed rendering: level 0 of all processes' spheres, summed in the pipeline
-  vtkParticleAmbientVolume* distributed = particles.size() == 1
-    ? vtkVoxelConeAOPass::GetDistributedVolume(particles.front().first)
-    : nullptr;
-  state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
-  state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
+  auto* distributed = vtkParticleAmbientVolume::SafeDownCast(
+    this->FindDistributedVolume(particles, vtkVoxelConeAOPass::DISTRIBUTED_VOLUME(), state));
   if (!this->NeedsBuild(state))
   {
     return; // built already (or failed for the same input: no retry, no repeated message)
   }
-  if (particles.empty())
+  if (!this->CheckParticleProps(particles, vtkVoxelConeAOPass::DISTRIBUTED_VOLUME(),
+        "no voxel cone tracing", "ambient volume"))
   {
-    if (this->WarnWithoutParticles)
-    {
-      vtkWarningMacro(<< "No visible props with a vtkParticleSphereMapper (or subclass) and input "
-                         "in the renderer: no voxel cone tracing.");
-    }
     return;
-  }
-  if (!distributed && particles.size() > 1 &&
-    vtkVoxelConeAOPass::GetDistributedVolume(particles.front().first))
-  {
-    vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
-                       "ambient volume holds only its own particles.");
   }
   vtkParticleAmbientVolume* volume = internals.Volume;
   volume->BeginParticles();
