@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Checks the layering of ParticleRendering's C++ modules (issue "One shape per technique").
 
-    python3 Scripts/check_layering.py [REPRESENTATIONS_DIR]   # check the tree (default: ours)
-    python3 Scripts/check_layering.py --self-test              # must-fail cases
+    python3 Scripts/check_layering.py [REPRESENTATIONS_DIR [SHADERS_DIR]]  # check (default: ours)
+    python3 Scripts/check_layering.py --self-test                         # must-fail cases
 
 The modules are the folders of Representations/, one vtk.module each:
   layer 0  Core                                       includes no other module of ours
@@ -13,7 +13,12 @@ The modules are the folders of Representations/, one vtk.module each:
 Checked, from the #include "..." lines of every .h, .cxx and .cxx.in and from the vtk.module files:
   1. no file includes a header of a module its layer may not see (above);
   2. no vtk.module names a ParticleRendering module its layer may not see;
-  3. the include graph between classes (a class = its .h and .cxx) has no cycle.
+  3. the include graph between classes (a class = its .h and .cxx) has no cycle;
+  4. every folder of Shaders/ is a module's (its GLSL, embedded in its library), and names are
+     unique across folders;
+  5. a module's GLSL includes (`//PR::Include Name`) only GLSL its layer may see, and so does its
+     C++ (the `//PR::Include Name` lines it inserts and the names it passes to
+     vtkParticleShaders::Get): a technique's shaders are registered only where its library is.
 Exit status 0 when the tree is clean, 1 with one line per violation otherwise.
 """
 import os
@@ -24,6 +29,9 @@ import tempfile
 CORE = "Core"
 INTEGRATION = {"ParaView"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+GLSL_INCLUDE = re.compile(r"^\s*//PR::Include (\w+)", re.M)
+CXX_GLSL_INCLUDE = re.compile(r'(?:"|\\n)//PR::Include (\w+)')  # in a string literal
+GLSL_GET = re.compile(r'vtkParticleShaders::Get\(\s*"(\w+)"')
 SOURCE_SUFFIXES = (".h", ".cxx", ".cxx.in")
 
 
@@ -53,6 +61,61 @@ def scan(root):
             with open(os.path.join(folder, name), errors="replace") as f:
                 classes.setdefault(cls, set()).update(INCLUDE.findall(f.read()))
     return modules, owner, declared
+
+
+def scan_glsl(root, shaders):
+    """Returns {glsl name: folder} of SHADERS_DIR, [duplicate names], and per module of root the
+    GLSL names its C++ uses: {module: {(file, name)}}, and per GLSL file its includes."""
+    folder_of, duplicates, includes = {}, [], {}
+    for folder in sorted(os.listdir(shaders)) if os.path.isdir(shaders) else []:
+        path = os.path.join(shaders, folder)
+        if not os.path.isdir(path):
+            continue
+        for name in sorted(os.listdir(path)):
+            if not name.endswith(".glsl"):
+                continue
+            glsl = name[: -len(".glsl")]
+            if glsl in folder_of:
+                duplicates.append(f"{folder}/{name} (also in {folder_of[glsl]}/)")
+            folder_of[glsl] = folder
+            with open(os.path.join(path, name), errors="replace") as f:
+                includes[(folder, glsl)] = set(GLSL_INCLUDE.findall(f.read()))
+    used = {}
+    for module in sorted(os.listdir(root)):
+        folder = os.path.join(root, module)
+        if not os.path.isfile(os.path.join(folder, "vtk.module")):
+            continue
+        for name in sorted(os.listdir(folder)):
+            if class_name(name) is None:
+                continue
+            with open(os.path.join(folder, name), errors="replace") as f:
+                text = f.read()
+            for glsl in CXX_GLSL_INCLUDE.findall(text) + GLSL_GET.findall(text):
+                used.setdefault(module, set()).add((name, glsl))
+    return folder_of, duplicates, includes, used
+
+
+def check_glsl(root, shaders, modules):
+    folder_of, duplicates, includes, used = scan_glsl(root, shaders)
+    problems = [f"GLSL name twice: {d}" for d in duplicates]
+    for folder in sorted(set(folder_of.values())):
+        if folder not in modules:
+            problems.append(f"Shaders/{folder}/ is no module's folder")
+    for (folder, glsl), names in sorted(includes.items()):
+        for name in sorted(names):
+            other = folder_of.get(name)
+            if other is None:
+                problems.append(f"Shaders/{folder}/{glsl}.glsl includes unknown {name}")
+            elif not visible(folder, other):
+                problems.append(f"Shaders/{folder}/{glsl}.glsl includes {other}/{name}.glsl")
+    for module, pairs in sorted(used.items()):
+        for file_name, name in sorted(pairs):
+            other = folder_of.get(name)
+            if other is None:
+                problems.append(f"{module}/{file_name} uses unknown GLSL {name}")
+            elif not visible(module, other):
+                problems.append(f"{module}/{file_name} uses GLSL {other}/{name}.glsl")
+    return problems
 
 
 def visible(module, other):
@@ -90,7 +153,7 @@ def find_cycle(graph):
     return None
 
 
-def check(root):
+def check(root, shaders=None):
     modules, owner, declared = scan(root)
     problems = []
     graph = {}
@@ -111,6 +174,8 @@ def check(root):
     cycle = find_cycle(graph)
     if cycle:
         problems.append("include cycle: " + " -> ".join(cycle))
+    if shaders is not None:
+        problems += check_glsl(root, shaders, modules)
     return problems, modules
 
 
@@ -136,6 +201,9 @@ def self_test():
         "Other/vtkO.cxx": '#include "vtkO.h"\n',
         "ParaView/vtk.module": "NAME\n  ParticleRendering::ParaView\n",
         "ParaView/vtkP.cxx": '#include "vtkT.h"\n#include "vtkO.h"\n',
+        "Shaders/Core/A.glsl": "",
+        "Shaders/Tech/T.glsl": "//PR::Include A\n",
+        "Shaders/Other/O.glsl": "//PR::Include A\n",
     }
     cases = {
         "clean": ({}, None),
@@ -148,10 +216,22 @@ def self_test():
         "cycle inside the core": (
             {"Core/vtkB.h": '#include "vtkA.h"\n', "Core/vtkA.cxx": '#include "vtkB.h"\n'},
             "include cycle"),
+        "core shader includes a technique's": (
+            {"Shaders/Core/A.glsl": "//PR::Include T\n"}, "Shaders/Core/A.glsl includes Tech/T.glsl"),
+        "technique shader includes another's": (
+            {"Shaders/Tech/T.glsl": "//PR::Include O\n"}, "Shaders/Tech/T.glsl includes Other/O.glsl"),
+        "technique C++ gets another's shader": (
+            {"Tech/vtkT.cxx": 'auto s = vtkParticleShaders::Get("O");\n'},
+            "Tech/vtkT.cxx uses GLSL Other/O.glsl"),
+        "core C++ inserts a technique's include": (
+            {"Core/vtkA.cxx": 'hooks.Insert("//PR::Include T");\n'}, "Core/vtkA.cxx uses GLSL Tech/T.glsl"),
+        "shader folder of no module": ({"Shaders/Gone/G.glsl": ""}, "Shaders/Gone/ is no module's folder"),
+        "one name in two folders": ({"Shaders/Other/T.glsl": ""}, "GLSL name twice"),
     }
     failures = 0
     for name, (changes, expected) in cases.items():
-        problems, _ = check(tree({**base, **changes}))
+        root = tree({**base, **changes})
+        problems, _ = check(root, os.path.join(root, "Shaders"))
         ok = (not problems) if expected is None else any(expected in p for p in problems)
         print(f"self-test {name}: {'ok' if ok else 'WRONG'} {problems}")
         failures += not ok
@@ -161,13 +241,15 @@ def self_test():
 def main(argv):
     if "--self-test" in argv:
         return self_test()
-    root = argv[1] if len(argv) > 1 else os.path.join(
-        os.path.dirname(os.path.abspath(__file__)), "..", "Representations")
-    problems, modules = check(root)
+    top = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    root = argv[1] if len(argv) > 1 else os.path.join(top, "Representations")
+    shaders = argv[2] if len(argv) > 2 else os.path.join(top, "Shaders")
+    problems, modules = check(root, shaders)
     for problem in problems:
         print("layering:", problem)
     counted = ", ".join(f"{m} ({len(c)} classes)" for m, c in modules.items())
-    print(f"layering: {len(problems)} violations in {counted}")
+    glsl = sum(1 for _, _, files in os.walk(shaders) for f in files if f.endswith(".glsl"))
+    print(f"layering: {len(problems)} violations in {counted}; {glsl} GLSL files")
     return 1 if problems else 0
 
 

@@ -20,8 +20,8 @@
  * component choosing the side). The paper's fetch includes the sphere's own density, which sits
  * in the voxels around its centre: an isolated sphere darkens itself, and with voxels finer than
  * the spheres every sphere finds its own volume. Our choice: each fetch subtracts the sphere's
- * own splat share (Shaders/DensityVolumeOwn.glsl; exact below the volume's clamp to 1, grid
- * boundaries excepted), so A measures the other particles only, as Eq. 3 intends.
+ * own splat share (Shaders/AmbientOcclusion/DensityVolumeOwn.glsl; exact below the volume's clamp
+ * to 1, grid boundaries excepted), so A measures the other particles only, as Eq. 3 intends.
  *
  * The mappers know nothing about AO beyond their //PR::AmbientOcclusion::Impl hook: the pass
  * fills it through vtkOpenGLRenderPass::PostReplaceShaderValues and binds the volume and the

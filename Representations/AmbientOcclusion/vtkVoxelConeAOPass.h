@@ -12,7 +12,7 @@
  * opaque spheres and the entry point of every emission-absorption glyph (its L_RV of Eq. 2,
  * surface and volume part, is occluded; its alpha_A L_A is emitted with its opacity, see
  * vtkTransparentSphereMapper) -- traces ConeCount cones around its normal through it (Sec. 5.2,
- * Shaders/VoxelConeTrace.glsl):
+ * Shaders/AmbientOcclusion/VoxelConeTrace.glsl):
  *
  *   A_O = sum_k w_k tau_k   (Eq. 5: the transmittance along the cones, not binary visibility)
  *   L_A = sum_k w_k L_k     (Eq. 6: the ambient emission that reaches the point)

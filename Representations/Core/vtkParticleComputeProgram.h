@@ -22,7 +22,7 @@
  * (at least 65535) is split into a two-dimensional grid of x' * y' >= x groups. A shader that
  * may receive more than 65535 groups must therefore compute its linear group index as
  * `gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x` (prLinearGroupID() of
- * Shaders/ComputeCommon.glsl) and ignore the groups at or above x (pass x as a uniform).
+ * Shaders/Core/ComputeCommon.glsl) and ignore the groups at or above x (pass x as a uniform).
  *
  * @sa vtkParticleDepthSort vtkParticleShaders
  */

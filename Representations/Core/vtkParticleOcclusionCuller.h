@@ -109,7 +109,7 @@ public:
 
   /**
    * Draw the particles with the caller's program and vertex array bound. The program's geometry
-   * stage includes Shaders/OcclusionCull.glsl and calls prSphereIsOccluded(): Draw() sets its
+   * stage includes Shaders/Core/OcclusionCull.glsl and calls prSphereIsOccluded(): Draw() sets its
    * uniforms (the block map of the last depth read-back) so that single hidden spheres of visible
    * cells are dropped as well, and switches the test off again at the end. wcdcTransposed: the
    * world-to-clip matrix the program's camera uniforms were made from, as vtkOpenGLCamera's

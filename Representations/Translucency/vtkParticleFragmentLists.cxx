@@ -23,7 +23,7 @@ vtkStandardNewMacro(vtkParticleFragmentLists);
 
 namespace
 {
-// bytes per node (PR_LIST_NODE_UINTS words of Shaders/FragmentListBuffers.glsl)
+// bytes per node (PR_LIST_NODE_UINTS words of Shaders/Translucency/FragmentListBuffers.glsl)
 const double NodeBytes = 40.0;
 // the storage binding points of the lists (the sort uses 0-3 and rebinds them anyway; OpenGL
 // guarantees 8)

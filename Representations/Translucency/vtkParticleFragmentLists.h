@@ -7,14 +7,14 @@
  * EXACT_OVERLAP mode; beyond Staib et al. 2015, who name intersecting spheres as their method's
  * limitation). Instead of compositing each sphere whole in a depth order, every translucent
  * fragment appends its sphere's visible chord (start, end, impact parameter, optical-depth
- * scale, emitted colour; Shaders/FragmentListAppend.glsl) to a linked list of its pixel in
- * shader storage (an A-buffer), and one compute pass (Shaders/FragmentListResolve.glsl)
- * integrates each pixel's ray through the summed densities: between consecutive segment
- * boundaries the set of spheres is fixed, the optical depths are the closed forms of Eq. 13-19
- * (EmissionAbsorption.glsl) summed, and the emitted colour is the density-weighted mix of the
- * spheres' colours (exact for constant densities, Gauss-Legendre quadrature of the weights for
- * squared-distance densities; the opacity is exact in both). Where nothing overlaps the result
- * is the sorted compositing's, and no sort is needed.
+ * scale, emitted colour; Shaders/Translucency/FragmentListAppend.glsl) to a linked list of its
+ * pixel in shader storage (an A-buffer), and one compute pass
+ * (Shaders/Translucency/FragmentListResolve.glsl) integrates each pixel's ray through the summed
+ * densities: between consecutive segment boundaries the set of spheres is fixed, the optical depths
+ * are the closed forms of Eq. 13-19 (EmissionAbsorption.glsl) summed, and the emitted colour is the
+ * density-weighted mix of the spheres' colours (exact for constant densities, Gauss-Legendre
+ * quadrature of the weights for squared-distance densities; the opacity is exact in both). Where
+ * nothing overlaps the result is the sorted compositing's, and no sort is needed.
  *
  * Memory is bounded: two per-pixel arrays (heads and the second pass's pixels, 4 bytes each)
  * and a node pool of 40 bytes per fragment within MemoryBudget (MiB, default 256: 6.6 million

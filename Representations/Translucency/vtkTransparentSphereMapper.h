@@ -35,8 +35,8 @@
  * from the eye position cancels all its digits with the camera 1e7 radii away. The per-particle
  * optical depth kappa_i = -ln(1 - Theta_i) is computed in double on the CPU (Theta_i = 1 - 1e-7
  * is not a float), and Theta = -expm1(-kappa_i I / I_max) uses series-based expm1/log1p
- * (Shaders/EmissionAbsorption.glsl), so the relative error stays below 1e-5 from Theta_i = 1e-6
- * to 1 - 1e-7 and for grazing rays.
+ * (Shaders/Translucency/EmissionAbsorption.glsl), so the relative error stays below 1e-5 from
+ * Theta_i = 1e-6 to 1 - 1e-7 and for grazing rays.
  *
  * Shading (Eq. 2): L_RV = Theta (t_n, t_f) ((1 - VolumeMix) L_R(x_0) + VolumeMix c_i), where
  * L_R is the core's lit surface colour at the entry point x_0 (VTK's lights and material:

@@ -308,7 +308,7 @@ void CheckDrawWithIndices(vtkParticleDepthSort* sort, std::size_t n)
 }
 
 // Dispatch(x) above the x limit is split into a 2D grid; the linear group id (as
-// prLinearGroupID() of Shaders/ComputeCommon.glsl) numbers the groups.
+// prLinearGroupID() of Shaders/Core/ComputeCommon.glsl) numbers the groups.
 void CheckDispatchSplit(vtkOpenGLRenderWindow* context)
 {
   unsigned int limits[3];

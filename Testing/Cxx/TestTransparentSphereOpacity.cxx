@@ -1,6 +1,7 @@
 // Accuracy of the emission-absorption opacity of vtkTransparentSphereMapper, on the GPU, against
 // double precision (paper Eq. 12-19 and the hollow maxima):
-// 1. The GLSL functions themselves (Shaders/EmissionAbsorption.glsl, run in a compute shader):
+// 1. The GLSL functions themselves (Shaders/Translucency/EmissionAbsorption.glsl, run in a compute
+// shader):
 //    prLog1p and prOneMinusExpNeg over their whole range; the segment opacity for both density
 //    models, solid and hollow, Theta_max from 1e-6 to 1 - 1e-7, impact parameters from 0 to
 //    1 - 1e-6 radii (grazing) and around the core's tangent, full and clipped segments. The

@@ -14,7 +14,7 @@
  * Ray intersection (IntersectRay): along a ray each kernel is a polynomial of degree 4 in the ray
  * parameter inside its influence interval [a_i, b_i] (|x - c_i|^2 = (t - t_i)^2 + h_i^2, with the
  * closest approach t_i and impact parameter h_i formed relative to the centre, as
- * Shaders/RaySphere.glsl does, so that a camera far away loses nothing). Between consecutive
+ * Shaders/Core/RaySphere.glsl does, so that a camera far away loses nothing). Between consecutive
  * interval ends the set of contributing particles is fixed and the field minus the iso-value is
  * one quartic P; its first root is isolated exactly: the roots of P' (a cubic, whose own
  * critical points come from a quadratic, solved the same way) split the interval into monotone

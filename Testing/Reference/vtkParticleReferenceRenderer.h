@@ -19,15 +19,15 @@
  * caller's radii times |det(actor matrix)|^(1/3). Skipped particles (radius 0), particles clipped
  * by the mapper's clipping planes (by their centre, as on the GPU) and particles with opacity 0
  * (all their fragments are discarded on the GPU) are not drawn.
- * - Intersection: in the sphere-relative form of Shaders/RaySphere.glsl (closest approach point
- *   relative to the centre, no cancellation). The visible surface is the first intersection that
- *   lies in front of the eye and within the near and far planes (tested with the projection
+ * - Intersection: in the sphere-relative form of Shaders/Core/RaySphere.glsl (closest approach
+ * point relative to the centre, no cancellation). The visible surface is the first intersection
+ * that lies in front of the eye and within the near and far planes (tested with the projection
  *   matrix exactly like the GPU: clip w > 0 and -1 <= z/w <= 1). When the entry point is clipped
  *   the exit point is used and the normal is flipped towards the viewer. Between spheres the
  *   nearest visible hit wins; on an exact tie the larger particle id wins (the GPU's depth test is
  *   GL_LEQUAL and particles are drawn in id order).
  * - Shading: VTK 9.2's Phong model exactly as the mapper's fragment shader evaluates it
- *   (Shaders/Lighting.glsl, vtkParticleSphereMapper::ReplaceShaderLight), with the lighting
+ *   (Shaders/Core/Lighting.glsl, vtkParticleSphereMapper::ReplaceShaderLight), with the lighting
  *   complexity and light uniforms derived as vtkOpenGLRenderer::UpdateLights and
  *   UpdateLightingUniforms do (headlights and camera lights follow the camera when the
  *   renderer's LightFollowCamera is on; a headlight is assumed when no light is on and

@@ -1,4 +1,4 @@
-"""vtkParticleSphereMapper::SetClipBox (distributed rendering, Shaders/ClipBox.glsl) without MPI:
+"""vtkParticleSphereMapper::SetClipBox (distributed rendering, Shaders/Core/ClipBox.glsl) without MPI:
 the particles drawn into two boxes that split their bounds, each image with a transparent
 background, composited "over" front to back, must equal the image of all particles -- what
 IceT does with the processes' images.

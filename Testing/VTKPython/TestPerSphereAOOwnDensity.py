@@ -5,7 +5,7 @@ world axes. The volume holds every sphere's own volume around its centre, so bef
 isolated sphere darkened itself (brightness 0.967 of the picture without AO here) and with voxels
 finer than the spheres the whole picture darkened (a 12^3 lattice at Resolution 128: 0.794, while
 per-fragment retrieval stays at 1.000). The fetches now subtract the sphere's own splat share
-(Shaders/DensityVolumeOwn.glsl). Checked, brightness = sum of RGB relative to no AO, 200x200:
+(Shaders/AmbientOcclusion/DensityVolumeOwn.glsl). Checked, brightness = sum of RGB relative to no AO, 200x200:
 - a single sphere, per sphere: >= 0.998 (nearest-voxel and trilinear splats);
 - the lattice at Resolution 64 and 128, per sphere: within 0.02 of per fragment;
 - the lattice at the default resolution still shows occlusion (per sphere < 0.95): the
