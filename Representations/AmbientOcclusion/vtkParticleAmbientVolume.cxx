@@ -68,6 +68,216 @@ struct Sphere
   double Sigma;
   double Color[3];
 };
+
+// The z slabs of voxels a sphere touches, [z0, z1] (empty where z1 < z0).
+void SlabRange(const Sphere& sp, int nz, int& z0, int& z1)
+{
+  z0 = std::max(0, static_cast<int>(std::floor(sp.Center[2] - sp.Radius)));
+  z1 = std::min(nz - 1, static_cast<int>(std::floor(sp.Center[2] + sp.Radius)));
+}
+
+// The spheres per z slab of voxels (slab z holds slabSpheres[slabStart[z], slabStart[z + 1])):
+// each slab is then voxelised by one thread, without races.
+void BinBySlab(const std::vector<Sphere>& spheres, int nz, std::vector<vtkIdType>& slabStart,
+  std::vector<vtkIdType>& slabSpheres)
+{
+  slabStart.assign(nz + 1, 0);
+  for (const Sphere& s : spheres)
+  {
+    int z0, z1;
+    SlabRange(s, nz, z0, z1);
+    for (int z = z0; z <= z1; ++z)
+    {
+      ++slabStart[z + 1];
+    }
+  }
+  for (int z = 0; z < nz; ++z)
+  {
+    slabStart[z + 1] += slabStart[z];
+  }
+  slabSpheres.assign(static_cast<size_t>(slabStart[nz]), 0);
+  std::vector<vtkIdType> fill(slabStart.begin(), slabStart.end() - 1);
+  for (size_t j = 0; j < spheres.size(); ++j)
+  {
+    int z0, z1;
+    SlabRange(spheres[j], nz, z0, z1);
+    for (int z = z0; z <= z1; ++z)
+    {
+      slabSpheres[fill[z]++] = static_cast<vtkIdType>(j);
+    }
+  }
+}
+
+// The overlap weight of a sphere (voxel units) with voxel (x, y, z): 1 where the voxel is covered,
+// 0 where it is not touched, the sphere's volume where the voxel holds it whole, else minus the
+// fraction of the s^3 sub-grid samples inside (negative: partial, rescaled by PartialScales).
+double CellWeight(const Sphere& sp, int x, int y, int z, int s)
+{
+  const double lo[3] = { double(x), double(y), double(z) };
+  double nearest = 0.0;
+  double farthest = 0.0;
+  bool inside = true;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double c = sp.Center[k];
+    const double dn = c < lo[k] ? lo[k] - c : (c > lo[k] + 1.0 ? c - lo[k] - 1.0 : 0.0);
+    const double df = std::max(std::abs(c - lo[k]), std::abs(c - lo[k] - 1.0));
+    nearest += dn * dn;
+    farthest += df * df;
+    inside = inside && c - sp.Radius >= lo[k] && c + sp.Radius <= lo[k] + 1.0;
+  }
+  const double r2 = sp.Radius * sp.Radius;
+  if (nearest > r2)
+  {
+    return 0.0;
+  }
+  if (farthest <= r2)
+  {
+    return 1.0;
+  }
+  if (inside)
+  {
+    return 4.0 / 3.0 * vtkMath::Pi() * r2 * sp.Radius;
+  }
+  int hits = 0;
+  for (int a = 0; a < s; ++a)
+  {
+    const double pz = lo[2] + (a + 0.5) / s - sp.Center[2];
+    for (int b = 0; b < s; ++b)
+    {
+      const double py = lo[1] + (b + 0.5) / s - sp.Center[1];
+      for (int c = 0; c < s; ++c)
+      {
+        const double px = lo[0] + (c + 0.5) / s - sp.Center[0];
+        hits += px * px + py * py + pz * pz <= r2 ? 1 : 0;
+      }
+    }
+  }
+  return -static_cast<double>(hits) / (s * s * s); // negative: partial
+}
+
+// Per sphere for the GPU voxelisation: centre and radius, emission and extinction (float, voxel
+// units: the grid coordinates were formed in double, so the scene's distance from the origin
+// does not matter), and the prefix sums of its (sphere, slice) items.
+void PackSpheres(const std::vector<Sphere>& spheres, double ambientEmission, int nz,
+  std::vector<float>& geometry, std::vector<float>& material, std::vector<std::uint64_t>& itemStart)
+{
+  const size_t n = spheres.size();
+  geometry.assign(4 * n, 0.0f);
+  material.assign(4 * n, 0.0f);
+  itemStart.assign(n + 1, 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType j = begin; j < end; ++j)
+      {
+        const Sphere& sp = spheres[j];
+        for (int k = 0; k < 3; ++k)
+        {
+          geometry[4 * j + k] = static_cast<float>(sp.Center[k]);
+          material[4 * j + k] = static_cast<float>(sp.Sigma * ambientEmission * sp.Color[k]);
+        }
+        geometry[4 * j + 3] = static_cast<float>(sp.Radius);
+        material[4 * j + 3] = static_cast<float>(sp.Sigma);
+        int z0, z1;
+        SlabRange(sp, nz, z0, z1);
+        itemStart[j + 1] = static_cast<std::uint64_t>(std::max(0, z1 - z0 + 1));
+      }
+    });
+  for (size_t j = 0; j < n; ++j)
+  {
+    itemStart[j + 1] += itemStart[j];
+  }
+}
+
+// The (sphere, slice) pairs, at the prefix sums of PackSpheres.
+void PackItems(const std::vector<Sphere>& spheres, int nz,
+  const std::vector<std::uint64_t>& itemStart, std::vector<std::uint32_t>& itemData)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(spheres.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType j = begin; j < end; ++j)
+      {
+        int z0, z1;
+        SlabRange(spheres[j], nz, z0, z1);
+        std::uint32_t* out = &itemData[2 * itemStart[j]];
+        for (int z = z0; z <= z1; ++z, out += 2)
+        {
+          out[0] = static_cast<std::uint32_t>(j);
+          out[1] = static_cast<std::uint32_t>(z);
+        }
+      }
+    });
+}
+
+// The pyramid's level dimensions (each half the finer one, at least 1) and their float offsets in
+// one RGBA buffer (offsets[levels] is its size).
+void PyramidLayout(const int dimensions[3], int levels, std::vector<std::array<int, 3>>& dims,
+  std::vector<size_t>& offsets)
+{
+  dims.assign(levels, { 0, 0, 0 });
+  offsets.assign(levels + 1, 0);
+  dims[0] = { dimensions[0], dimensions[1], dimensions[2] };
+  for (int level = 0; level < levels; ++level)
+  {
+    if (level > 0)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        dims[level][k] = std::max(1, dims[level - 1][k] / 2);
+      }
+    }
+    offsets[level + 1] =
+      offsets[level] + 4 * static_cast<size_t>(dims[level][0]) * dims[level][1] * dims[level][2];
+  }
+}
+
+// Per sphere the rescale factor of its partial voxels so that sum w = V_sphere / V_voxel
+// (computed once over all its voxels, then applied slab by slab), and whether it is lost between
+// the sub-grid's samples (then its whole volume goes into its voxel).
+void PartialScales(const std::vector<Sphere>& spheres, const int dims[3], int s,
+  std::vector<double>& partialScale, std::vector<char>& lost)
+{
+  partialScale.assign(spheres.size(), 1.0);
+  lost.assign(spheres.size(), 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(spheres.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType j = begin; j < end; ++j)
+      {
+        const Sphere& sp = spheres[j];
+        int lo[3], hi[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::max(0, static_cast<int>(std::floor(sp.Center[k] - sp.Radius)));
+          hi[k] = std::min(dims[k] - 1, static_cast<int>(std::floor(sp.Center[k] + sp.Radius)));
+        }
+        double full = 0.0;
+        double partial = 0.0;
+        for (int z = lo[2]; z <= hi[2]; ++z)
+        {
+          for (int y = lo[1]; y <= hi[1]; ++y)
+          {
+            for (int x = lo[0]; x <= hi[0]; ++x)
+            {
+              const double w = CellWeight(sp, x, y, z, s);
+              (w < 0.0 ? partial : full) += std::abs(w);
+            }
+          }
+        }
+        const double volume = 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius;
+        if (partial > 0.0)
+        {
+          partialScale[j] = std::max(0.0, volume - full) / partial;
+        }
+        else if (full == 0.0)
+        {
+          lost[j] = 1; // smaller than the sub-grid and between its samples: all into its voxel
+        }
+      }
+    });
+}
 }
 
 //------------------------------------------------------------------------------
@@ -337,128 +547,15 @@ void vtkParticleAmbientVolume::DepositOnCPU()
   const int ny = this->Dimensions[1];
   const int nz = this->Dimensions[2];
   const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
-  // spheres per z slab (each slab is then voxelised by one thread: no races)
-  std::vector<vtkIdType> slabStart(nz + 1, 0);
-  auto zRange = [&](const Sphere& s, int& z0, int& z1)
-  {
-    z0 = std::max(0, static_cast<int>(std::floor(s.Center[2] - s.Radius)));
-    z1 = std::min(nz - 1, static_cast<int>(std::floor(s.Center[2] + s.Radius)));
-  };
-  for (const Sphere& s : spheres)
-  {
-    int z0, z1;
-    zRange(s, z0, z1);
-    for (int z = z0; z <= z1; ++z)
-    {
-      ++slabStart[z + 1];
-    }
-  }
-  for (int z = 0; z < nz; ++z)
-  {
-    slabStart[z + 1] += slabStart[z];
-  }
-  std::vector<vtkIdType> slabSpheres(static_cast<size_t>(slabStart[nz]));
-  {
-    std::vector<vtkIdType> fill(slabStart.begin(), slabStart.end() - 1);
-    for (size_t j = 0; j < spheres.size(); ++j)
-    {
-      int z0, z1;
-      zRange(spheres[j], z0, z1);
-      for (int z = z0; z <= z1; ++z)
-      {
-        slabSpheres[fill[z]++] = static_cast<vtkIdType>(j);
-      }
-    }
-  }
-
-  // the overlap weights of one sphere (voxel units): the voxels it covers exactly (1), the
-  // partial ones by the sub-grid, rescaled so that the sphere's whole volume is deposited
+  std::vector<vtkIdType> slabStart;
+  std::vector<vtkIdType> slabSpheres;
+  BinBySlab(spheres, nz, slabStart, slabSpheres);
   const int s = this->SubGridSamples;
   auto weightOfCell = [s](const Sphere& sp, int x, int y, int z) -> double
-  {
-    const double lo[3] = { double(x), double(y), double(z) };
-    double nearest = 0.0;
-    double farthest = 0.0;
-    bool inside = true;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double c = sp.Center[k];
-      const double dn = c < lo[k] ? lo[k] - c : (c > lo[k] + 1.0 ? c - lo[k] - 1.0 : 0.0);
-      const double df = std::max(std::abs(c - lo[k]), std::abs(c - lo[k] - 1.0));
-      nearest += dn * dn;
-      farthest += df * df;
-      inside = inside && c - sp.Radius >= lo[k] && c + sp.Radius <= lo[k] + 1.0;
-    }
-    const double r2 = sp.Radius * sp.Radius;
-    if (nearest > r2)
-    {
-      return 0.0;
-    }
-    if (farthest <= r2)
-    {
-      return 1.0;
-    }
-    if (inside)
-    {
-      return 4.0 / 3.0 * vtkMath::Pi() * r2 * sp.Radius;
-    }
-    int hits = 0;
-    for (int a = 0; a < s; ++a)
-    {
-      const double pz = lo[2] + (a + 0.5) / s - sp.Center[2];
-      for (int b = 0; b < s; ++b)
-      {
-        const double py = lo[1] + (b + 0.5) / s - sp.Center[1];
-        for (int c = 0; c < s; ++c)
-        {
-          const double px = lo[0] + (c + 0.5) / s - sp.Center[0];
-          hits += px * px + py * py + pz * pz <= r2 ? 1 : 0;
-        }
-      }
-    }
-    return -static_cast<double>(hits) / (s * s * s); // negative: partial, rescaled below
-  };
-  // per sphere: the rescale factor of its partial voxels so that sum w = V_sphere / V_voxel
-  // (computed once over all its voxels, then applied slab by slab)
-  std::vector<double> partialScale(spheres.size(), 1.0);
-  std::vector<char> lost(spheres.size(), 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(spheres.size()),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType j = begin; j < end; ++j)
-      {
-        const Sphere& sp = spheres[j];
-        int lo[3], hi[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          lo[k] = std::max(0, static_cast<int>(std::floor(sp.Center[k] - sp.Radius)));
-          hi[k] = std::min(
-            this->Dimensions[k] - 1, static_cast<int>(std::floor(sp.Center[k] + sp.Radius)));
-        }
-        double full = 0.0;
-        double partial = 0.0;
-        for (int z = lo[2]; z <= hi[2]; ++z)
-        {
-          for (int y = lo[1]; y <= hi[1]; ++y)
-          {
-            for (int x = lo[0]; x <= hi[0]; ++x)
-            {
-              const double w = weightOfCell(sp, x, y, z);
-              (w < 0.0 ? partial : full) += std::abs(w);
-            }
-          }
-        }
-        const double volume = 4.0 / 3.0 * vtkMath::Pi() * sp.Radius * sp.Radius * sp.Radius;
-        if (partial > 0.0)
-        {
-          partialScale[j] = std::max(0.0, volume - full) / partial;
-        }
-        else if (full == 0.0)
-        {
-          lost[j] = 1; // smaller than the sub-grid and between its samples: all into its voxel
-        }
-      }
-    });
+  { return CellWeight(sp, x, y, z, s); };
+  std::vector<double> partialScale;
+  std::vector<char> lost;
+  PartialScales(spheres, this->Dimensions, s, partialScale, lost);
 
   std::vector<std::vector<float>>& levels = this->Internals->Levels;
   levels.resize(std::max<size_t>(1, levels.size()));
@@ -922,12 +1019,9 @@ bool vtkParticleAmbientVolume::UploadLevels(
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleAmbientVolume::VoxeliseOnGPU(
-  vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+bool vtkParticleAmbientVolume::BuildGPUPrograms(vtkOpenGLRenderWindow* context)
 {
   vtkInternals& internals = *this->Internals;
-  const std::vector<Sphere>& spheres = internals.Spheres;
-  const double uploadStart = vtkTimerLog::GetUniversalTime();
   vtkParticleComputeProgram* programs[4] = { internals.Weights, internals.Deposit, internals.Mip,
     internals.Store };
   const char* variants[4] = { "PR_AMBIENT_WEIGHTS", "PR_AMBIENT_DEPOSIT", "PR_AMBIENT_MIP",
@@ -955,42 +1049,32 @@ bool vtkParticleAmbientVolume::VoxeliseOnGPU(
     }
   }
   internals.Context = context;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleAmbientVolume::VoxeliseOnGPU(
+  vtkOpenGLRenderWindow* context, vtkTextureObject* texture)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::vector<Sphere>& spheres = internals.Spheres;
+  const double uploadStart = vtkTimerLog::GetUniversalTime();
+  vtkParticleComputeProgram* programs[4] = { internals.Weights, internals.Deposit, internals.Mip,
+    internals.Store };
+  if (!this->BuildGPUPrograms(context))
+  {
+    return false;
+  }
 
   // per sphere: centre and radius, emission and extinction (float, voxel units: the grid
   // coordinates were formed in double, so the scene's distance from the origin does not
   // matter); per (sphere, slice) item: the pair
   const size_t n = spheres.size();
   const int nz = this->Dimensions[2];
-  std::vector<float> geometry(4 * n);
-  std::vector<float> material(4 * n);
-  std::vector<std::uint64_t> itemStart(n + 1, 0);
-  auto zRange = [nz](const Sphere& sp, int& z0, int& z1)
-  {
-    z0 = std::max(0, static_cast<int>(std::floor(sp.Center[2] - sp.Radius)));
-    z1 = std::min(nz - 1, static_cast<int>(std::floor(sp.Center[2] + sp.Radius)));
-  };
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType j = begin; j < end; ++j)
-      {
-        const Sphere& sp = spheres[j];
-        for (int k = 0; k < 3; ++k)
-        {
-          geometry[4 * j + k] = static_cast<float>(sp.Center[k]);
-          material[4 * j + k] = static_cast<float>(sp.Sigma * this->AmbientEmission * sp.Color[k]);
-        }
-        geometry[4 * j + 3] = static_cast<float>(sp.Radius);
-        material[4 * j + 3] = static_cast<float>(sp.Sigma);
-        int z0, z1;
-        zRange(sp, z0, z1);
-        itemStart[j + 1] = static_cast<std::uint64_t>(std::max(0, z1 - z0 + 1));
-      }
-    });
-  for (size_t j = 0; j < n; ++j)
-  {
-    itemStart[j + 1] += itemStart[j];
-  }
+  std::vector<float> geometry;
+  std::vector<float> material;
+  std::vector<std::uint64_t> itemStart;
+  PackSpheres(spheres, this->AmbientEmission, nz, geometry, material, itemStart);
   const std::uint64_t items = itemStart[n];
   std::string why;
   if (items > 0xffffffffull / 64 ||
@@ -1001,38 +1085,12 @@ bool vtkParticleAmbientVolume::VoxeliseOnGPU(
     return false;
   }
   std::vector<std::uint32_t> itemData(2 * items);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType j = begin; j < end; ++j)
-      {
-        int z0, z1;
-        zRange(spheres[j], z0, z1);
-        std::uint32_t* out = &itemData[2 * itemStart[j]];
-        for (int z = z0; z <= z1; ++z, out += 2)
-        {
-          out[0] = static_cast<std::uint32_t>(j);
-          out[1] = static_cast<std::uint32_t>(z);
-        }
-      }
-    });
+  PackItems(spheres, nz, itemStart, itemData);
 
   // the pyramid's levels in one float buffer
-  std::vector<std::array<int, 3>> dims(this->NumberOfLevels);
-  std::vector<size_t> offsets(this->NumberOfLevels + 1, 0);
-  dims[0] = { this->Dimensions[0], this->Dimensions[1], this->Dimensions[2] };
-  for (int level = 0; level < this->NumberOfLevels; ++level)
-  {
-    if (level > 0)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        dims[level][k] = std::max(1, dims[level - 1][k] / 2);
-      }
-    }
-    offsets[level + 1] =
-      offsets[level] + 4 * static_cast<size_t>(dims[level][0]) * dims[level][1] * dims[level][2];
-  }
+  std::vector<std::array<int, 3>> dims;
+  std::vector<size_t> offsets;
+  PyramidLayout(this->Dimensions, this->NumberOfLevels, dims, offsets);
   if (offsets.back() > 0xffffffffull)
   {
     vtkErrorMacro(<< "The ambient volume is too large for the GPU voxelisation.");

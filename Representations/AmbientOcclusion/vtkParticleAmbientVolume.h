@@ -258,6 +258,9 @@ protected:
   bool UploadLevels(vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
   // the prepared spheres voxelised, mipped and stored into the texture by compute shaders
   bool VoxeliseOnGPU(vtkOpenGLRenderWindow* context, vtkTextureObject* texture);
+  // The four compute stages of VoxeliseOnGPU (weights, deposit, mip, store) built in `context`
+  // (the resources of another context released first).
+  bool BuildGPUPrograms(vtkOpenGLRenderWindow* context);
 
   int Resolution = 0;
   int MaximumResolution = 256;

@@ -228,6 +228,79 @@ bool vtkParticleDensityVolume::UploadVolumeOf(
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// One sphere's volume (`contribution`, in voxel units) at p into `local`: the voxel that holds p
+// (nearest), or cloud in cell: the 8 voxels whose centres surround p with tent weights, corners
+// beyond the grid folded onto its boundary voxels (nothing is lost).
+void SplatSphere(const double p[3], double contribution, const int* dims, const double* origin,
+  double inverseEdge, bool trilinear, std::vector<float>& local)
+{
+  if (!trilinear)
+  {
+    int v[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k] = std::min(
+        dims[k] - 1, std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) * inverseEdge))));
+    }
+    local[v[0] + dims[0] * (v[1] + static_cast<vtkIdType>(dims[1]) * v[2])] +=
+      static_cast<float>(contribution);
+    return;
+  }
+  int lower[3];
+  double weight[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double v = (p[k] - origin[k]) * inverseEdge - 0.5;
+    const double f = std::floor(v);
+    lower[k] = static_cast<int>(std::max(-1.0, std::min(f, static_cast<double>(dims[k]))));
+    weight[k] = std::min(1.0, std::max(0.0, v - f));
+  }
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double w = contribution;
+    vtkIdType index = 0;
+    vtkIdType step = 1;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int high = (corner >> k) & 1;
+      w *= high ? weight[k] : 1.0 - weight[k];
+      index += step * std::min(dims[k] - 1, std::max(0, lower[k] + high));
+      step *= dims[k];
+    }
+    local[index] += static_cast<float>(w);
+  }
+}
+
+// The threads' partial volumes summed (in double) into out[0, voxels).
+void SumPartialVolumes(vtkSMPThreadLocal<std::vector<float>>& partial, float* out, vtkIdType voxels)
+{
+  std::vector<const float*> parts;
+  for (auto& local : partial)
+  {
+    if (!local.empty())
+    {
+      parts.push_back(local.data());
+    }
+  }
+  vtkSMPTools::For(0, voxels,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        double sum = 0.0;
+        for (const float* part : parts)
+        {
+          sum += part[i];
+        }
+        out[i] = static_cast<float>(sum);
+      }
+    });
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloatArray* radii)
 {
   const vtkIdType voxels =
@@ -290,44 +363,7 @@ bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloa
         continue; // NaN/Inf positions are not drawn either
       }
       const double radius = r[i];
-      const double contribution = unit * radius * radius * radius;
-      if (!trilinear)
-      {
-        int v[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          v[k] = std::min(dims[k] - 1,
-            std::max(0, static_cast<int>(std::floor((p[k] - origin[k]) * inverseEdge))));
-        }
-        local[v[0] + dims[0] * (v[1] + static_cast<vtkIdType>(dims[1]) * v[2])] +=
-          static_cast<float>(contribution);
-        continue;
-      }
-      // cloud in cell: the 8 voxels whose centres surround p, tent weights; corners beyond the
-      // grid fold onto its boundary voxels (nothing is lost)
-      int lower[3];
-      double weight[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        const double v = (p[k] - origin[k]) * inverseEdge - 0.5;
-        const double f = std::floor(v);
-        lower[k] = static_cast<int>(std::max(-1.0, std::min(f, static_cast<double>(dims[k]))));
-        weight[k] = std::min(1.0, std::max(0.0, v - f));
-      }
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        double w = contribution;
-        vtkIdType index = 0;
-        vtkIdType step = 1;
-        for (int k = 0; k < 3; ++k)
-        {
-          const int high = (corner >> k) & 1;
-          w *= high ? weight[k] : 1.0 - weight[k];
-          index += step * std::min(dims[k] - 1, std::max(0, lower[k] + high));
-          step *= dims[k];
-        }
-        local[index] += static_cast<float>(w);
-      }
+      SplatSphere(p, unit * radius * radius * radius, dims, origin, inverseEdge, trilinear, local);
     }
   };
   const vtkIdType block = BlockSize(this, n);
@@ -356,28 +392,7 @@ bool vtkParticleDensityVolume::ComputeSumsOnCPU(vtkDataArray* positions, vtkFloa
     this->Volume.clear();
     return false;
   }
-  float* out = this->Volume.data();
-  std::vector<const float*> parts;
-  for (auto& local : partial)
-  {
-    if (!local.empty())
-    {
-      parts.push_back(local.data());
-    }
-  }
-  vtkSMPTools::For(0, voxels,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        double sum = 0.0;
-        for (const float* part : parts)
-        {
-          sum += part[i];
-        }
-        out[i] = static_cast<float>(sum);
-      }
-    });
+  SumPartialVolumes(partial, this->Volume.data(), voxels);
   return true;
 }
 

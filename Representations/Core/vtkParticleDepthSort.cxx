@@ -348,13 +348,35 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
     vtkParticleComputeProgram::BindStorage(binding, internals.Buffers[binding]);
   }
 
-  const std::uint64_t n = static_cast<std::uint64_t>(count);
-  const std::uint64_t tiles = DivUp(n, Tile);
-  const unsigned int bitsOffset = static_cast<unsigned int>(this->Capacity);
-  const unsigned int countsOffset = bitsOffset + 2;
   bool ok = true;
+  const std::vector<unsigned int> shifts =
+    this->FindDifferingDigits(static_cast<unsigned int>(count), ok);
+  this->LastNumberOfPasses = static_cast<int>(shifts.size());
+  ok = this->RunPasses(shifts, static_cast<unsigned int>(count)) && ok;
 
-  // which digits differ between keys
+  // the results can be drawn (indices, attributes), read by shaders and read back
+  glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT |
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (internals.Timed)
+  {
+    internals.Timer.Stop();
+  }
+  // vtkParticleComputeProgram::Use() told VTK's shader cache that its program is unbound: the
+  // caller's next VTK draw binds its own program again (ReadyShaderProgram)
+  vtkParticleComputeProgram::UseNone();
+  if (!ok)
+  {
+    vtkErrorMacro(<< "A sort dispatch failed; the index buffer is undefined.");
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned int> vtkParticleDepthSort::FindDifferingDigits(unsigned int count, bool& ok)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::uint64_t n = count;
+  const unsigned int bitsOffset = static_cast<unsigned int>(this->Capacity);
   unsigned int differing = 0xFFFFFFFFu;
   if (this->SkipUniformDigits)
   {
@@ -380,7 +402,17 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
       shifts.push_back(shift);
     }
   }
-  this->LastNumberOfPasses = static_cast<int>(shifts.size());
+  return shifts;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDepthSort::RunPasses(const std::vector<unsigned int>& shifts, unsigned int count)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::uint64_t n = count;
+  const std::uint64_t tiles = DivUp(n, Tile);
+  const unsigned int countsOffset = static_cast<unsigned int>(this->Capacity) + 2;
+  bool ok = true;
   const bool reportProgress = this->HasObserver(vtkCommand::ProgressEvent) != 0;
   auto progress = [&](double fraction)
   {
@@ -447,20 +479,6 @@ bool vtkParticleDepthSort::Sort(vtkIdType count)
     progress(1.0);
   }
 
-  // the results can be drawn (indices, attributes), read by shaders and read back
-  glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT |
-    GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (internals.Timed)
-  {
-    internals.Timer.Stop();
-  }
-  // vtkParticleComputeProgram::Use() told VTK's shader cache that its program is unbound: the
-  // caller's next VTK draw binds its own program again (ReadyShaderProgram)
-  vtkParticleComputeProgram::UseNone();
-  if (!ok)
-  {
-    vtkErrorMacro(<< "A sort dispatch failed; the index buffer is undefined.");
-  }
   return ok;
 }
 

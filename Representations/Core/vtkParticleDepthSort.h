@@ -77,7 +77,9 @@
 #define vtkParticleDepthSort_h
 
 #include "vtkObject.h"
+
 #include "vtkParticleRenderingCoreModule.h" // for export macro
+#include <vector>                           // for std::vector
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
@@ -174,6 +176,11 @@ protected:
 
   bool BuildPrograms();
   bool Scan(unsigned int offset, unsigned int length);
+  // The 4-bit digits (their shifts) in which some keys differ: all 8 without SkipUniformDigits.
+  std::vector<unsigned int> FindDifferingDigits(unsigned int count, bool& ok);
+  // One stable counting pass per digit of `shifts` (histogram, scan, scatter), ping-ponging
+  // between the two sides so that the last writes side A; the identity with no digit.
+  bool RunPasses(const std::vector<unsigned int>& shifts, unsigned int count);
 
   vtkIdType Capacity = 0;
   bool SkipUniformDigits = true;
