@@ -34,7 +34,9 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkSNDFColourCoordinates.h"
+#include "vtkSNDFLightingTable.h"
 #include "vtkSNDFRecolouring.h"
+#include "vtkSNDFTargets.h"
 #include "vtkSNDFTileCache.h"
 #include "vtkSNDFViewPlacement.h"
 #include "vtkScalarsToColors.h"
@@ -59,14 +61,8 @@
 
 namespace
 {
-// the colour attachments of the G-buffer (0: colour as drawn; see SNDFAccumulate.glsl)
-const unsigned int NumberOfAttachments = 3;
-// sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
-// the bins per axis, at least 8)
-const int TableSubsamplesPerAxis = 512;
-// rows of the lighting table per bin (SNDFBins.glsl): D, S, their slopes in u.x and u.y, the
-// centroid
-const int TableRows = 7;
+// the colour attachments of the G-buffer (vtkSNDFTargets)
+const unsigned int NumberOfAttachments = vtkSNDFTargets::NumberOfAttachments;
 
 // sample passes in one Render() from which it reports progress
 const int ProgressSamples = 8;
@@ -127,21 +123,16 @@ public:
   }
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Context;
-  // the view-sized objects, made anew for each size
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Target;
-  vtkSmartPointer<vtkTextureObject> Attachments[NumberOfAttachments];
-  vtkSmartPointer<vtkTextureObject> Depth;
-  vtkSmartPointer<vtkTextureObject> Image;
-  vtkSmartPointer<vtkTextureObject> ImageDepth;
-  vtkNew<vtkOpenGLFramebufferObject> TableTarget;
-  vtkNew<vtkTextureObject> Table;
-  std::unique_ptr<vtkOpenGLQuadHelper> TableQuad;
-  std::string TableQuadSource;
+  // the view-sized targets (G-buffer, shaded picture, checkpoint, display), made anew for each
+  // size
+  vtkSNDFTargets Targets;
+  // the lighting table (Eqs. 12-14) and what it was built for
+  vtkSNDFLightingTable LightingTable;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   vtkNew<vtkParticleComputeProgram> Accumulate;
   vtkNew<vtkParticleComputeProgram> Resolve;
-  // the error estimate: the picture at the last check, the difference program and its sums
-  vtkSmartPointer<vtkTextureObject> Checkpoint;
+  // the error estimate: the difference program and its sums (the picture at the last check:
+  // Targets.Checkpoint)
   vtkNew<vtkParticleComputeProgram> Difference;
   vtkSmartPointer<vtkOpenGLBufferObject> Totals = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   int CheckedSamples = 0;
@@ -150,10 +141,6 @@ public:
   vtkTimeStamp ShaderTime;
   vtkNew<vtkLightsPass> Lights;
 
-  int Width = 0;
-  int Height = 0;
-  bool HaveTable = false;
-  int TableBins = 0;
   // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
   // position, focal point and parallel scale in parallel projection), and its virtual plane
   // (View).
@@ -161,8 +148,6 @@ public:
   bool FrameValid = false;
   vtkSNDFViewPlacement View;
   using Between = vtkSNDFViewPlacement::Between;
-  vtkSmartPointer<vtkTextureObject> DisplayImage;
-  vtkSmartPointer<vtkTextureObject> DisplayDepth;
   vtkNew<vtkParticleComputeProgram> BoxFilter;
   // the view of the last MapView() and its size in texels, and the view of the last frame
   // (mapped or plain)
@@ -173,7 +158,6 @@ public:
   bool Shown = false;
   // jittered sample passes since the frame started (the Halton index of the next one)
   int Sequence = 0;
-  std::vector<double> TableKey;
   std::vector<double> ResolveKey;
   std::set<std::string> Warned;
   std::string ProgressText;
@@ -210,120 +194,6 @@ public:
 
   // true the first time `what` is reported
   bool FirstWarning(const std::string& what) { return this->Warned.insert(what).second; }
-
-  void ReleaseTextures(vtkWindow* w)
-  {
-    if (this->Target)
-    {
-      this->Target->ReleaseGraphicsResources(w);
-    }
-    for (auto& attachment : this->Attachments)
-    {
-      if (attachment)
-      {
-        attachment->ReleaseGraphicsResources(w);
-      }
-      attachment = nullptr;
-    }
-    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth, &this->Checkpoint,
-           &this->DisplayImage, &this->DisplayDepth })
-    {
-      if (*texture)
-      {
-        (*texture)->ReleaseGraphicsResources(w);
-      }
-      *texture = nullptr;
-    }
-    this->Target = nullptr;
-    this->Width = 0;
-    this->Height = 0;
-  }
-
-  void NewTextures()
-  {
-    this->Target = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    for (auto& attachment : this->Attachments)
-    {
-      attachment = vtkSmartPointer<vtkTextureObject>::New();
-    }
-    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
-    this->Image = vtkSmartPointer<vtkTextureObject>::New();
-    this->ImageDepth = vtkSmartPointer<vtkTextureObject>::New();
-    this->Checkpoint = vtkSmartPointer<vtkTextureObject>::New();
-  }
-
-  // The G-buffer and the shaded texels for a width x height rectangle of texels (the window's
-  // pixels, or the rectangle of a view between two levels).
-  void AllocateTargets(vtkOpenGLRenderWindow* context, int width, int height)
-  {
-    this->ReleaseTextures(context);
-    this->NewTextures();
-    this->Target->SetContext(context);
-    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-    {
-      vtkTextureObject* t = this->Attachments[a];
-      t->SetContext(context);
-      if (a > 0)
-      {
-        t->SetInternalFormat(GL_RGBA16F);
-        t->SetFormat(GL_RGBA);
-        t->SetDataType(GL_FLOAT);
-        t->Allocate2D(width, height, 4, VTK_FLOAT);
-      }
-      else
-      {
-        // 8 bits, as the window: the background and other geometry come out exactly as drawn
-        // without the pass (a particle's ambient term is quantised per sample, < 0.5/255)
-        t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-      }
-    }
-    this->Depth->SetContext(context);
-    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    AllocateImage(this->Image, context, width, height, false);
-    AllocateImage(this->Checkpoint, context, width, height, false);
-    AllocateImage(this->ImageDepth, context, width, height, true);
-    vtkOpenGLState* ostate = context->GetState();
-    ostate->PushFramebufferBindings();
-    this->Target->Bind();
-    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-    {
-      this->Target->AddColorAttachment(a, this->Attachments[a]);
-    }
-    this->Target->AddDepthAttachment(this->Depth);
-    ostate->PopFramebufferBindings();
-    this->Width = width;
-    this->Height = height;
-  }
-
-  // The window's picture of a view between two levels (SNDFBoxFilter.glsl).
-  void AllocateDisplay(vtkOpenGLRenderWindow* context, int width, int height)
-  {
-    for (auto* image : { &this->DisplayImage, &this->DisplayDepth })
-    {
-      if (*image && (*image)->GetHandle() && static_cast<int>((*image)->GetWidth()) == width &&
-        static_cast<int>((*image)->GetHeight()) == height)
-      {
-        continue;
-      }
-      if (*image)
-      {
-        (*image)->ReleaseGraphicsResources(context);
-      }
-      *image = vtkSmartPointer<vtkTextureObject>::New();
-      AllocateImage(*image, context, width, height, image == &this->DisplayDepth);
-    }
-  }
-
-  // a float picture: RGBA, or one depth channel
-  static void AllocateImage(
-    vtkTextureObject* image, vtkOpenGLRenderWindow* context, int width, int height, bool depth)
-  {
-    image->SetContext(context);
-    image->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
-    image->SetFormat(depth ? GL_RED : GL_RGBA);
-    image->SetDataType(GL_FLOAT);
-    image->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
-  }
 };
 
 vtkStandardNewMacro(vtkSNDFRenderPass);
@@ -544,75 +414,6 @@ struct vtkSNDFRenderPass::vtkFrame
   vtkTextureObject* Shown = nullptr; // the shaded picture the composite draws
   vtkTextureObject* ShownDepth = nullptr;
 };
-
-namespace
-{
-// The lighting table's fragment shader (Eqs. 12-14): per bin and row, the least-squares plane of
-// the lit value over the part of the bin inside the disk.
-std::string LightingTableMain()
-{
-  return "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), float(prTableRows)));\n"
-         "  int prRow = prTexel.y;\n"
-         "  int prLight = (prRow == 1 || prRow == 4 || prRow == 5) ? 1 : 0;\n"
-         "  float prN = 0.0;\n"
-         "  vec2 prU = vec2(0.0);\n"
-         "  vec3 prUU = vec3(0.0);\n"
-         "  vec3 prF = vec3(0.0);\n"
-         "  vec3 prUFx = vec3(0.0);\n"
-         "  vec3 prUFy = vec3(0.0);\n"
-         "  for (int i = 0; i < prSubsamples; ++i)\n"
-         "  {\n"
-         "    for (int j = 0; j < prSubsamples; ++j)\n"
-         "    {\n"
-         "      vec2 prUV = (vec2(i, j) + 0.5) / float(prSubsamples);\n"
-         "      vec3 prNormal;\n"
-         "      if (prSNDFBinPoint(prTexel.x, prBins, prUV, prNormal))\n"
-         "      {\n"
-         "        vec3 prValue = prRow == 6 ? vec3(0.0) : prLightSum(prNormal, prLight);\n"
-         "        prN += 1.0;\n"
-         "        prU += prUV;\n"
-         "        prUU += vec3(prUV.x * prUV.x, prUV.x * prUV.y, prUV.y * prUV.y);\n"
-         "        prF += prValue;\n"
-         "        prUFx += prUV.x * prValue;\n"
-         "        prUFy += prUV.y * prValue;\n"
-         "      }\n"
-         "    }\n"
-         "  }\n"
-         "  vec3 prOut = vec3(0.0);\n"
-         "  if (prN == 0.0)\n"
-         "  {\n"
-         "    // a bin outside the disk holds no sample; give it the normal of the rim point "
-         "nearest\n"
-         "    // to its centre and no slope\n"
-         "    vec3 prCentre;\n"
-         "    prSNDFBinPoint(prTexel.x, prBins, vec2(0.5), prCentre);\n"
-         "    vec2 prRim = normalize(prCentre.xy) * 0.9999;\n"
-         "    vec3 prValue = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), "
-         "prLight);\n"
-         "    prOut = prRow < 2 ? prValue : (prRow == 6 ? vec3(0.5, 0.5, 0.0) : vec3(0.0));\n"
-         "  }\n"
-         "  else\n"
-         "  {\n"
-         "    // least-squares plane f = mean + slope . (u - centroid) over bin ∩ disk (the\n"
-         "    // covariance regularised by 1e-4: a sliver of a bin at the rim gets no slope across "
-         "it)\n"
-         "    vec2 prMeanU = prU / prN;\n"
-         "    vec3 prMeanF = prF / prN;\n"
-         "    float prCxx = prUU.x / prN - prMeanU.x * prMeanU.x + 1.0e-4;\n"
-         "    float prCxy = prUU.y / prN - prMeanU.x * prMeanU.y;\n"
-         "    float prCyy = prUU.z / prN - prMeanU.y * prMeanU.y + 1.0e-4;\n"
-         "    vec3 prCxf = prUFx / prN - prMeanU.x * prMeanF;\n"
-         "    vec3 prCyf = prUFy / prN - prMeanU.y * prMeanF;\n"
-         "    float prDet = prCxx * prCyy - prCxy * prCxy;\n"
-         "    vec3 prSlopeX = (prCyy * prCxf - prCxy * prCyf) / prDet;\n"
-         "    vec3 prSlopeY = (prCxx * prCyf - prCxy * prCxf) / prDet;\n"
-         "    prOut = prRow < 2 ? prMeanF\n"
-         "      : (prRow == 6 ? vec3(prMeanU, 0.0)\n"
-         "      : ((prRow == 2 || prRow == 4) ? prSlopeX : prSlopeY));\n"
-         "  }\n"
-         "  gl_FragData[0] = vec4(prOut, 1.0);\n";
-}
-}
 
 //------------------------------------------------------------------------------
 void vtkSNDFRenderPass::Render(const vtkRenderState* s)
@@ -1119,7 +920,7 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
         vtkErrorMacro(<< "Could not allocate "
                       << slots * vtkSNDFTileCache::GetTileBytes(bins, moments) / 1048576.0
                       << " MB for the S-MIP cache: the view is rendered as without S-NDFs.");
-        internals.ReleaseTextures(context);
+        internals.Targets.Release(context);
         this->RenderPlain(s);
         return false;
       }
@@ -1205,14 +1006,14 @@ bool vtkSNDFRenderPass::PrepareTargets(vtkFrame& frame)
       return false;
     }
   }
-  if (texelsX != internals.Width || texelsY != internals.Height || !internals.Depth ||
-    !internals.Depth->GetHandle())
+  if (texelsX != internals.Targets.Width || texelsY != internals.Targets.Height ||
+    !internals.Targets.Depth || !internals.Targets.Depth->GetHandle())
   {
-    internals.AllocateTargets(context, texelsX, texelsY);
+    internals.Targets.Allocate(context, texelsX, texelsY);
   }
   if (between.Active)
   {
-    internals.AllocateDisplay(context, width, height);
+    internals.Targets.AllocateDisplay(context, width, height);
   }
   return true;
 }
@@ -1316,7 +1117,6 @@ bool vtkSNDFRenderPass::UpdateLightingTable(vtkFrame& frame)
   const vtkRenderState* s = frame.RenderState;
   vtkOpenGLRenderer* ren = frame.Renderer;
   vtkOpenGLRenderWindow* context = frame.Context;
-  vtkOpenGLState* ostate = frame.Context->GetState();
   vtkCamera* camera = frame.Camera;
   vtkProperty*& material = frame.Material;
   const int bins = frame.Bins;
@@ -1325,75 +1125,17 @@ bool vtkSNDFRenderPass::UpdateLightingTable(vtkFrame& frame)
   internals.Timer.Begin(2);
   internals.Lights->Render(s);
   const std::vector<double> tableKey = this->LightingTableKey(frame);
-  if (tableKey == internals.TableKey && internals.HaveTable)
+  if (internals.LightingTable.IsCurrent(tableKey))
   {
     return true;
   }
-  const std::string uniforms = ren->GetLightingUniforms();
-  const int complexity = ren->GetLightingComplexity();
-  const int count = ren->GetLightingCount();
-  std::string body = "vec3 prLightSum(vec3 normalVCVSOutput, int row)\n{\n"
-                     "  float specularPower = prSpecularPower;\n"
-                     "  vec4 vertexVC = vec4(0.0, 0.0, -prViewDistance, 1.0);\n" +
-    vtkParticleSphereMapper::GetLightSumCode(complexity, count) +
-    "  return row == 0 ? diffuse : specular;\n}\n";
-  const std::string source = uniforms + "\n" + body;
-  if (!internals.TableQuad || source != internals.TableQuadSource)
-  {
-    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::FSQ::Decl", vtkParticleShaders::Get("SNDFLightingTable") + "\n" + source);
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", LightingTableMain());
-    internals.TableQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, fs.c_str(), nullptr));
-    internals.TableQuadSource = source;
-  }
-  vtkOpenGLQuadHelper* quad = internals.TableQuad.get();
-  if (!quad->Program)
+  if (!internals.LightingTable.Build(ren, context, camera, material, bins, tableKey))
   {
     internals.Timer.End();
     vtkErrorMacro(<< "The S-NDF lighting table shader did not build.");
     this->RenderPlain(s);
     return false;
   }
-  if (internals.TableBins != bins || !internals.Table->GetHandle())
-  {
-    internals.Table->SetContext(context);
-    internals.Table->SetInternalFormat(GL_RGBA32F);
-    internals.Table->SetFormat(GL_RGBA);
-    internals.Table->SetDataType(GL_FLOAT);
-    internals.Table->Allocate2D(bins * bins, TableRows, 4, VTK_FLOAT);
-    internals.TableTarget->SetContext(context);
-    ostate->PushFramebufferBindings();
-    internals.TableTarget->Bind();
-    internals.TableTarget->AddColorAttachment(0, internals.Table);
-    internals.TableTarget->ActivateDrawBuffers(1);
-    ostate->PopFramebufferBindings();
-    internals.TableBins = bins;
-  }
-  context->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  ren->UpdateLightingUniforms(quad->Program);
-  quad->Program->SetUniformi("prBins", bins);
-  quad->Program->SetUniformi("prTableRows", TableRows);
-  quad->Program->SetUniformi("prSubsamples", std::max(32, TableSubsamplesPerAxis / bins));
-  quad->Program->SetUniformf("prSpecularPower", static_cast<float>(material->GetSpecularPower()));
-  quad->Program->SetUniformf("prViewDistance", static_cast<float>(camera->GetDistance()));
-  ostate->PushFramebufferBindings();
-  internals.TableTarget->Bind();
-  internals.TableTarget->ActivateDrawBuffers(1);
-  {
-    vtkOpenGLState::ScopedglViewport viewport(ostate);
-    vtkOpenGLState::ScopedglScissor scissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglViewport(0, 0, bins * bins, TableRows);
-    ostate->vtkglScissor(0, 0, bins * bins, TableRows);
-    quad->Render();
-  }
-  ostate->PopFramebufferBindings();
-  internals.TableKey = tableKey;
-  internals.HaveTable = true;
   ++this->NumberOfTableBuilds;
   return true;
 }
@@ -1410,7 +1152,7 @@ bool vtkSNDFRenderPass::MapTiles(vtkFrame& frame)
   // rebaked where shaded with an older table (re-lighting)
   const long long changes =
     internals.Cache->GetNumberOfDownsampledTiles() + internals.Cache->GetNumberOfClearedTiles();
-  if (!internals.Cache->MapView(placement, texelsX, texelsY, internals.Table,
+  if (!internals.Cache->MapView(placement, texelsX, texelsY, internals.LightingTable.GetTexture(),
         static_cast<long long>(this->NumberOfTableBuilds)))
   {
     internals.Timer.End();
@@ -1478,8 +1220,10 @@ void vtkSNDFRenderPass::ResolveView(vtkFrame& frame)
   resolve->SetUniform3f("prAmbientTerm", static_cast<float>(ambientTerm[0]),
     static_cast<float>(ambientTerm[1]), static_cast<float>(ambientTerm[2]));
   internals.Cache->BindView(resolve);
-  glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  glBindImageTexture(
+    0, internals.Targets.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(
+    1, internals.Targets.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
   {
     resolve->Dispatch(4, 4, internals.Cache->BindViewPart(resolve, part));
@@ -1528,9 +1272,10 @@ void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
     vtkParticleComputeProgram* difference = internals.Difference;
     difference->Use();
     difference->SetUniform2i("prSize", texelsX, texelsY);
-    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(
-      1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      0, internals.Targets.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      1, internals.Targets.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     vtkParticleComputeProgram::BindStorage(1, internals.Totals);
     difference->Dispatch(groupsX, groupsY);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -1549,8 +1294,8 @@ void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
     this->EstimatedError = mean * std::sqrt(static_cast<double>(m) / (n - m));
     this->ErrorTargetReached = this->EstimatedError <= this->ErrorTarget;
   }
-  glCopyImageSubData(internals.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
-    internals.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
+  glCopyImageSubData(internals.Targets.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
+    internals.Targets.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
   internals.CheckedSamples = n;
 }
 
@@ -1635,8 +1380,8 @@ void vtkSNDFRenderPass::RenderSampleTargets(vtkFrame& frame)
   const int texelsY = frame.TexelsY;
   internals.Timer.Begin(0);
   ostate->PushFramebufferBindings();
-  internals.Target->Bind();
-  internals.Target->ActivateDrawBuffers(NumberOfAttachments);
+  internals.Targets.Framebuffer->Bind();
+  internals.Targets.Framebuffer->ActivateDrawBuffers(NumberOfAttachments);
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
     vtkOpenGLState::ScopedglScissor scissor(ostate);
@@ -1649,7 +1394,7 @@ void vtkSNDFRenderPass::RenderSampleTargets(vtkFrame& frame)
       glClearBufferfv(GL_COLOR, static_cast<GLint>(a), zero);
     }
     vtkRenderState sampleState(ren);
-    sampleState.SetFrameBuffer(internals.Target);
+    sampleState.SetFrameBuffer(internals.Targets.Framebuffer);
     sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
     // the particle targets take each fragment as it is (every shader writes alpha 1 there:
     // blending, which VTK keeps on for opaque geometry too, would only add a read-modify-write
@@ -1682,13 +1427,14 @@ void vtkSNDFRenderPass::AccumulateSamples(vtkFrame& frame)
   const char* samplers[NumberOfAttachments] = { "prColour", "prNormal", "prDiffuse" };
   for (unsigned int a = 0; a < NumberOfAttachments; ++a)
   {
-    internals.Attachments[a]->Activate();
-    accumulate->SetUniformi(samplers[a], internals.Attachments[a]->GetTextureUnit());
+    internals.Targets.Attachments[a]->Activate();
+    accumulate->SetUniformi(samplers[a], internals.Targets.Attachments[a]->GetTextureUnit());
   }
-  internals.Depth->Activate();
-  accumulate->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
-  internals.Table->Activate();
-  accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
+  internals.Targets.Depth->Activate();
+  accumulate->SetUniformi("prDepth", internals.Targets.Depth->GetTextureUnit());
+  vtkTextureObject* table = internals.LightingTable.GetTexture();
+  table->Activate();
+  accumulate->SetUniformi("prTable", table->GetTextureUnit());
   accumulate->SetUniform2i("prSize", texelsX, texelsY);
   accumulate->SetUniformi("prBins", bins);
   accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
@@ -1702,10 +1448,10 @@ void vtkSNDFRenderPass::AccumulateSamples(vtkFrame& frame)
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   for (unsigned int a = 0; a < NumberOfAttachments; ++a)
   {
-    internals.Attachments[a]->Deactivate();
+    internals.Targets.Attachments[a]->Deactivate();
   }
-  internals.Depth->Deactivate();
-  internals.Table->Deactivate();
+  internals.Targets.Depth->Deactivate();
+  table->Deactivate();
   vtkParticleComputeProgram::UseNone();
   internals.Timer.End();
 }
@@ -1723,8 +1469,8 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
   internals.Timer.Begin(2);
   this->ResolveView(frame);
   // a view between two levels: each window pixel the box filter of the shaded texels under it
-  frame.Shown = internals.Image;
-  frame.ShownDepth = internals.ImageDepth;
+  frame.Shown = internals.Targets.Image;
+  frame.ShownDepth = internals.Targets.ImageDepth;
   if (between.Active)
   {
     vtkParticleComputeProgram* filter = internals.BoxFilter;
@@ -1734,12 +1480,14 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
     filter->SetUniformf("prScale", static_cast<float>(between.Scale));
     filter->SetUniform2f(
       "prOffset", static_cast<float>(between.Offset[0]), static_cast<float>(between.Offset[1]));
-    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(
-      2, internals.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      0, internals.Targets.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(
-      3, internals.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+      1, internals.Targets.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(
+      2, internals.Targets.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      3, internals.Targets.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     filter->Dispatch(
       static_cast<unsigned int>((width + 15) / 16), static_cast<unsigned int>((height + 15) / 16));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -1748,8 +1496,8 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
       glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     }
     vtkParticleComputeProgram::UseNone();
-    frame.Shown = internals.DisplayImage;
-    frame.ShownDepth = internals.DisplayDepth;
+    frame.Shown = internals.Targets.DisplayImage;
+    frame.ShownDepth = internals.Targets.DisplayDepth;
   }
 }
 
@@ -1798,38 +1546,15 @@ void vtkSNDFRenderPass::Composite(vtkFrame& frame)
 //------------------------------------------------------------------------------
 bool vtkSNDFRenderPass::GetLightingTable(vtkFloatArray* table)
 {
-  vtkInternals& internals = *this->Internals;
-  if (!table || !internals.HaveTable || !internals.Table->GetHandle())
-  {
-    return false;
-  }
-  const int n = internals.TableBins * internals.TableBins;
-  std::vector<float> texels(static_cast<std::size_t>(n) * TableRows * 4);
-  internals.Table->Bind();
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, texels.data());
-  table->SetNumberOfComponents(3);
-  table->SetNumberOfTuples(TableRows * n);
-  for (int t = 0; t < TableRows * n; ++t)
-  {
-    table->SetTypedTuple(t, &texels[4 * static_cast<std::size_t>(t)]);
-  }
-  return true;
+  return this->Internals->LightingTable.Read(table);
 }
 
 //------------------------------------------------------------------------------
 void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& internals = *this->Internals;
-  internals.ReleaseTextures(w);
-  internals.Table->ReleaseGraphicsResources(w);
-  internals.TableTarget->ReleaseGraphicsResources(w);
-  internals.HaveTable = false;
-  internals.TableBins = 0;
-  if (internals.TableQuad)
-  {
-    internals.TableQuad->ReleaseGraphicsResources(w);
-    internals.TableQuad.reset();
-  }
+  internals.Targets.Release(w);
+  internals.LightingTable.Release(w);
   if (internals.CompositeQuad)
   {
     internals.CompositeQuad->ReleaseGraphicsResources(w);
@@ -1849,7 +1574,6 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.FrameValid = false;
   internals.Placed = false;
   internals.FixedState.clear();
-  internals.TableKey.clear();
   internals.ColourSources.clear();
   internals.ResolveKey.clear();
   this->NumberOfSamples = 0;
