@@ -3,9 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataArray.h"
 #include "vtkDataObject.h"
-#include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -42,21 +40,16 @@
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 
 #include "vtkParticleCompat.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <limits>
 #include <map>
 #include <memory>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace
