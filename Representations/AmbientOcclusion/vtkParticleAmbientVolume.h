@@ -42,11 +42,11 @@
  * a larger grid is halved with a warning. The GPU's largest 3D texture bounds every axis.
  *
  * Where it runs (GPUVoxelisation, default on): the voxelisation, the mips and the conversion to
- * half floats run in OpenGL 4.3 compute shaders (Shaders/AmbientVolume.glsl): only the spheres
- * (32 bytes each, centres in voxel units formed in double) go to the GPU, one invocation per
- * sphere and voxel slice sums the sphere's weights and then deposits them with float additions
- * by compare-and-swap, one per voxel averages 2x2x2 children into the next level, and one per
- * voxel stores each level into the texture. Off, or in a context below OpenGL 4.3 (with one
+ * half floats run in OpenGL 4.3 compute shaders (Shaders/AmbientOcclusion/AmbientVolume.glsl): only
+ * the spheres (32 bytes each, centres in voxel units formed in double) go to the GPU, one
+ * invocation per sphere and voxel slice sums the sphere's weights and then deposits them with float
+ * additions by compare-and-swap, one per voxel averages 2x2x2 children into the next level, and one
+ * per voxel stores each level into the texture. Off, or in a context below OpenGL 4.3 (with one
  * warning), the same arithmetic runs on the CPU (vtkSMPTools, slab by slab along z, no races)
  * and the levels are converted to half floats in parallel and uploaded. The two agree to float
  * rounding (the order of the GPU's additions varies); Voxelise() is the CPU path without a

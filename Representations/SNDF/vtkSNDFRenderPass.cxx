@@ -3,9 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataArray.h"
 #include "vtkDataObject.h"
-#include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -33,39 +31,31 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
-#include "vtkSMPTools.h"
+#include "vtkSNDFColourCoordinates.h"
+#include "vtkSNDFLightingTable.h"
+#include "vtkSNDFRecolouring.h"
+#include "vtkSNDFTargets.h"
 #include "vtkSNDFTileCache.h"
 #include "vtkSNDFViewPlacement.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 
 #include "vtkParticleCompat.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <limits>
 #include <map>
 #include <memory>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace
 {
-// the colour attachments of the G-buffer (0: colour as drawn; see SNDFAccumulate.glsl)
-const unsigned int NumberOfAttachments = 3;
-// sub-samples per axis of the whole [-1, 1] square for the lighting table (per bin: this over
-// the bins per axis, at least 8)
-const int TableSubsamplesPerAxis = 512;
-// rows of the lighting table per bin (SNDFBins.glsl): D, S, their slopes in u.x and u.y, the
-// centroid
-const int TableRows = 7;
+// the colour attachments of the G-buffer (vtkSNDFTargets)
+const unsigned int NumberOfAttachments = vtkSNDFTargets::NumberOfAttachments;
 
 // sample passes in one Render() from which it reports progress
 const int ProgressSamples = 8;
@@ -114,150 +104,6 @@ bool IsSampledParticleMapper(vtkAbstractMapper* mapper)
   return particles && particles->GetDrawsSphereGlyphs();
 }
 
-// whether the mapper colours by scalars (VTK's vtkMapper::MapScalars decides the same way): its
-// shader's diffuse and ambient colours are then the scalars' (vtkOpenGLPolyDataMapper), not the
-// property's; an input that is not a data set counts as coloured by scalars
-bool UsesScalarColours(vtkMapper* mapper)
-{
-  if (!mapper->GetScalarVisibility())
-  {
-    return false;
-  }
-  vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  int cellFlag = 0;
-  return !input ||
-    vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
-      mapper->GetArrayId(), mapper->GetArrayName(), cellFlag) != nullptr;
-}
-
-// The colours the samples of a particle actor hold, as far as a colour map makes them: its
-// mapper's mapped scalars (vtkMapper::MapScalars, as vtkParticleSphereMapper colours), null for
-// the property's colour.
-vtkUnsignedCharArray* MappedColours(vtkActor* actor)
-{
-  vtkMapper* mapper = actor->GetMapper();
-  return UsesScalarColours(mapper) ? mapper->MapScalars(1.0) : nullptr;
-}
-
-// Where a particle actor's colours come from a lookup table of one value per particle (as
-// vtkMapper::MapScalars maps them): the point array, the table and the component it maps (-1:
-// the magnitude). False for direct colours (unsigned char scalars in the default colour mode, the
-// direct mode), cell scalars and the RGB vector mode.
-bool ColourCoordinateSource(
-  vtkActor* actor, vtkDataArray*& array, vtkScalarsToColors*& table, int& component)
-{
-  vtkMapper* mapper = actor->GetMapper();
-  vtkDataSet* input = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  if (!input || !UsesScalarColours(mapper))
-  {
-    return false;
-  }
-  table = mapper->GetLookupTable();
-  int cellFlag = 0;
-  array = vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(),
-    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-  if (!table || !array || cellFlag != 0 || array->GetNumberOfTuples() != input->GetNumberOfPoints())
-  {
-    return false;
-  }
-  const int mode = mapper->GetColorMode();
-  if (mode == VTK_COLOR_MODE_DIRECT_SCALARS ||
-    (mode == VTK_COLOR_MODE_DEFAULT && vtkUnsignedCharArray::SafeDownCast(array)))
-  {
-    return false;
-  }
-  const int n = array->GetNumberOfComponents();
-  component = 0;
-  if (n > 1)
-  {
-    if (table->GetVectorMode() == vtkScalarsToColors::COMPONENT)
-    {
-      component = std::min(std::max(table->GetVectorComponent(), 0), n - 1);
-    }
-    else if (table->GetVectorMode() == vtkScalarsToColors::MAGNITUDE &&
-      table->GetVectorComponent() == 0 &&
-      (table->GetVectorSize() == -1 || table->GetVectorSize() >= n))
-    {
-      component = -1;
-    }
-    else
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-// The 3 x 3 matrix M with M o = n for each pair (o, n) of `pairs` (old and new colour, three
-// values each): least squares through the pseudo-inverse of sum o o^T (minimum norm where the
-// old colours span fewer than three dimensions). False unless every pair is met within
-// `tolerance` and no entry of M exceeds 16 in magnitude (the bins' 16-bit mean colours are
-// multiplied by it: at most 16 * 3 * 2 / 65535 = 0.37 / 255 of quantisation error).
-bool FitColourMatrix(
-  const std::vector<std::array<double, 6>>& pairs, double m[3][3], double tolerance)
-{
-  double g[3][3] = { { 0.0 } };
-  double b[3][3] = { { 0.0 } };
-  for (const auto& pair : pairs)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        g[i][j] += pair[i] * pair[j];
-        b[i][j] += pair[i] * pair[3 + j];
-      }
-    }
-  }
-  double eigenvalues[3];
-  double vectors[3][3];
-  double* gRows[3] = { g[0], g[1], g[2] };
-  double* vRows[3] = { vectors[0], vectors[1], vectors[2] };
-  vtkMath::Jacobi(gRows, eigenvalues, vRows); // (eigenvalues decreasing, vectors in columns)
-  double inverse[3][3] = { { 0.0 } };
-  for (int k = 0; k < 3; ++k)
-  {
-    if (eigenvalues[k] <= 1e-10 * std::max(eigenvalues[0], 1e-300))
-    {
-      continue;
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        inverse[i][j] += vectors[i][k] * vectors[j][k] / eigenvalues[k];
-      }
-    }
-  }
-  for (int row = 0; row < 3; ++row)
-  {
-    for (int column = 0; column < 3; ++column)
-    {
-      // M^T = G^+ B
-      m[row][column] = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        m[row][column] += inverse[column][k] * b[k][row];
-      }
-      if (!(std::abs(m[row][column]) <= 16.0))
-      {
-        return false;
-      }
-    }
-  }
-  for (const auto& pair : pairs)
-  {
-    for (int row = 0; row < 3; ++row)
-    {
-      const double mapped = m[row][0] * pair[0] + m[row][1] * pair[1] + m[row][2] * pair[2];
-      if (!(std::abs(mapped - pair[3 + row]) <= tolerance))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -270,21 +116,16 @@ public:
   }
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Context;
-  // the view-sized objects, made anew for each size
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Target;
-  vtkSmartPointer<vtkTextureObject> Attachments[NumberOfAttachments];
-  vtkSmartPointer<vtkTextureObject> Depth;
-  vtkSmartPointer<vtkTextureObject> Image;
-  vtkSmartPointer<vtkTextureObject> ImageDepth;
-  vtkNew<vtkOpenGLFramebufferObject> TableTarget;
-  vtkNew<vtkTextureObject> Table;
-  std::unique_ptr<vtkOpenGLQuadHelper> TableQuad;
-  std::string TableQuadSource;
+  // the view-sized targets (G-buffer, shaded picture, checkpoint, display), made anew for each
+  // size
+  vtkSNDFTargets Targets;
+  // the lighting table (Eqs. 12-14) and what it was built for
+  vtkSNDFLightingTable LightingTable;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   vtkNew<vtkParticleComputeProgram> Accumulate;
   vtkNew<vtkParticleComputeProgram> Resolve;
-  // the error estimate: the picture at the last check, the difference program and its sums
-  vtkSmartPointer<vtkTextureObject> Checkpoint;
+  // the error estimate: the difference program and its sums (the picture at the last check:
+  // Targets.Checkpoint)
   vtkNew<vtkParticleComputeProgram> Difference;
   vtkSmartPointer<vtkOpenGLBufferObject> Totals = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   int CheckedSamples = 0;
@@ -293,10 +134,6 @@ public:
   vtkTimeStamp ShaderTime;
   vtkNew<vtkLightsPass> Lights;
 
-  int Width = 0;
-  int Height = 0;
-  bool HaveTable = false;
-  int TableBins = 0;
   // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
   // position, focal point and parallel scale in parallel projection), and its virtual plane
   // (View).
@@ -304,8 +141,6 @@ public:
   bool FrameValid = false;
   vtkSNDFViewPlacement View;
   using Between = vtkSNDFViewPlacement::Between;
-  vtkSmartPointer<vtkTextureObject> DisplayImage;
-  vtkSmartPointer<vtkTextureObject> DisplayDepth;
   vtkNew<vtkParticleComputeProgram> BoxFilter;
   // the view of the last MapView() and its size in texels, and the view of the last frame
   // (mapped or plain)
@@ -316,7 +151,6 @@ public:
   bool Shown = false;
   // jittered sample passes since the frame started (the Halton index of the next one)
   int Sequence = 0;
-  std::vector<double> TableKey;
   std::vector<double> ResolveKey;
   std::set<std::string> Warned;
   std::string ProgressText;
@@ -335,611 +169,10 @@ public:
   };
   std::map<vtkAbstractMapper*, ColourSource> ColourSources;
   int RawMaterial = 0;
-  // Colour-map changes (class description, "Colour"): per particle actor (in the order of the
-  // view's props) the mapped scalar colours its samples hold (null: the property's colour) and
-  // the array's modification time then; the colour key, the lookup tables' modification times.
-  struct SampledColours
-  {
-    vtkSmartPointer<vtkUnsignedCharArray> Colours;
-    vtkMTimeType Time = 0;
-    // the diffuse colour stored is Scale * the mapped colour (Scale: the diffuse coefficient,
-    // or 1 where the shade applies it, RawMaterial 1), or Solid where there are no scalars
-    double Scale = 1.0;
-    double Solid[3] = { 0.0, 0.0, 0.0 };
-  };
-  std::vector<SampledColours> Colours;
-  std::vector<double> ColourKey;
-  // Colour coordinates (class description, "Colour"), for up to MaximumCoordinateActors particle
-  // actors each coloured through a lookup table or by its property's colour (at least one
-  // through a table): per actor, each particle's value (as the table sees it) in [0, 1] over the
-  // array's finite range, in a float texture buffer the sample pass reads by particle id; the
-  // sample holds t' = (a + Margin + (1 - 2 Margin) t) / K for actor a of K (CoordinateOffset,
-  // CoordinateScale; a solid actor t = 0) in prDiffuse.a (MomentsInShader: the shader variant
-  // with it). Ramp is the stored colour as a function of t' (RampPerActor RGBA entries per
-  // actor) for the maps the samples hold.
-  static constexpr int RampPerActor = 4096;
-  static constexpr int MaximumCoordinateActors = 4;
-  struct ColourCoordinates
-  {
-    bool Valid = false;
-    bool Solid = false; // the property's colour: no texture, t = 0
-    vtkWeakPointer<vtkDataArray> Array;
-    vtkMTimeType Time = 0;
-    int Component = 0;
-    double Range[2] = { 0.0, 0.0 };
-    // the distinct values (an indexed table maps t to the nearest; found when first needed,
-    // empty beyond 4096 values)
-    bool HaveCategories = false;
-    std::vector<double> Categories;
-    vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
-    vtkSmartPointer<vtkTextureObject> Texture;
-  };
-  std::vector<ColourCoordinates> Coordinates;
-  std::vector<vtkProp*> CoordinateProps;
-  std::vector<float> Ramp;
-  vtkSmartPointer<vtkTextureObject> Ramps;
-  // a one-value buffer texture that solid actors' draws read
-  vtkSmartPointer<vtkOpenGLBufferObject> SolidBuffer;
-  vtkSmartPointer<vtkTextureObject> SolidTexture;
-  bool MomentsInShader = false;
-
-  double Margin() const { return this->Coordinates.size() > 1 ? 0.02 : 0.0; }
-
-  // Whether the particle actors can keep colour coordinates: 1 to MaximumCoordinateActors
-  // actors, each coloured through a lookup table (ColourCoordinateSource) or by its property's
-  // colour, at least one through a table.
-  static bool CoordinateActors(const std::vector<vtkActor*>& particles)
-  {
-    if (particles.empty() || particles.size() > MaximumCoordinateActors)
-    {
-      return false;
-    }
-    bool table = false;
-    for (vtkActor* actor : particles)
-    {
-      vtkDataArray* array = nullptr;
-      vtkScalarsToColors* lut = nullptr;
-      int component = 0;
-      if (ColourCoordinateSource(actor, array, lut, component))
-      {
-        table = true;
-      }
-      else if (UsesScalarColours(actor->GetMapper()))
-      {
-        return false; // direct colours, cell scalars, RGB vector mode
-      }
-    }
-    return table;
-  }
-
-  // The colour coordinates of the particle actors up to date (an actor's computed again only when
-  // its array, the array's modification time or the component changed); false where they cannot
-  // be kept: non-finite values (NaN or Inf: the table's NaN and out-of-range colours are not a
-  // function of the clamped value), more particles than a texture buffer holds. For actors that
-  // pass CoordinateActors() (Render() checks it first).
-  bool UpdateCoordinates(
-    const std::vector<vtkActor*>& particles, vtkOpenGLRenderWindow* context, vtkObject* owner)
-  {
-    this->Coordinates.resize(particles.size());
-    this->CoordinateProps.assign(particles.begin(), particles.end());
-    bool solid = false;
-    for (std::size_t a = 0; a < particles.size(); ++a)
-    {
-      if (!this->UpdateActorCoordinates(this->Coordinates[a], particles[a], context, owner))
-      {
-        return false;
-      }
-      solid = solid || this->Coordinates[a].Solid;
-    }
-    if (solid && !this->SolidTexture)
-    {
-      this->SolidBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-      this->SolidTexture = vtkSmartPointer<vtkTextureObject>::New();
-      this->SolidTexture->SetContext(context);
-      const std::vector<float> zero(1, 0.0f);
-      if (!this->SolidBuffer->Upload(zero, vtkOpenGLBufferObject::TextureBuffer) ||
-        !this->SolidTexture->CreateTextureBuffer(1, 1, VTK_FLOAT, this->SolidBuffer))
-      {
-        this->SolidTexture = nullptr;
-        return false;
-      }
-    }
-    return true;
-  }
-
-  bool UpdateActorCoordinates(
-    ColourCoordinates& c, vtkActor* actor, vtkOpenGLRenderWindow* context, vtkObject* owner)
-  {
-    vtkDataArray* array = nullptr;
-    vtkScalarsToColors* table = nullptr;
-    int component = 0;
-    if (!ColourCoordinateSource(actor, array, table, component))
-    {
-      c.Solid = true; // (CoordinateActors: the property's colour)
-      c.Valid = true;
-      return true;
-    }
-    if (!c.Solid && c.Array == array && c.Time == array->GetMTime() && c.Component == component)
-    {
-      return c.Valid;
-    }
-    c.Solid = false;
-    c.Valid = false;
-    c.Array = array;
-    c.Time = array->GetMTime();
-    c.Component = component;
-    c.HaveCategories = false;
-    c.Categories.clear();
-    const vtkIdType n = array->GetNumberOfTuples();
-    GLint limit = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
-    if (n < 1 || n > static_cast<vtkIdType>(limit))
-    {
-      if (n > 0 && this->FirstWarning("coordinates " + std::to_string(n)))
-      {
-        vtkWarningWithObjectMacro(owner, << n << " particles exceed the context's texture buffer "
-                                         << "size (" << limit << "): a new colour map samples "
-                                         << "again unless its colours are linear in the old ones.");
-      }
-      return false;
-    }
-    const int comps = array->GetNumberOfComponents();
-    std::vector<double> values(static_cast<std::size_t>(n));
-    vtkSMPTools::For(0, n,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        std::vector<double> tuple(static_cast<std::size_t>(comps));
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          if (component >= 0)
-          {
-            values[i] = array->GetComponent(i, component);
-            continue;
-          }
-          array->GetTuple(i, tuple.data());
-          double sum = 0.0;
-          for (double v : tuple)
-          {
-            sum += v * v;
-          }
-          values[i] = std::sqrt(sum);
-        }
-      });
-    double lo = VTK_DOUBLE_MAX;
-    double hi = -VTK_DOUBLE_MAX;
-    for (double v : values)
-    {
-      if (!std::isfinite(v))
-      {
-        return false;
-      }
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-    c.Range[0] = lo;
-    c.Range[1] = hi;
-    std::vector<float> t(values.size());
-    const double scale = hi > lo ? 1.0 / (hi - lo) : 0.0;
-    vtkSMPTools::For(0, n,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          t[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - lo) * scale)));
-        }
-      });
-    if (!c.Buffer)
-    {
-      c.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    }
-    if (c.Texture)
-    {
-      c.Texture->ReleaseGraphicsResources(context);
-    }
-    c.Texture = vtkSmartPointer<vtkTextureObject>::New();
-    c.Texture->SetContext(context);
-    c.Valid = c.Buffer->Upload(t, vtkOpenGLBufferObject::TextureBuffer) &&
-      c.Texture->CreateTextureBuffer(static_cast<unsigned int>(n), 1, VTK_FLOAT, c.Buffer);
-    return c.Valid;
-  }
-
-  // Where the sample pass reads the coordinate of `prop`'s particles and how it places it in
-  // [0, 1] (t' = offset + scale t); null where `prop` keeps none.
-  vtkTextureObject* CoordinateSource(vtkProp* prop, float& offset, float& scale, int& solid) const
-  {
-    const auto found = std::find(this->CoordinateProps.begin(), this->CoordinateProps.end(), prop);
-    if (found == this->CoordinateProps.end() ||
-      this->Coordinates.size() != this->CoordinateProps.size())
-    {
-      return nullptr;
-    }
-    const std::size_t a = static_cast<std::size_t>(found - this->CoordinateProps.begin());
-    const double k = static_cast<double>(this->Coordinates.size());
-    offset = static_cast<float>((a + this->Margin()) / k);
-    scale = static_cast<float>((1.0 - 2.0 * this->Margin()) / k);
-    solid = this->Coordinates[a].Solid ? 1 : 0;
-    return solid ? this->SolidTexture.Get() : this->Coordinates[a].Texture.Get();
-  }
-
-  void DeactivateCoordinates()
-  {
-    for (ColourCoordinates& c : this->Coordinates)
-    {
-      if (c.Texture)
-      {
-        c.Texture->Deactivate();
-      }
-    }
-    if (this->SolidTexture)
-    {
-      this->SolidTexture->Deactivate();
-    }
-  }
-
-  void ReleaseCoordinates(vtkWindow* w)
-  {
-    for (ColourCoordinates& c : this->Coordinates)
-    {
-      if (c.Texture)
-      {
-        c.Texture->ReleaseGraphicsResources(w);
-      }
-      if (c.Buffer)
-      {
-        c.Buffer->ReleaseGraphicsResources();
-      }
-    }
-    this->Coordinates.clear();
-    this->CoordinateProps.clear();
-    this->Ramp.clear();
-    for (auto* texture : { &this->Ramps, &this->SolidTexture })
-    {
-      if (*texture)
-      {
-        (*texture)->ReleaseGraphicsResources(w);
-      }
-      *texture = nullptr;
-    }
-    if (this->SolidBuffer)
-    {
-      this->SolidBuffer->ReleaseGraphicsResources();
-    }
-    this->SolidBuffer = nullptr;
-  }
-
-  // The distinct values of an actor's coordinate array (at most 4096; false beyond).
-  static bool FindCategories(ColourCoordinates& c)
-  {
-    if (!c.HaveCategories && c.Array)
-    {
-      c.HaveCategories = true;
-      std::set<double> seen;
-      const int comps = c.Array->GetNumberOfComponents();
-      std::vector<double> tuple(static_cast<std::size_t>(comps));
-      for (vtkIdType i = 0; i < c.Array->GetNumberOfTuples() && seen.size() <= 4096; ++i)
-      {
-        double v = 0.0;
-        if (c.Component >= 0)
-        {
-          v = c.Array->GetComponent(i, c.Component);
-        }
-        else
-        {
-          c.Array->GetTuple(i, tuple.data());
-          for (double x : tuple)
-          {
-            v += x * x;
-          }
-          v = std::sqrt(v);
-        }
-        seen.insert(v);
-      }
-      if (seen.size() <= 4096)
-      {
-        c.Categories.assign(seen.begin(), seen.end());
-      }
-    }
-    return !c.Categories.empty();
-  }
-
-  // The stored colours (SampledColours `stored`: the scale times the table's colour, or the solid
-  // colour) at RampPerActor values of t per actor (the whole [0, 1] of t'), through the actors'
-  // lookup tables as they map now; alpha the table's (1 for a solid colour). An indexed
-  // (categorical) table maps each value to the colour of the nearest value the particles have:
-  // the quadrature's nodes (SNDFRecolour.glsl) fall near them, not on them. Empty where an
-  // indexed table meets more than 4096 distinct values.
-  std::vector<float> MakeRamp(
-    const std::vector<vtkActor*>& particles, const std::vector<SampledColours>& stored)
-  {
-    const int k = static_cast<int>(this->Coordinates.size());
-    if (k < 1 || particles.size() != this->Coordinates.size() || stored.size() != particles.size())
-    {
-      return std::vector<float>();
-    }
-    for (int a = 0; a < k; ++a)
-    {
-      if (!this->Coordinates[a].Solid &&
-        particles[a]->GetMapper()->GetLookupTable()->GetIndexedLookup() &&
-        !FindCategories(this->Coordinates[a]))
-      {
-        return std::vector<float>();
-      }
-    }
-    const int size = RampPerActor * k;
-    const double margin = this->Margin();
-    std::vector<float> ramp(4 * static_cast<std::size_t>(size));
-    for (int i = 0; i < size; ++i)
-    {
-      const double global = k * (i / (size - 1.0));
-      const int a = std::min(k - 1, static_cast<int>(global));
-      const double local =
-        std::min(1.0, std::max(0.0, (global - a - margin) / (1.0 - 2.0 * margin)));
-      const ColourCoordinates& c = this->Coordinates[a];
-      float* entry = &ramp[4 * static_cast<std::size_t>(i)];
-      if (c.Solid)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          entry[j] = static_cast<float>(stored[a].Solid[j]);
-        }
-        entry[3] = 1.0f;
-        continue;
-      }
-      vtkScalarsToColors* table = particles[a]->GetMapper()->GetLookupTable();
-      double v = c.Range[0] + (c.Range[1] - c.Range[0]) * local;
-      if (table->GetIndexedLookup())
-      {
-        auto above = std::lower_bound(c.Categories.begin(), c.Categories.end(), v);
-        if (above == c.Categories.end() ||
-          (above != c.Categories.begin() && v - *(above - 1) < *above - v))
-        {
-          --above;
-        }
-        v = *above;
-      }
-      const unsigned char* rgba = table->MapValue(v);
-      for (int j = 0; j < 3; ++j)
-      {
-        entry[j] = static_cast<float>(stored[a].Scale * rgba[j] / 255.0);
-      }
-      entry[3] = static_cast<float>(rgba[3] / 255.0);
-    }
-    return ramp;
-  }
-
-  // What the diffuse colour of an actor's samples is (see SampledColours), in modes 0 and 1.
-  SampledColours StoredColours(vtkActor* actor) const
-  {
-    SampledColours stored;
-    stored.Colours = MappedColours(actor);
-    stored.Time = stored.Colours ? stored.Colours->GetMTime() : 0;
-    vtkProperty* p = actor->GetProperty();
-    stored.Scale = this->RawMaterial == 1 ? 1.0 : p->GetDiffuse();
-    for (int c = 0; c < 3; ++c)
-    {
-      stored.Solid[c] = stored.Scale * p->GetDiffuseColor()[c];
-    }
-    return stored;
-  }
-
-  // The colours the particle actors' samples are taken with from now on (a restart, a recolour);
-  // the ramp of the colour coordinates with them.
-  void KeepColours(const std::vector<vtkActor*>& particles)
-  {
-    this->Colours.clear();
-    for (vtkActor* actor : particles)
-    {
-      this->Colours.push_back(this->StoredColours(actor));
-    }
-    this->Ramp.clear();
-    if (this->MomentsInShader)
-    {
-      this->Ramp = this->MakeRamp(particles, this->Colours);
-    }
-  }
-
-  // A new colour map (class description, "Colour"): 0 where the mapped colours did not change,
-  // 1 where the cached bins were recoloured (RecolourLinear, else RecolourMap), -1 where the
-  // samples must be taken again.
-  int Recolour(const std::vector<vtkActor*>& particles, bool coloured)
-  {
-    const int linear = this->RecolourLinear(particles, coloured);
-    return linear >= 0 ? linear : this->RecolourMap(particles, coloured);
-  }
-
-  // Any new colour maps of the particle actors' colour coordinates where the cache keeps their
-  // moments: the old and the new ramp to SNDFRecolour.glsl (mode 1). -1 where a coordinate
-  // itself changed (another array, component or values, an actor now coloured otherwise), the
-  // opacities changed, the ambient term of a table-coloured actor or a voxel-cone light carries
-  // the colours (`coloured`), or there are no moments.
-  int RecolourMap(const std::vector<vtkActor*>& particles, bool coloured)
-  {
-    if (!this->Cache->GetMoments() || !this->MomentsInShader || this->Ramp.empty() || coloured ||
-      particles.size() != this->Coordinates.size() ||
-      !std::equal(particles.begin(), particles.end(), this->CoordinateProps.begin()))
-    {
-      return -1;
-    }
-    std::vector<SampledColours> now;
-    for (std::size_t a = 0; a < particles.size(); ++a)
-    {
-      const ColourCoordinates& c = this->Coordinates[a];
-      vtkDataArray* array = nullptr;
-      vtkScalarsToColors* table = nullptr;
-      int component = 0;
-      const bool source = ColourCoordinateSource(particles[a], array, table, component);
-      if (!c.Valid || source == c.Solid)
-      {
-        return -1;
-      }
-      if (!c.Solid &&
-        (array != c.Array || array->GetMTime() != c.Time || component != c.Component ||
-          particles[a]->GetProperty()->GetAmbient() != 0.0))
-      {
-        return -1;
-      }
-      now.push_back(this->StoredColours(particles[a])); // (maps: the table's range)
-      if (!c.Solid && !now.back().Colours)
-      {
-        return -1;
-      }
-    }
-    const std::vector<float> ramp = this->MakeRamp(particles, now);
-    if (ramp.empty() || ramp.size() != this->Ramp.size())
-    {
-      return -1; // an indexed table with more than 4096 values
-    }
-    const std::size_t size = ramp.size() / 4;
-    for (std::size_t i = 0; i < size; ++i)
-    {
-      if (ramp[4 * i + 3] != this->Ramp[4 * i + 3])
-      {
-        return -1; // the opacities changed
-      }
-    }
-    std::vector<float> ramps = this->Ramp;
-    ramps.insert(ramps.end(), ramp.begin(), ramp.end());
-    // the old maps' quadrature error of a bin carried into the new maps through the least-squares
-    // linear map from the old ramp's colours to the new one's (both centred; 0 where that has
-    // entries beyond +-16)
-    double centre[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
-    for (std::size_t i = 0; i < size; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        centre[k] += this->Ramp[4 * i + k] / static_cast<double>(size);
-        centre[3 + k] += ramp[4 * i + k] / static_cast<double>(size);
-      }
-    }
-    std::vector<std::array<double, 6>> pairs(size);
-    for (std::size_t i = 0; i < size; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        pairs[i][k] = this->Ramp[4 * i + k] - centre[k];
-        pairs[i][3 + k] = ramp[4 * i + k] - centre[3 + k];
-      }
-    }
-    double residual[3][3];
-    if (!FitColourMatrix(pairs, residual, std::numeric_limits<double>::infinity()))
-    {
-      std::fill(&residual[0][0], &residual[0][0] + 9, 0.0);
-    }
-    if (!this->Ramps)
-    {
-      this->Ramps = vtkSmartPointer<vtkTextureObject>::New();
-    }
-    this->Ramps->SetContext(this->Context);
-    const int width = static_cast<int>(size);
-    if (!this->Ramps->Create2DFromRaw(width, 2, 4, VTK_FLOAT, ramps.data()) ||
-      this->Cache->RecolourMap(this->Ramps, width, residual) <= 0)
-    {
-      return -1;
-    }
-    this->ResolveKey.clear();
-    this->KeepColours(particles);
-    return 1;
-  }
-
-  // A new colour map whose new colours are a linear function of the old ones, c' = M c for every
-  // particle: the cached tiles' bin colours multiplied by M (1); 0 where the mapped colours did
-  // not change, -1 where M does not exist. `coloured`: an object-space ambient light in the chain
-  // that carries the particles' colours (the voxel-cone pass), drawn into the colour target.
-  int RecolourLinear(const std::vector<vtkActor*>& particles, bool coloured)
-  {
-    if (particles.size() != this->Colours.size())
-    {
-      return -1;
-    }
-    // the distinct (old, new) colour pairs in the units of the stored diffuse colour
-    std::vector<std::array<double, 6>> pairs;
-    bool changed = false;
-    for (std::size_t a = 0; a < particles.size(); ++a)
-    {
-      const SampledColours now = this->StoredColours(particles[a]);
-      const SampledColours& then = this->Colours[a];
-      vtkProperty* p = particles[a]->GetProperty();
-      // (every actor's colours make pairs, the unchanged ones too: M must keep them)
-      if (!now.Colours && !then.Colours)
-      {
-        // the property's colour: one pair (its ambient term is the ambient colour's)
-        if (!std::equal(now.Solid, now.Solid + 3, then.Solid))
-        {
-          if (coloured)
-          {
-            return -1;
-          }
-          changed = true;
-        }
-        pairs.push_back({ then.Solid[0], then.Solid[1], then.Solid[2], now.Solid[0], now.Solid[1],
-          now.Solid[2] });
-        continue;
-      }
-      if (!now.Colours || !then.Colours || now.Colours->GetNumberOfComponents() != 4 ||
-        then.Colours->GetNumberOfComponents() != 4 ||
-        now.Colours->GetNumberOfTuples() != then.Colours->GetNumberOfTuples())
-      {
-        return -1;
-      }
-      if (now.Colours == then.Colours && now.Time != then.Time)
-      {
-        return -1; // mapped anew into the same array: the old colours are gone
-      }
-      if (now.Colours != then.Colours || now.Scale != then.Scale)
-      {
-        if (p->GetAmbient() != 0.0 || coloured)
-        {
-          return -1; // colour-dependent light in the colour target, which keeps no bins
-        }
-        changed = true;
-      }
-      std::unordered_map<std::uint32_t, std::uint32_t> seen;
-      const unsigned char* o = then.Colours->GetPointer(0);
-      const unsigned char* n = now.Colours->GetPointer(0);
-      const vtkIdType count = now.Colours->GetNumberOfTuples();
-      for (vtkIdType i = 0; i < count; ++i, o += 4, n += 4)
-      {
-        if (o[3] != n[3])
-        {
-          return -1; // the opacity changed too
-        }
-        const std::uint32_t key = o[0] | (o[1] << 8) | (o[2] << 16);
-        const std::uint32_t value = n[0] | (n[1] << 8) | (n[2] << 16);
-        const auto found = seen.emplace(key, value);
-        if (!found.second && found.first->second != value)
-        {
-          return -1; // one old colour, two new ones: not a function of the colour
-        }
-        if (found.second && seen.size() > 4096)
-        {
-          return -1; // a continuous map: not worth the fit
-        }
-      }
-      for (const auto& pair : seen)
-      {
-        std::array<double, 6> entry;
-        for (int c = 0; c < 3; ++c)
-        {
-          entry[c] = then.Scale / 255.0 * ((pair.first >> (8 * c)) & 0xFFu);
-          entry[3 + c] = now.Scale / 255.0 * ((pair.second >> (8 * c)) & 0xFFu);
-        }
-        pairs.push_back(entry);
-      }
-    }
-    if (!changed)
-    {
-      return 0;
-    }
-    double matrix[3][3];
-    if (!FitColourMatrix(pairs, matrix, 0.05 / 255.0))
-    {
-      return -1;
-    }
-    this->Cache->Recolour(matrix);
-    this->ResolveKey.clear();
-    this->KeepColours(particles);
-    return 1;
-  }
+  // Colour-map changes (class description, "Colour"): the colour coordinates of the particle
+  // actors and the colours their samples hold, recoloured where a new map allows
+  vtkSNDFColourCoordinates Coordinates;
+  vtkSNDFRecolouring Recolouring{ this->Cache, &this->Coordinates };
 
   // GPU times of the last timed Render() per stage (sample, accumulate, shade)
   vtkParticleStageTimer Timer{ 3 };
@@ -954,120 +187,6 @@ public:
 
   // true the first time `what` is reported
   bool FirstWarning(const std::string& what) { return this->Warned.insert(what).second; }
-
-  void ReleaseTextures(vtkWindow* w)
-  {
-    if (this->Target)
-    {
-      this->Target->ReleaseGraphicsResources(w);
-    }
-    for (auto& attachment : this->Attachments)
-    {
-      if (attachment)
-      {
-        attachment->ReleaseGraphicsResources(w);
-      }
-      attachment = nullptr;
-    }
-    for (auto* texture : { &this->Depth, &this->Image, &this->ImageDepth, &this->Checkpoint,
-           &this->DisplayImage, &this->DisplayDepth })
-    {
-      if (*texture)
-      {
-        (*texture)->ReleaseGraphicsResources(w);
-      }
-      *texture = nullptr;
-    }
-    this->Target = nullptr;
-    this->Width = 0;
-    this->Height = 0;
-  }
-
-  void NewTextures()
-  {
-    this->Target = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    for (auto& attachment : this->Attachments)
-    {
-      attachment = vtkSmartPointer<vtkTextureObject>::New();
-    }
-    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
-    this->Image = vtkSmartPointer<vtkTextureObject>::New();
-    this->ImageDepth = vtkSmartPointer<vtkTextureObject>::New();
-    this->Checkpoint = vtkSmartPointer<vtkTextureObject>::New();
-  }
-
-  // The G-buffer and the shaded texels for a width x height rectangle of texels (the window's
-  // pixels, or the rectangle of a view between two levels).
-  void AllocateTargets(vtkOpenGLRenderWindow* context, int width, int height)
-  {
-    this->ReleaseTextures(context);
-    this->NewTextures();
-    this->Target->SetContext(context);
-    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-    {
-      vtkTextureObject* t = this->Attachments[a];
-      t->SetContext(context);
-      if (a > 0)
-      {
-        t->SetInternalFormat(GL_RGBA16F);
-        t->SetFormat(GL_RGBA);
-        t->SetDataType(GL_FLOAT);
-        t->Allocate2D(width, height, 4, VTK_FLOAT);
-      }
-      else
-      {
-        // 8 bits, as the window: the background and other geometry come out exactly as drawn
-        // without the pass (a particle's ambient term is quantised per sample, < 0.5/255)
-        t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-      }
-    }
-    this->Depth->SetContext(context);
-    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    AllocateImage(this->Image, context, width, height, false);
-    AllocateImage(this->Checkpoint, context, width, height, false);
-    AllocateImage(this->ImageDepth, context, width, height, true);
-    vtkOpenGLState* ostate = context->GetState();
-    ostate->PushFramebufferBindings();
-    this->Target->Bind();
-    for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-    {
-      this->Target->AddColorAttachment(a, this->Attachments[a]);
-    }
-    this->Target->AddDepthAttachment(this->Depth);
-    ostate->PopFramebufferBindings();
-    this->Width = width;
-    this->Height = height;
-  }
-
-  // The window's picture of a view between two levels (SNDFBoxFilter.glsl).
-  void AllocateDisplay(vtkOpenGLRenderWindow* context, int width, int height)
-  {
-    for (auto* image : { &this->DisplayImage, &this->DisplayDepth })
-    {
-      if (*image && (*image)->GetHandle() && static_cast<int>((*image)->GetWidth()) == width &&
-        static_cast<int>((*image)->GetHeight()) == height)
-      {
-        continue;
-      }
-      if (*image)
-      {
-        (*image)->ReleaseGraphicsResources(context);
-      }
-      *image = vtkSmartPointer<vtkTextureObject>::New();
-      AllocateImage(*image, context, width, height, image == &this->DisplayDepth);
-    }
-  }
-
-  // a float picture: RGBA, or one depth channel
-  static void AllocateImage(
-    vtkTextureObject* image, vtkOpenGLRenderWindow* context, int width, int height, bool depth)
-  {
-    image->SetContext(context);
-    image->SetInternalFormat(depth ? GL_R32F : GL_RGBA32F);
-    image->SetFormat(depth ? GL_RED : GL_RGBA);
-    image->SetDataType(GL_FLOAT);
-    image->Allocate2D(width, height, depth ? 1 : 4, VTK_FLOAT);
-  }
 };
 
 vtkStandardNewMacro(vtkSNDFRenderPass);
@@ -1204,9 +323,9 @@ bool vtkSNDFRenderPass::PostReplaceShaderValues(std::string& vertexShader,
     : "";
   // with the colour coordinates' moments kept (class description, "Colour") the particle's
   // coordinate goes into the diffuse target's alpha (blending is off there during the sample pass)
-  const bool coordinates = this->Internals->MomentsInShader;
+  const bool coordinates = this->Internals->Coordinates.InShader;
   // (t' = offset + scale t, t read by particle id; a solid actor reads t = 0 from a one-value
-  // buffer: vtkInternals::CoordinateSource)
+  // buffer: vtkSNDFColourCoordinates::Source)
   hooks.Insert(vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec",
     coordinates ? "uniform int prRawMaterial;\nuniform samplerBuffer prColourCoordinates;\n"
                   "uniform float prCoordinateOffset;\nuniform float prCoordinateScale;\n"
@@ -1241,11 +360,11 @@ bool vtkSNDFRenderPass::SetShaderParameters(
   float scale = 1.0f;
   int solid = 0;
   vtkTextureObject* coordinates = IsSampledParticleMapper(mapper)
-    ? this->Internals->CoordinateSource(prop, offset, scale, solid)
+    ? this->Internals->Coordinates.Source(prop, offset, scale, solid)
     : nullptr;
   if (coordinates && program->IsUniformUsed("prColourCoordinates"))
   {
-    // (active until the sample pass ends: DeactivateCoordinates)
+    // (active until the sample pass ends: vtkSNDFColourCoordinates::Deactivate)
     coordinates->Activate();
     program->SetUniformi("prColourCoordinates", coordinates->GetTextureUnit());
     program->SetUniformf("prCoordinateOffset", offset);
@@ -1288,75 +407,6 @@ struct vtkSNDFRenderPass::vtkFrame
   vtkTextureObject* Shown = nullptr; // the shaded picture the composite draws
   vtkTextureObject* ShownDepth = nullptr;
 };
-
-namespace
-{
-// The lighting table's fragment shader (Eqs. 12-14): per bin and row, the least-squares plane of
-// the lit value over the part of the bin inside the disk.
-std::string LightingTableMain()
-{
-  return "ivec2 prTexel = ivec2(texCoord * vec2(float(prBins * prBins), float(prTableRows)));\n"
-         "  int prRow = prTexel.y;\n"
-         "  int prLight = (prRow == 1 || prRow == 4 || prRow == 5) ? 1 : 0;\n"
-         "  float prN = 0.0;\n"
-         "  vec2 prU = vec2(0.0);\n"
-         "  vec3 prUU = vec3(0.0);\n"
-         "  vec3 prF = vec3(0.0);\n"
-         "  vec3 prUFx = vec3(0.0);\n"
-         "  vec3 prUFy = vec3(0.0);\n"
-         "  for (int i = 0; i < prSubsamples; ++i)\n"
-         "  {\n"
-         "    for (int j = 0; j < prSubsamples; ++j)\n"
-         "    {\n"
-         "      vec2 prUV = (vec2(i, j) + 0.5) / float(prSubsamples);\n"
-         "      vec3 prNormal;\n"
-         "      if (prSNDFBinPoint(prTexel.x, prBins, prUV, prNormal))\n"
-         "      {\n"
-         "        vec3 prValue = prRow == 6 ? vec3(0.0) : prLightSum(prNormal, prLight);\n"
-         "        prN += 1.0;\n"
-         "        prU += prUV;\n"
-         "        prUU += vec3(prUV.x * prUV.x, prUV.x * prUV.y, prUV.y * prUV.y);\n"
-         "        prF += prValue;\n"
-         "        prUFx += prUV.x * prValue;\n"
-         "        prUFy += prUV.y * prValue;\n"
-         "      }\n"
-         "    }\n"
-         "  }\n"
-         "  vec3 prOut = vec3(0.0);\n"
-         "  if (prN == 0.0)\n"
-         "  {\n"
-         "    // a bin outside the disk holds no sample; give it the normal of the rim point "
-         "nearest\n"
-         "    // to its centre and no slope\n"
-         "    vec3 prCentre;\n"
-         "    prSNDFBinPoint(prTexel.x, prBins, vec2(0.5), prCentre);\n"
-         "    vec2 prRim = normalize(prCentre.xy) * 0.9999;\n"
-         "    vec3 prValue = prLightSum(vec3(prRim, sqrt(max(0.0, 1.0 - dot(prRim, prRim)))), "
-         "prLight);\n"
-         "    prOut = prRow < 2 ? prValue : (prRow == 6 ? vec3(0.5, 0.5, 0.0) : vec3(0.0));\n"
-         "  }\n"
-         "  else\n"
-         "  {\n"
-         "    // least-squares plane f = mean + slope . (u - centroid) over bin ∩ disk (the\n"
-         "    // covariance regularised by 1e-4: a sliver of a bin at the rim gets no slope across "
-         "it)\n"
-         "    vec2 prMeanU = prU / prN;\n"
-         "    vec3 prMeanF = prF / prN;\n"
-         "    float prCxx = prUU.x / prN - prMeanU.x * prMeanU.x + 1.0e-4;\n"
-         "    float prCxy = prUU.y / prN - prMeanU.x * prMeanU.y;\n"
-         "    float prCyy = prUU.z / prN - prMeanU.y * prMeanU.y + 1.0e-4;\n"
-         "    vec3 prCxf = prUFx / prN - prMeanU.x * prMeanF;\n"
-         "    vec3 prCyf = prUFy / prN - prMeanU.y * prMeanF;\n"
-         "    float prDet = prCxx * prCyy - prCxy * prCxy;\n"
-         "    vec3 prSlopeX = (prCyy * prCxf - prCxy * prCyf) / prDet;\n"
-         "    vec3 prSlopeY = (prCxx * prCyf - prCxy * prCxf) / prDet;\n"
-         "    prOut = prRow < 2 ? prMeanF\n"
-         "      : (prRow == 6 ? vec3(prMeanU, 0.0)\n"
-         "      : ((prRow == 2 || prRow == 4) ? prSlopeX : prSlopeY));\n"
-         "  }\n"
-         "  gl_FragData[0] = vec4(prOut, 1.0);\n";
-}
-}
 
 //------------------------------------------------------------------------------
 void vtkSNDFRenderPass::Render(const vtkRenderState* s)
@@ -1486,7 +536,7 @@ void vtkSNDFRenderPass::CollectScene(vtkFrame& frame)
     if (mapper)
     {
       // a particle mapper's lookup table goes into the colour key: a new colour map keeps the
-      // samples where it can (vtkInternals::Recolour)
+      // samples where it can (vtkSNDFRecolouring)
       if (vtkParticleSphereMapper::SafeDownCast(mapper))
       {
         state.push_back(static_cast<double>(mapper->vtkAbstractMapper::GetMTime()));
@@ -1511,7 +561,7 @@ void vtkSNDFRenderPass::CollectScene(vtkFrame& frame)
     const bool seen = known != internals.ColourSources.end();
     if (!seen || known->second.Raw)
     {
-      if (!UsesScalarColours(mapper) && (!seen || known->second.Solid))
+      if (!vtkSNDFColourCoordinates::UsesScalarColours(mapper) && (!seen || known->second.Solid))
       {
         internals.RawMaterial = 2;
       }
@@ -1535,7 +585,7 @@ void vtkSNDFRenderPass::CollectScene(vtkFrame& frame)
       continue;
     }
     // the ambient term is drawn into the colour target (sampled); the diffuse colour the samples
-    // hold goes into the colour key (vtkInternals::Recolour)
+    // hold goes into the colour key (vtkSNDFRecolouring)
     state.push_back(p->GetAmbient());
     if (p->GetAmbient() != 0.0)
     {
@@ -1657,11 +707,11 @@ bool vtkSNDFRenderPass::ChooseBins(vtkFrame& frame)
   // bins whose S-MIP cache holds the view's tiles within the memory limit; the cache takes up
   // to eight views' worth of tiles where the limit allows (a zoom out by one level over a view
   // sampled whole needs five: four of the finer level, one of the coarser)
-  // With particle actors coloured through lookup tables (vtkInternals::CoordinateActors) the bins
-  // keep the moments of their colour coordinate (KeepColourCoordinates) where the memory holds
+  // With particle actors coloured through lookup tables (vtkSNDFColourCoordinates::CanKeep) the
+  // bins keep the moments of their colour coordinate (KeepColourCoordinates) where the memory holds
   // them with the bins asked for.
   const int viewTiles = vtkSNDFTileCache::GetTilesForView(width, height);
-  moments = this->KeepColourCoordinates && vtkInternals::CoordinateActors(particles);
+  moments = this->KeepColourCoordinates && vtkSNDFColourCoordinates::CanKeep(particles);
   auto slotsFor = [&](int b)
   {
     return static_cast<int>(std::min({ 8.0 * viewTiles,
@@ -1769,7 +819,7 @@ void vtkSNDFRenderPass::DescribeView(vtkFrame& frame)
   state.push_back(ren->GetBackgroundAlpha());
   state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(context)));
   // the passes inside this one (an AO pass put into the chain or changed samples anew), and
-  // whether one adds an ambient light that carries the particles' colours (vtkInternals::Recolour)
+  // whether one adds an ambient light that carries the particles' colours (vtkSNDFRecolouring)
   colouredLight = false;
   vtkRenderPass* inner = this->DelegatePass;
   for (int depth = 0; inner && depth < 16; ++depth)
@@ -1800,10 +850,12 @@ void vtkSNDFRenderPass::PrepareContext(vtkFrame& frame)
   }
   // the colour coordinates (computed again when their array changed) and the shader variant
   // that writes them
-  const bool coordinates = moments && internals.UpdateCoordinates(particles, context, this);
-  if (coordinates != internals.MomentsInShader)
+  const bool coordinates = moments &&
+    internals.Coordinates.Update(particles, context, this,
+      [&internals](const std::string& what) { return internals.FirstWarning(what); });
+  if (coordinates != internals.Coordinates.InShader)
   {
-    internals.MomentsInShader = coordinates;
+    internals.Coordinates.InShader = coordinates;
     internals.ShaderTime.Modified();
   }
   const bool timing = this->CollectTimings;
@@ -1836,13 +888,18 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
     internals.View.Place(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
   // a new colour map: the samples are recoloured where the new colours are a linear function of
   // the old ones, else taken again
-  if (sameFrame && colourKey != internals.ColourKey)
+  if (sameFrame && colourKey != internals.Recolouring.Key)
   {
-    const int recoloured = internals.Recolour(particles, colouredLight);
+    const int recoloured = internals.Recolouring.Recolour(
+      particles, colouredLight, internals.RawMaterial, internals.Context);
     sameFrame = recoloured >= 0;
+    if (recoloured > 0)
+    {
+      internals.ResolveKey.clear(); // (the bins changed)
+    }
     if (sameFrame)
     {
-      internals.ColourKey = colourKey;
+      internals.Recolouring.Key = colourKey;
       this->NumberOfRecolours += recoloured;
     }
   }
@@ -1856,7 +913,7 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
         vtkErrorMacro(<< "Could not allocate "
                       << slots * vtkSNDFTileCache::GetTileBytes(bins, moments) / 1048576.0
                       << " MB for the S-MIP cache: the view is rendered as without S-NDFs.");
-        internals.ReleaseTextures(context);
+        internals.Targets.Release(context);
         this->RenderPlain(s);
         return false;
       }
@@ -1865,8 +922,8 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
     internals.Cache->Clear();
     internals.StartFrame(camera, width, height);
     internals.FixedState = state;
-    internals.ColourKey = colourKey;
-    internals.KeepColours(particles);
+    internals.Recolouring.Key = colourKey;
+    internals.Recolouring.KeepColours(particles, internals.RawMaterial);
     internals.Placed = false;
     internals.Sequence = 0;
     internals.ResolveKey.clear();
@@ -1942,14 +999,14 @@ bool vtkSNDFRenderPass::PrepareTargets(vtkFrame& frame)
       return false;
     }
   }
-  if (texelsX != internals.Width || texelsY != internals.Height || !internals.Depth ||
-    !internals.Depth->GetHandle())
+  if (texelsX != internals.Targets.Width || texelsY != internals.Targets.Height ||
+    !internals.Targets.Depth || !internals.Targets.Depth->GetHandle())
   {
-    internals.AllocateTargets(context, texelsX, texelsY);
+    internals.Targets.Allocate(context, texelsX, texelsY);
   }
   if (between.Active)
   {
-    internals.AllocateDisplay(context, width, height);
+    internals.Targets.AllocateDisplay(context, width, height);
   }
   return true;
 }
@@ -2053,7 +1110,6 @@ bool vtkSNDFRenderPass::UpdateLightingTable(vtkFrame& frame)
   const vtkRenderState* s = frame.RenderState;
   vtkOpenGLRenderer* ren = frame.Renderer;
   vtkOpenGLRenderWindow* context = frame.Context;
-  vtkOpenGLState* ostate = frame.Context->GetState();
   vtkCamera* camera = frame.Camera;
   vtkProperty*& material = frame.Material;
   const int bins = frame.Bins;
@@ -2062,75 +1118,17 @@ bool vtkSNDFRenderPass::UpdateLightingTable(vtkFrame& frame)
   internals.Timer.Begin(2);
   internals.Lights->Render(s);
   const std::vector<double> tableKey = this->LightingTableKey(frame);
-  if (tableKey == internals.TableKey && internals.HaveTable)
+  if (internals.LightingTable.IsCurrent(tableKey))
   {
     return true;
   }
-  const std::string uniforms = ren->GetLightingUniforms();
-  const int complexity = ren->GetLightingComplexity();
-  const int count = ren->GetLightingCount();
-  std::string body = "vec3 prLightSum(vec3 normalVCVSOutput, int row)\n{\n"
-                     "  float specularPower = prSpecularPower;\n"
-                     "  vec4 vertexVC = vec4(0.0, 0.0, -prViewDistance, 1.0);\n" +
-    vtkParticleSphereMapper::GetLightSumCode(complexity, count) +
-    "  return row == 0 ? diffuse : specular;\n}\n";
-  const std::string source = uniforms + "\n" + body;
-  if (!internals.TableQuad || source != internals.TableQuadSource)
-  {
-    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::FSQ::Decl", vtkParticleShaders::Get("SNDFLightingTable") + "\n" + source);
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", LightingTableMain());
-    internals.TableQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, fs.c_str(), nullptr));
-    internals.TableQuadSource = source;
-  }
-  vtkOpenGLQuadHelper* quad = internals.TableQuad.get();
-  if (!quad->Program)
+  if (!internals.LightingTable.Build(ren, context, camera, material, bins, tableKey))
   {
     internals.Timer.End();
     vtkErrorMacro(<< "The S-NDF lighting table shader did not build.");
     this->RenderPlain(s);
     return false;
   }
-  if (internals.TableBins != bins || !internals.Table->GetHandle())
-  {
-    internals.Table->SetContext(context);
-    internals.Table->SetInternalFormat(GL_RGBA32F);
-    internals.Table->SetFormat(GL_RGBA);
-    internals.Table->SetDataType(GL_FLOAT);
-    internals.Table->Allocate2D(bins * bins, TableRows, 4, VTK_FLOAT);
-    internals.TableTarget->SetContext(context);
-    ostate->PushFramebufferBindings();
-    internals.TableTarget->Bind();
-    internals.TableTarget->AddColorAttachment(0, internals.Table);
-    internals.TableTarget->ActivateDrawBuffers(1);
-    ostate->PopFramebufferBindings();
-    internals.TableBins = bins;
-  }
-  context->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  ren->UpdateLightingUniforms(quad->Program);
-  quad->Program->SetUniformi("prBins", bins);
-  quad->Program->SetUniformi("prTableRows", TableRows);
-  quad->Program->SetUniformi("prSubsamples", std::max(32, TableSubsamplesPerAxis / bins));
-  quad->Program->SetUniformf("prSpecularPower", static_cast<float>(material->GetSpecularPower()));
-  quad->Program->SetUniformf("prViewDistance", static_cast<float>(camera->GetDistance()));
-  ostate->PushFramebufferBindings();
-  internals.TableTarget->Bind();
-  internals.TableTarget->ActivateDrawBuffers(1);
-  {
-    vtkOpenGLState::ScopedglViewport viewport(ostate);
-    vtkOpenGLState::ScopedglScissor scissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglViewport(0, 0, bins * bins, TableRows);
-    ostate->vtkglScissor(0, 0, bins * bins, TableRows);
-    quad->Render();
-  }
-  ostate->PopFramebufferBindings();
-  internals.TableKey = tableKey;
-  internals.HaveTable = true;
   ++this->NumberOfTableBuilds;
   return true;
 }
@@ -2147,7 +1145,7 @@ bool vtkSNDFRenderPass::MapTiles(vtkFrame& frame)
   // rebaked where shaded with an older table (re-lighting)
   const long long changes =
     internals.Cache->GetNumberOfDownsampledTiles() + internals.Cache->GetNumberOfClearedTiles();
-  if (!internals.Cache->MapView(placement, texelsX, texelsY, internals.Table,
+  if (!internals.Cache->MapView(placement, texelsX, texelsY, internals.LightingTable.GetTexture(),
         static_cast<long long>(this->NumberOfTableBuilds)))
   {
     internals.Timer.End();
@@ -2215,8 +1213,10 @@ void vtkSNDFRenderPass::ResolveView(vtkFrame& frame)
   resolve->SetUniform3f("prAmbientTerm", static_cast<float>(ambientTerm[0]),
     static_cast<float>(ambientTerm[1]), static_cast<float>(ambientTerm[2]));
   internals.Cache->BindView(resolve);
-  glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  glBindImageTexture(
+    0, internals.Targets.Image->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(
+    1, internals.Targets.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
   {
     resolve->Dispatch(4, 4, internals.Cache->BindViewPart(resolve, part));
@@ -2265,9 +1265,10 @@ void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
     vtkParticleComputeProgram* difference = internals.Difference;
     difference->Use();
     difference->SetUniform2i("prSize", texelsX, texelsY);
-    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(
-      1, internals.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      0, internals.Targets.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      1, internals.Targets.Checkpoint->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     vtkParticleComputeProgram::BindStorage(1, internals.Totals);
     difference->Dispatch(groupsX, groupsY);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -2286,8 +1287,8 @@ void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
     this->EstimatedError = mean * std::sqrt(static_cast<double>(m) / (n - m));
     this->ErrorTargetReached = this->EstimatedError <= this->ErrorTarget;
   }
-  glCopyImageSubData(internals.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
-    internals.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
+  glCopyImageSubData(internals.Targets.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
+    internals.Targets.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
   internals.CheckedSamples = n;
 }
 
@@ -2372,8 +1373,8 @@ void vtkSNDFRenderPass::RenderSampleTargets(vtkFrame& frame)
   const int texelsY = frame.TexelsY;
   internals.Timer.Begin(0);
   ostate->PushFramebufferBindings();
-  internals.Target->Bind();
-  internals.Target->ActivateDrawBuffers(NumberOfAttachments);
+  internals.Targets.Framebuffer->Bind();
+  internals.Targets.Framebuffer->ActivateDrawBuffers(NumberOfAttachments);
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
     vtkOpenGLState::ScopedglScissor scissor(ostate);
@@ -2386,7 +1387,7 @@ void vtkSNDFRenderPass::RenderSampleTargets(vtkFrame& frame)
       glClearBufferfv(GL_COLOR, static_cast<GLint>(a), zero);
     }
     vtkRenderState sampleState(ren);
-    sampleState.SetFrameBuffer(internals.Target);
+    sampleState.SetFrameBuffer(internals.Targets.Framebuffer);
     sampleState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
     // the particle targets take each fragment as it is (every shader writes alpha 1 there:
     // blending, which VTK keeps on for opaque geometry too, would only add a read-modify-write
@@ -2398,7 +1399,7 @@ void vtkSNDFRenderPass::RenderSampleTargets(vtkFrame& frame)
       this->DelegatePass->Render(&sampleState);
       this->PostRender(&sampleState);
     }
-    internals.DeactivateCoordinates(); // (SetShaderParameters activated them)
+    internals.Coordinates.Deactivate(); // (SetShaderParameters activated them)
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   }
   ostate->PopFramebufferBindings();
@@ -2419,18 +1420,19 @@ void vtkSNDFRenderPass::AccumulateSamples(vtkFrame& frame)
   const char* samplers[NumberOfAttachments] = { "prColour", "prNormal", "prDiffuse" };
   for (unsigned int a = 0; a < NumberOfAttachments; ++a)
   {
-    internals.Attachments[a]->Activate();
-    accumulate->SetUniformi(samplers[a], internals.Attachments[a]->GetTextureUnit());
+    internals.Targets.Attachments[a]->Activate();
+    accumulate->SetUniformi(samplers[a], internals.Targets.Attachments[a]->GetTextureUnit());
   }
-  internals.Depth->Activate();
-  accumulate->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
-  internals.Table->Activate();
-  accumulate->SetUniformi("prTable", internals.Table->GetTextureUnit());
+  internals.Targets.Depth->Activate();
+  accumulate->SetUniformi("prDepth", internals.Targets.Depth->GetTextureUnit());
+  vtkTextureObject* table = internals.LightingTable.GetTexture();
+  table->Activate();
+  accumulate->SetUniformi("prTable", table->GetTextureUnit());
   accumulate->SetUniform2i("prSize", texelsX, texelsY);
   accumulate->SetUniformi("prBins", bins);
   accumulate->SetUniformf("prTarget", static_cast<float>(this->TargetSamples));
   accumulate->SetUniformi(
-    "prMoments", internals.MomentsInShader && internals.Cache->GetMoments() ? 1 : 0);
+    "prMoments", internals.Coordinates.InShader && internals.Cache->GetMoments() ? 1 : 0);
   internals.Cache->BindView(accumulate);
   for (int part = 0; part < internals.Cache->GetNumberOfViewParts(); ++part)
   {
@@ -2439,10 +1441,10 @@ void vtkSNDFRenderPass::AccumulateSamples(vtkFrame& frame)
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   for (unsigned int a = 0; a < NumberOfAttachments; ++a)
   {
-    internals.Attachments[a]->Deactivate();
+    internals.Targets.Attachments[a]->Deactivate();
   }
-  internals.Depth->Deactivate();
-  internals.Table->Deactivate();
+  internals.Targets.Depth->Deactivate();
+  table->Deactivate();
   vtkParticleComputeProgram::UseNone();
   internals.Timer.End();
 }
@@ -2460,8 +1462,8 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
   internals.Timer.Begin(2);
   this->ResolveView(frame);
   // a view between two levels: each window pixel the box filter of the shaded texels under it
-  frame.Shown = internals.Image;
-  frame.ShownDepth = internals.ImageDepth;
+  frame.Shown = internals.Targets.Image;
+  frame.ShownDepth = internals.Targets.ImageDepth;
   if (between.Active)
   {
     vtkParticleComputeProgram* filter = internals.BoxFilter;
@@ -2471,12 +1473,14 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
     filter->SetUniformf("prScale", static_cast<float>(between.Scale));
     filter->SetUniform2f(
       "prOffset", static_cast<float>(between.Offset[0]), static_cast<float>(between.Offset[1]));
-    glBindImageTexture(0, internals.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, internals.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(
-      2, internals.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      0, internals.Targets.Image->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(
-      3, internals.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+      1, internals.Targets.ImageDepth->GetHandle(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(
+      2, internals.Targets.DisplayImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(
+      3, internals.Targets.DisplayDepth->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     filter->Dispatch(
       static_cast<unsigned int>((width + 15) / 16), static_cast<unsigned int>((height + 15) / 16));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -2485,8 +1489,8 @@ void vtkSNDFRenderPass::Shade(vtkFrame& frame)
       glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     }
     vtkParticleComputeProgram::UseNone();
-    frame.Shown = internals.DisplayImage;
-    frame.ShownDepth = internals.DisplayDepth;
+    frame.Shown = internals.Targets.DisplayImage;
+    frame.ShownDepth = internals.Targets.DisplayDepth;
   }
 }
 
@@ -2535,38 +1539,15 @@ void vtkSNDFRenderPass::Composite(vtkFrame& frame)
 //------------------------------------------------------------------------------
 bool vtkSNDFRenderPass::GetLightingTable(vtkFloatArray* table)
 {
-  vtkInternals& internals = *this->Internals;
-  if (!table || !internals.HaveTable || !internals.Table->GetHandle())
-  {
-    return false;
-  }
-  const int n = internals.TableBins * internals.TableBins;
-  std::vector<float> texels(static_cast<std::size_t>(n) * TableRows * 4);
-  internals.Table->Bind();
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, texels.data());
-  table->SetNumberOfComponents(3);
-  table->SetNumberOfTuples(TableRows * n);
-  for (int t = 0; t < TableRows * n; ++t)
-  {
-    table->SetTypedTuple(t, &texels[4 * static_cast<std::size_t>(t)]);
-  }
-  return true;
+  return this->Internals->LightingTable.Read(table);
 }
 
 //------------------------------------------------------------------------------
 void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& internals = *this->Internals;
-  internals.ReleaseTextures(w);
-  internals.Table->ReleaseGraphicsResources(w);
-  internals.TableTarget->ReleaseGraphicsResources(w);
-  internals.HaveTable = false;
-  internals.TableBins = 0;
-  if (internals.TableQuad)
-  {
-    internals.TableQuad->ReleaseGraphicsResources(w);
-    internals.TableQuad.reset();
-  }
+  internals.Targets.Release(w);
+  internals.LightingTable.Release(w);
   if (internals.CompositeQuad)
   {
     internals.CompositeQuad->ReleaseGraphicsResources(w);
@@ -2581,11 +1562,11 @@ void vtkSNDFRenderPass::ReleaseGraphicsResources(vtkWindow* w)
   internals.CheckedSamples = 0;
   internals.Cache->ReleaseGraphicsResources(w);
   // the colour coordinates are uploaded again when next needed
-  internals.ReleaseCoordinates(w);
+  internals.Coordinates.Release(w);
+  internals.Recolouring.Release(w);
   internals.FrameValid = false;
   internals.Placed = false;
   internals.FixedState.clear();
-  internals.TableKey.clear();
   internals.ColourSources.clear();
   internals.ResolveKey.clear();
   this->NumberOfSamples = 0;

@@ -87,8 +87,8 @@
  *   AO * colour, which is linear in the colours: where the particles' new stored colours are a
  *   linear function of the old ones, c' = M c for every particle of every particle actor, the
  *   bins' means become M m exactly and the pass re-shades without sampling
- *   (Shaders/SNDFRecolour.glsl over every cached tile, then the tiles are rebaked). M is fitted
- *   by least squares (pseudo-inverse) to the distinct (old, new) colour pairs of the mapped
+ *   (Shaders/SNDF/SNDFRecolour.glsl over every cached tile, then the tiles are rebaked). M is
+ * fitted by least squares (pseudo-inverse) to the distinct (old, new) colour pairs of the mapped
  *   scalars (vtkMapper::MapScalars, held from the restart) and the property colours, and used
  *   only when it meets every pair within 0.05/255 with entries within +-16 (quantisation of the
  *   16-bit means: < 0.4/255). That holds for any new colours of up to three linearly
@@ -111,11 +111,11 @@
  *   linear map from the old map's colours to the new one's over t, which carries the old map's
  *   known quadrature error m - A Q(c) into the new one (identity for a map that is a linear
  *   function of the old one, 0 for an unrelated one). Both maps are tabulated at 4096 values of
- *   t per actor (Shaders/SNDFRecolour.glsl); an indexed (categorical) table is tabulated with the
- * colour of the nearest value the particles have (up to 4096 distinct values), as the nodes fall
- * near the values, not on them (measured errors: Documentation/SNDF.md; two nodes do not suffice
- *   for bins of three or more atoms; after a zoom out by 2 the bins and moments are averaged
- *   from the finer level, Shaders/SNDFDownsample.glsl). Still sampling again:
+ *   t per actor (Shaders/SNDF/SNDFRecolour.glsl); an indexed (categorical) table is tabulated with
+ * the colour of the nearest value the particles have (up to 4096 distinct values), as the nodes
+ * fall near the values, not on them (measured errors: Documentation/SNDF.md; two nodes do not
+ * suffice for bins of three or more atoms; after a zoom out by 2 the bins and moments are averaged
+ *   from the finer level, Shaders/SNDF/SNDFDownsample.glsl). Still sampling again:
  *   NaN or Inf values (the table's NaN and out-of-range colours are not functions of t), more
  *   particles than a texture buffer holds, more than four particle actors or direct colours, a
  *   scalar actor with an ambient coefficient (the ambient term is drawn with the scalar
@@ -161,7 +161,7 @@
  * window are sampled where the cache lacks them (each sample pass renders the rectangle, up to
  * 2x the window per axis, with a camera whose pixels are those texels), shaded, and each window
  * pixel is the box filter of the texels under its footprint, weighted by the area they share
- * (Shaders/SNDFBoxFilter.glsl): shading is linear in the S-NDF, so this is the shade of the
+ * (Shaders/SNDF/SNDFBoxFilter.glsl): shading is linear in the S-NDF, so this is the shade of the
  * footprint's averaged S-NDF -- sharper than the trilinear tent filter, and consistent under
  * pans. It is still the zoomed picture convolved with a texel's box, and the blur is the
  * method's (measured: Documentation/SNDF.md). Hence off by default. A rectangle whose tiles exceed
