@@ -137,6 +137,142 @@ struct ParticleSummary
   vtkIdType HugePosition = 0; // likewise (of BadPosition)
   vtkIdType FirstValid = -1;
 };
+
+// Every particle checked (finite position and radius within single precision), radii[i] its
+// radius or 0 where it is skipped, with the counts, bounds and radius range of the valid ones.
+ParticleSummary CheckParticles(vtkDataArray* points, vtkDataArray* radiusArray,
+  double constantRadius, float* radii, vtkIdType numPts)
+{
+  vtkSMPThreadLocal<ParticleSummary> local;
+  vtkSMPTools::For(0, numPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      ParticleSummary& s = local.Local();
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetTuple(i, p);
+        const double r = radiusArray ? radiusArray->GetComponent(i, 0) : constantRadius;
+        const bool finitePosition =
+          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        const bool goodPosition =
+          finitePosition && std::abs(p[0]) < 1e37 && std::abs(p[1]) < 1e37 && std::abs(p[2]) < 1e37;
+        const bool goodRadius = std::isfinite(r) && r > 0.0 && r < 1e37;
+        if (!goodPosition)
+        {
+          ++s.BadPosition;
+          s.HugePosition += finitePosition ? 1 : 0;
+        }
+        else if (!goodRadius)
+        {
+          ++s.BadRadius;
+          s.HugeRadius += (std::isfinite(r) && r > 0.0) ? 1 : 0;
+        }
+        if (goodPosition && goodRadius)
+        {
+          radii[i] = static_cast<float>(r);
+          for (int k = 0; k < 3; ++k)
+          {
+            s.Bounds[2 * k] = std::min(s.Bounds[2 * k], p[k]);
+            s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
+          }
+          s.MaxRadius = std::max(s.MaxRadius, r);
+          s.MinRadius = std::min(s.MinRadius, r);
+          if (s.FirstValid < 0 || i < s.FirstValid)
+          {
+            s.FirstValid = i;
+          }
+        }
+        else
+        {
+          radii[i] = 0.0f;
+        }
+      }
+    });
+  ParticleSummary total;
+  for (const ParticleSummary& s : local)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      total.Bounds[2 * k] = std::min(total.Bounds[2 * k], s.Bounds[2 * k]);
+      total.Bounds[2 * k + 1] = std::max(total.Bounds[2 * k + 1], s.Bounds[2 * k + 1]);
+    }
+    total.MaxRadius = std::max(total.MaxRadius, s.MaxRadius);
+    total.MinRadius = std::min(total.MinRadius, s.MinRadius);
+    total.BadRadius += s.BadRadius;
+    total.BadPosition += s.BadPosition;
+    total.HugeRadius += s.HugeRadius;
+    total.HugePosition += s.HugePosition;
+    if (s.FirstValid >= 0 && (total.FirstValid < 0 || s.FirstValid < total.FirstValid))
+    {
+      total.FirstValid = s.FirstValid;
+    }
+  }
+  return total;
+}
+
+// A copy of the positions in which each skipped particle (radius 0) has the position of the
+// first valid one, so that no NaN reaches the GPU and the VBO's automatic shift/scale sees only
+// real coordinates.
+vtkSmartPointer<vtkDataArray> FillSkipped(
+  vtkDataArray* points, const float* radii, vtkIdType firstValid, vtkIdType numPts)
+{
+  vtkSmartPointer<vtkDataArray> copy;
+  copy.TakeReference(points->NewInstance());
+  copy->SetNumberOfComponents(3);
+  copy->SetNumberOfTuples(numPts);
+  double fill[3] = { 0.0, 0.0, 0.0 };
+  if (firstValid >= 0)
+  {
+    points->GetTuple(firstValid, fill);
+  }
+  vtkSMPTools::For(0, numPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (radii[i] == 0.0f)
+        {
+          copy->SetTuple(i, fill);
+        }
+        else
+        {
+          points->GetTuple(i, p);
+          copy->SetTuple(i, p);
+        }
+      }
+    });
+  return copy;
+}
+
+// The warnings for skipped particles, by cause.
+void ReportSkipped(const ParticleSummary& total, vtkIdType numPts, std::ostream& warnings)
+{
+  // (1e37: beyond it the GPU's single precision overflows in the squares of the intersection)
+  if (total.BadPosition > total.HugePosition)
+  {
+    warnings << total.BadPosition - total.HugePosition << " of " << numPts
+             << " particles have a NaN or infinite position and are not drawn. ";
+  }
+  if (total.HugePosition > 0)
+  {
+    warnings << total.HugePosition << " of " << numPts
+             << " particles have a coordinate of 1e37 or more, too large for single "
+                "precision, and are not drawn. ";
+  }
+  if (total.BadRadius > total.HugeRadius)
+  {
+    warnings << total.BadRadius - total.HugeRadius << " of " << numPts
+             << " particles have a zero, negative, NaN or infinite radius and are not drawn. ";
+  }
+  if (total.HugeRadius > 0)
+  {
+    warnings << total.HugeRadius << " of " << numPts
+             << " particles have a radius of 1e37 or more, too large for single precision, "
+                "and are not drawn. ";
+  }
+}
 }
 
 vtkIdType vtkParticleSphereMapper::PrepareParticles()
@@ -187,77 +323,10 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     vtkDataArray* points = input->GetPoints()->GetData();
     internals.Radii->SetNumberOfTuples(numPts);
     float* radii = internals.Radii->GetPointer(0);
-    const double constantRadius = this->Radius;
 
-    vtkSMPThreadLocal<ParticleSummary> local;
-    vtkSMPTools::For(0, numPts,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        ParticleSummary& s = local.Local();
-        double p[3];
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          points->GetTuple(i, p);
-          const double r = radiusArray ? radiusArray->GetComponent(i, 0) : constantRadius;
-          const bool finitePosition =
-            std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-          const bool goodPosition = finitePosition && std::abs(p[0]) < 1e37 &&
-            std::abs(p[1]) < 1e37 && std::abs(p[2]) < 1e37;
-          const bool goodRadius = std::isfinite(r) && r > 0.0 && r < 1e37;
-          if (!goodPosition)
-          {
-            ++s.BadPosition;
-            s.HugePosition += finitePosition ? 1 : 0;
-          }
-          else if (!goodRadius)
-          {
-            ++s.BadRadius;
-            s.HugeRadius += (std::isfinite(r) && r > 0.0) ? 1 : 0;
-          }
-          if (goodPosition && goodRadius)
-          {
-            radii[i] = static_cast<float>(r);
-            for (int k = 0; k < 3; ++k)
-            {
-              s.Bounds[2 * k] = std::min(s.Bounds[2 * k], p[k]);
-              s.Bounds[2 * k + 1] = std::max(s.Bounds[2 * k + 1], p[k]);
-            }
-            s.MaxRadius = std::max(s.MaxRadius, r);
-            s.MinRadius = std::min(s.MinRadius, r);
-            if (s.FirstValid < 0 || i < s.FirstValid)
-            {
-              s.FirstValid = i;
-            }
-          }
-          else
-          {
-            radii[i] = 0.0f;
-          }
-        }
-      });
-
+    const ParticleSummary total = CheckParticles(points, radiusArray, this->Radius, radii, numPts);
     // written through a raw pointer: tell the VBO cache the values are new
     internals.Radii->Modified();
-
-    ParticleSummary total;
-    for (const ParticleSummary& s : local)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        total.Bounds[2 * k] = std::min(total.Bounds[2 * k], s.Bounds[2 * k]);
-        total.Bounds[2 * k + 1] = std::max(total.Bounds[2 * k + 1], s.Bounds[2 * k + 1]);
-      }
-      total.MaxRadius = std::max(total.MaxRadius, s.MaxRadius);
-      total.MinRadius = std::min(total.MinRadius, s.MinRadius);
-      total.BadRadius += s.BadRadius;
-      total.BadPosition += s.BadPosition;
-      total.HugeRadius += s.HugeRadius;
-      total.HugePosition += s.HugePosition;
-      if (s.FirstValid >= 0 && (total.FirstValid < 0 || s.FirstValid < total.FirstValid))
-      {
-        total.FirstValid = s.FirstValid;
-      }
-    }
 
     // Skipped particles get the position of a valid one (radius 0 keeps them invisible), so that
     // no NaN reaches the GPU and the VBO's automatic shift/scale sees only real coordinates.
@@ -268,57 +337,9 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     }
     else
     {
-      vtkSmartPointer<vtkDataArray> copy;
-      copy.TakeReference(points->NewInstance());
-      copy->SetNumberOfComponents(3);
-      copy->SetNumberOfTuples(numPts);
-      double fill[3] = { 0.0, 0.0, 0.0 };
-      if (total.FirstValid >= 0)
-      {
-        points->GetTuple(total.FirstValid, fill);
-      }
-      vtkSMPTools::For(0, numPts,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          double p[3];
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            if (radii[i] == 0.0f)
-            {
-              copy->SetTuple(i, fill);
-            }
-            else
-            {
-              points->GetTuple(i, p);
-              copy->SetTuple(i, p);
-            }
-          }
-        });
-      internals.Positions = copy;
+      internals.Positions = FillSkipped(points, radii, total.FirstValid, numPts);
     }
-    // (1e37: beyond it the GPU's single precision overflows in the squares of the intersection)
-    if (total.BadPosition > total.HugePosition)
-    {
-      warnings << total.BadPosition - total.HugePosition << " of " << numPts
-               << " particles have a NaN or infinite position and are not drawn. ";
-    }
-    if (total.HugePosition > 0)
-    {
-      warnings << total.HugePosition << " of " << numPts
-               << " particles have a coordinate of 1e37 or more, too large for single "
-                  "precision, and are not drawn. ";
-    }
-    if (total.BadRadius > total.HugeRadius)
-    {
-      warnings << total.BadRadius - total.HugeRadius << " of " << numPts
-               << " particles have a zero, negative, NaN or infinite radius and are not drawn. ";
-    }
-    if (total.HugeRadius > 0)
-    {
-      warnings << total.HugeRadius << " of " << numPts
-               << " particles have a radius of 1e37 or more, too large for single precision, "
-                  "and are not drawn. ";
-    }
+    ReportSkipped(total, numPts, warnings);
     this->NumberOfSkippedParticles = skipped;
     internals.MaxRadius = total.MaxRadius;
     internals.MinRadius = total.FirstValid >= 0 ? total.MinRadius : 0.0;

@@ -868,6 +868,81 @@ void vtkMetaballMapper::ReplaceWalkingShaderValues(
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The fragment code of the vicinity method's surface (//PR::Surface::Impl): the search of the
+// ray's chord through the influence sphere for the first crossing of the iso-value
+// (Metaballs.glsl), the chord ended at the pre-pass's iso-sphere depth where `limited`, the blended
+// colour there where the particles have `colors`.
+std::string VicinitySurfaceCode(bool colors, bool limited)
+{
+  std::ostringstream surface;
+  surface
+    << "bool prMetaballInside = false;\n"
+       "  vec4 prMetaballRGBA = "
+    << (colors ? "vertexColorVSOutput" : "vec4(1.0)")
+    << ";\n"
+       "  if (prHit && prMetaballVSOutput > 0.0)\n"
+       "  {\n"
+       "    float prRadius = radiusVC / prMetaballVSOutput;\n"
+       "    // the search starts where the chord enters the influence sphere, or on the near\n"
+       "    // plane when that cuts it (clip z + w = 0, affine along the ray)\n"
+       "    vec2 prZW0 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
+       "      centerOffsetVCVSOutput + prRayS, VCDCMatrix);\n"
+       "    vec2 prZW1 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
+       "      centerOffsetVCVSOutput + prRayS + prRayD, VCDCMatrix);\n"
+       "    float prF0 = prZW0.x + prZW0.y;\n"
+       "    float prF1 = (prZW1.x + prZW1.y) - prF0;\n"
+       "    float prTLo = prT0;\n"
+       "    bool prNearCut = false;\n"
+       "    if (prF1 > 0.0 && -prF0 / prF1 > prT0)\n"
+       "    {\n"
+       "      prTLo = -prF0 / prF1;\n"
+       "      prNearCut = true;\n"
+       "    }\n"
+       "    float prTHi = prT1;\n";
+  if (limited)
+  {
+    // The pre-pass's iso-spheres lie inside the surface, so the surface is never behind
+    // their depth: the chord ends there (clip z - ndc w is affine along the ray), and a
+    // fragment whose chord starts behind it is dropped before it gathers its kernels.
+    surface << "    float prLimitNDC = 2.0 * (texelFetch(prPrePassDepth,\n"
+               "      ivec2(gl_FragCoord.xy) - prPrePassOrigin, 0).r + prPrePassMargin) - 1.0;\n"
+               "    float prG0 = prZW0.x - prLimitNDC * prZW0.y;\n"
+               "    float prG1 = (prZW1.x - prLimitNDC * prZW1.y) - prG0;\n"
+               "    if (prG0 + prG1 * prTLo > 0.0)\n"
+               "    {\n"
+               "      prTHi = prTLo;\n"
+               "    }\n"
+               "    else if (prG1 > 0.0)\n"
+               "    {\n"
+               "      prTHi = min(prTHi, -prG0 / prG1);\n"
+               "    }\n";
+  }
+  surface << "    prHit = prTLo < prTHi;\n"
+             "    float prTHit;\n"
+             "    if (prHit)\n"
+             "    {\n"
+             "      prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD, prTLo, prTHi);\n"
+             "      prHit = prMetaballSearch(prTLo, prTHi, prRadius, prTHit, prMetaballInside) &&\n"
+             "        (prNearCut || !prMetaballInside);\n"
+             "    }\n"
+             "    if (prHit)\n"
+             "    {\n"
+             "      prT0 = prTHit;\n"
+             "      prT1 = prTHit;\n";
+  if (colors)
+  {
+    surface << "      prMetaballRGBA = prMetaballColor(prRayS + prTHit * prRayD, prRadius, "
+               "vertexColorVSOutput);\n";
+  }
+  surface << "    }\n"
+             "  }";
+  return surface.str();
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkMetaballMapper::ReplaceVicinityShaderValues(
   std::string& vs, std::string& gs, std::string& fs)
 {
@@ -951,70 +1026,7 @@ void vtkMetaballMapper::ReplaceVicinityShaderValues(
     vtkParticleShaders::ReplaceHook(
       gs, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_CONSERVATIVE_DEPTH");
 
-    std::ostringstream surface;
-    surface
-      << "bool prMetaballInside = false;\n"
-         "  vec4 prMetaballRGBA = "
-      << (colors ? "vertexColorVSOutput" : "vec4(1.0)")
-      << ";\n"
-         "  if (prHit && prMetaballVSOutput > 0.0)\n"
-         "  {\n"
-         "    float prRadius = radiusVC / prMetaballVSOutput;\n"
-         "    // the search starts where the chord enters the influence sphere, or on the near\n"
-         "    // plane when that cuts it (clip z + w = 0, affine along the ray)\n"
-         "    vec2 prZW0 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
-         "      centerOffsetVCVSOutput + prRayS, VCDCMatrix);\n"
-         "    vec2 prZW1 = prClipZWOfSplitPointVC(clipZWOfTranslation,\n"
-         "      centerOffsetVCVSOutput + prRayS + prRayD, VCDCMatrix);\n"
-         "    float prF0 = prZW0.x + prZW0.y;\n"
-         "    float prF1 = (prZW1.x + prZW1.y) - prF0;\n"
-         "    float prTLo = prT0;\n"
-         "    bool prNearCut = false;\n"
-         "    if (prF1 > 0.0 && -prF0 / prF1 > prT0)\n"
-         "    {\n"
-         "      prTLo = -prF0 / prF1;\n"
-         "      prNearCut = true;\n"
-         "    }\n"
-         "    float prTHi = prT1;\n";
-    if (limited)
-    {
-      // The pre-pass's iso-spheres lie inside the surface, so the surface is never behind
-      // their depth: the chord ends there (clip z - ndc w is affine along the ray), and a
-      // fragment whose chord starts behind it is dropped before it gathers its kernels.
-      surface << "    float prLimitNDC = 2.0 * (texelFetch(prPrePassDepth,\n"
-                 "      ivec2(gl_FragCoord.xy) - prPrePassOrigin, 0).r + prPrePassMargin) - 1.0;\n"
-                 "    float prG0 = prZW0.x - prLimitNDC * prZW0.y;\n"
-                 "    float prG1 = (prZW1.x - prLimitNDC * prZW1.y) - prG0;\n"
-                 "    if (prG0 + prG1 * prTLo > 0.0)\n"
-                 "    {\n"
-                 "      prTHi = prTLo;\n"
-                 "    }\n"
-                 "    else if (prG1 > 0.0)\n"
-                 "    {\n"
-                 "      prTHi = min(prTHi, -prG0 / prG1);\n"
-                 "    }\n";
-    }
-    surface
-      << "    prHit = prTLo < prTHi;\n"
-         "    float prTHit;\n"
-         "    if (prHit)\n"
-         "    {\n"
-         "      prGatherKernels(particleIdVSOutput, prRadius, prRayS, prRayD, prTLo, prTHi);\n"
-         "      prHit = prMetaballSearch(prTLo, prTHi, prRadius, prTHit, prMetaballInside) &&\n"
-         "        (prNearCut || !prMetaballInside);\n"
-         "    }\n"
-         "    if (prHit)\n"
-         "    {\n"
-         "      prT0 = prTHit;\n"
-         "      prT1 = prTHit;\n";
-    if (colors)
-    {
-      surface << "      prMetaballRGBA = prMetaballColor(prRayS + prTHit * prRayD, prRadius, "
-                 "vertexColorVSOutput);\n";
-    }
-    surface << "    }\n"
-               "  }";
-    hooks.Insert(Hooks::Fragment, "//PR::Surface::Impl", surface.str());
+    hooks.Insert(Hooks::Fragment, "//PR::Surface::Impl", VicinitySurfaceCode(colors, limited));
     hooks.Insert(Hooks::Fragment, "//PR::Surface::Normal",
       "if (prMetaballVSOutput > 0.0)\n"
       "  {\n"
