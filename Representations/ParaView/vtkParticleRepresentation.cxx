@@ -7,10 +7,7 @@
 #include "vtkCommunicator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
-#include "vtkDataSetAttributes.h"
-#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
-#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -19,9 +16,8 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
+#include "vtkParticleDistributedPartition.h"
 #include "vtkParticleDistributedVolumes.h"
-#include "vtkParticlePartition.h"
-#include "vtkParticleProcessReduction.h"
 #include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkPointData.h"
@@ -37,12 +33,10 @@
 #include "vtkTransparentSphereMapper.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleRepresentation);
@@ -136,7 +130,7 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     transparent->SetOverlapTolerance(this->OverlapTolerance);
     transparent->SetOpacityReference(this->OpacityReference);
     // 0: the mapper estimates from its own particles (one process)
-    transparent->SetColumnLayers(this->GlobalColumnLayers);
+    transparent->SetColumnLayers(this->DistributedPartition->GetColumnLayers());
   }
   if (auto* metaballs = vtkMetaballMapper::SafeDownCast(this->Mapper))
   {
@@ -349,15 +343,23 @@ int vtkParticleRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // No vertex cells: ParaView never redistributes these particles (the representation
-  // partitions them itself, see PartitionParticles), and the mapper ignores cells.
+  // partitions them itself, see vtkParticleDistributedPartition), and the mapper ignores cells.
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   this->ProcessedData = MakeParticles(input, false);
   // Distributed rendering: translucent spheres are partitioned here, in the pipeline, which
   // runs on every process together (a render pass may not: IceT runs it zero or more times)
   double bounds[6];
   this->ComputeSphereBounds(this->ProcessedData, bounds);
-  this->Partitioned = this->PartitionParticles(this->IsTranslucent(), bounds, input);
-  this->UpdateGlobalColumnLayers(bounds);
+  // Translucent spheres need the partition (ordered compositing of boxes); metaballs need every
+  // particle whose influence reaches into the box (ghosts within k R) and a surface clipped to
+  // it; opaque spheres composite by depth wherever they are.
+  const bool needed =
+    (this->IsTranslucent() && this->Technique == SPHERES) || this->Technique == METABALLS;
+  const double reach = this->Technique == METABALLS ? this->InfluenceFactor : 1.0;
+  this->DistributedPartition->Update(this->ProcessedData, input, needed,
+    this->EffectiveRadiusArray(this->ProcessedData), this->Mapper->GetRadius(),
+    this->Mapper->GetRadiusScaleFactor(), reach, bounds);
+  this->ApplyMapperSettings(); // the column layers of all processes
   this->UpdateOpacityArrayDataRange();
   this->UpdateMapperOpacityArray();
   return this->Superclass::RequestData(request, inputVector, outputVector);
@@ -461,16 +463,8 @@ int vtkParticleRepresentation::ProcessViewRequest(
     const bool translucent = this->IsTranslucent();
     double bounds[6];
     this->ComputeSphereBounds(this->ProcessedData, bounds);
-    if (this->Partitioned)
-    {
-      // this process's box: IceT orders the processes' images by these boxes
-      vtkPVView::SetPiece(inInfo, this, this->Partition->GetOutput());
-      this->Partition->GetBox(bounds);
-    }
-    else
-    {
-      vtkPVView::SetPiece(inInfo, this, this->ProcessedData);
-    }
+    vtkPVView::SetPiece(
+      inInfo, this, this->DistributedPartition->PieceToDeliver(this->ProcessedData, bounds));
     vtkNew<vtkMatrix4x4> matrix;
     this->Actor->GetMatrix(matrix);
     vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds, matrix);
@@ -498,19 +492,7 @@ int vtkParticleRepresentation::ProcessViewRequest(
       particles = this->RenderedData;
     }
     double clipBox[6];
-    vtkMath::UninitializeBounds(clipBox);
-    if (this->Partitioned)
-    {
-      // each process draws its box; the ghost copies draw the parts of the spheres in it
-      this->Partition->GetBox(clipBox);
-    }
-    else if (auto ghosts = vtkUnsignedCharArray::SafeDownCast(
-               particles->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName())))
-    {
-      // partitioned particles gathered elsewhere (a client rendering locally): without the
-      // boxes the ghost copies would draw their spheres twice
-      particles = this->WithoutGhosts(particles, ghosts);
-    }
+    particles = this->DistributedPartition->PieceToDraw(particles, clipBox);
     this->Mapper->SetClipBox(clipBox);
     this->Mapper->SetInputDataObject(particles);
     this->DistributedVolumes->Update(inInfo, this->Technique == SPHERES, this->Actor, this->Mapper,
@@ -526,140 +508,9 @@ int vtkParticleRepresentation::ProcessViewRequest(
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleRepresentation::PartitionParticles(
-  bool translucent, const double sphereBounds[6], vtkDataObject* input)
-{
-  auto controller = vtkMultiProcessController::GetGlobalController();
-  const int size = controller ? controller->GetNumberOfProcesses() : 1;
-  const vtkIdType localCount = this->ProcessedData ? this->ProcessedData->GetNumberOfPoints() : 0;
-  if (size <= 1)
-  {
-    this->Distribution->SetNumberOfValues(5);
-    const double values[5] = { double(localCount), double(localCount), 0.0, 0.0, 0.0 };
-    std::copy(values, values + 5, this->Distribution->GetPointer(0));
-    return false;
-  }
-  // Translucent spheres need the partition (ordered compositing of boxes); metaballs need every
-  // particle whose influence reaches into the box (ghosts within k R) and a surface clipped to
-  // it; opaque spheres composite by depth wherever they are.
-  const bool needed = (translucent && this->Technique == SPHERES) || this->Technique == METABALLS;
-  const double reach = this->Technique == METABALLS ? this->InfluenceFactor : 1.0;
-  const std::string radiusArray = this->EffectiveRadiusArray(this->ProcessedData);
-  std::ostringstream key;
-  key.precision(17);
-  key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
-      << ";" << this->Mapper->GetRadius() << ";" << this->Mapper->GetRadiusScaleFactor() << ";"
-      << reach;
-  if (!vtkParticleProcessReduction::StaleOnAnyProcess(key.str(), this->PartitionKey))
-  {
-    return needed && this->Partitioned;
-  }
-  if (!needed)
-  {
-    // the data stays where it is
-    double local[5] = { double(localCount), double(localCount), 0.0, 0.0, 0.0 };
-    this->Distribution->SetNumberOfValues(5 * size);
-    controller->AllGather(local, this->Distribution->GetPointer(0), 5);
-    return false;
-  }
-  const bool partitioned = this->Partition->Partition(this->ProcessedData,
-    radiusArray.empty() ? nullptr : radiusArray.c_str(), this->Mapper->GetRadius(),
-    this->Mapper->GetRadiusScaleFactor(), reach, sphereBounds);
-  const std::vector<double>& distribution = this->Partition->GetDistribution();
-  this->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
-  std::copy(distribution.begin(), distribution.end(), this->Distribution->GetPointer(0));
-  return partitioned;
-}
-
-//------------------------------------------------------------------------------
-void vtkParticleRepresentation::UpdateGlobalColumnLayers(const double sphereBounds[6])
-{
-  auto controller = vtkMultiProcessController::GetGlobalController();
-  if (!controller || controller->GetNumberOfProcesses() <= 1)
-  {
-    this->GlobalColumnLayers = 0.0;
-    this->ApplyMapperSettings();
-    return;
-  }
-  // what vtkTransparentSphereMapper::GetEffectiveColumnLayers counts, over all processes: drawn
-  // particles (finite centre, radius > 0 before the scale factor) and the union of the sphere
-  // bounds
-  vtkParticleProcessReduction::Extent extent;
-  vtkPolyData* particles = this->ProcessedData;
-  const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
-  const std::string radiusArray = this->EffectiveRadiusArray(particles);
-  vtkDataArray* radii = (n > 0 && !radiusArray.empty())
-    ? particles->GetPointData()->GetArray(radiusArray.c_str())
-    : nullptr;
-  if (radii && radii->GetNumberOfComponents() != 1)
-  {
-    radii = nullptr;
-  }
-  const double constant = this->Mapper->GetRadius();
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double x[3];
-    particles->GetPoint(i, x);
-    const double r = radii ? radii->GetComponent(i, 0) : constant;
-    if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(r) &&
-      r > 0.0)
-    {
-      extent.Count += 1.0;
-      extent.RadiusSum += r;
-    }
-  }
-  if (vtkMath::AreBoundsInitialized(sphereBounds))
-  {
-    const double lo[3] = { sphereBounds[0], sphereBounds[2], sphereBounds[4] };
-    const double hi[3] = { sphereBounds[1], sphereBounds[3], sphereBounds[5] };
-    extent.AddBox(lo, hi);
-  }
-  extent.Reduce(controller);
-  this->GlobalColumnLayers =
-    vtkTransparentSphereMapper::EstimateColumnLayers(extent.Count, extent.RadiusSum, extent.Bounds);
-  this->ApplyMapperSettings();
-}
-
-//------------------------------------------------------------------------------
-vtkPolyData* vtkParticleRepresentation::WithoutGhosts(
-  vtkPolyData* particles, vtkUnsignedCharArray* ghosts)
-{
-  if (this->OwnedData && this->OwnedDataSource == particles &&
-    this->OwnedDataTime == particles->GetMTime())
-  {
-    return this->OwnedData;
-  }
-  vtkNew<vtkIdList> owned;
-  for (vtkIdType i = 0; i < ghosts->GetNumberOfTuples(); ++i)
-  {
-    if (!(ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT))
-    {
-      owned->InsertNextId(i);
-    }
-  }
-  this->OwnedData = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(particles->GetPoints() ? particles->GetPoints()->GetDataType() : VTK_FLOAT);
-  if (particles->GetPoints())
-  {
-    particles->GetPoints()->GetPoints(owned, points);
-  }
-  this->OwnedData->SetPoints(points);
-  vtkNew<vtkIdList> destination;
-  destination->SetNumberOfIds(owned->GetNumberOfIds());
-  std::iota(destination->GetPointer(0), destination->GetPointer(0) + owned->GetNumberOfIds(), 0);
-  this->OwnedData->GetPointData()->CopyAllocate(particles->GetPointData(), owned->GetNumberOfIds());
-  this->OwnedData->GetPointData()->CopyData(particles->GetPointData(), owned, destination);
-  this->OwnedData->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-  this->OwnedDataSource = particles;
-  this->OwnedDataTime = particles->GetMTime();
-  return this->OwnedData;
-}
-
-//------------------------------------------------------------------------------
 vtkDoubleArray* vtkParticleRepresentation::GetParticleDistribution()
 {
-  return this->Distribution;
+  return this->DistributedPartition->GetDistribution();
 }
 
 //------------------------------------------------------------------------------
@@ -1069,8 +920,6 @@ void vtkParticleRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Mapper->GetRadius() << "\n";
   os << indent << "RadiusScaleFactor: " << this->Mapper->GetRadiusScaleFactor() << "\n";
   os << indent << "NumberOfParticles: " << this->GetNumberOfParticles() << "\n";
-  os << indent << "Partitioned: " << this->Partitioned << "\n";
-  os << indent << "GlobalColumnLayers: " << this->GlobalColumnLayers << "\n";
-  os << indent << "Partition:\n";
-  this->Partition->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "DistributedPartition:\n";
+  this->DistributedPartition->PrintSelf(os, indent.GetNextIndent());
 }

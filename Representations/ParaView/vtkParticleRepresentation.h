@@ -16,16 +16,17 @@
  * explicit.
  *
  * Distributed rendering (more than one process; all of it collective, in the pipeline, never
- * in a render pass): translucent spheres are partitioned in RequestData (vtkParticlePartition:
- * one k-d box per process, raw point arrays moved, ghost copies of spheres reaching into other
- * boxes); the view gets the process's box as its geometry bounds with
- * USE_BOUNDS_FOR_REDISTRIBUTION (IceT orders the processes by the boxes; never
- * DATA_IS_REDISTRIBUTABLE, whose appended-XML path Debian's expat breaks in VTK 9.2), and the
- * mapper clips its drawing to the box (vtkParticleSphereMapper::SetClipBox), so the processes'
- * images composite to the single-process picture. The column-opacity layer estimate is taken
- * over all processes. With the Particle Render View's density-volume or voxel-cone AO,
- * REQUEST_RENDER (when every process renders) builds the AO volume of all processes' particles
- * and puts it on the actor (vtkParticleDistributedVolumes). Opaque spheres stay where they are.
+ * in a render pass): translucent spheres are partitioned in RequestData
+ * (vtkParticleDistributedPartition, with vtkParticlePartition: one k-d box per process, raw
+ * point arrays moved, ghost copies of spheres reaching into other boxes); the view gets the
+ * process's box as its geometry bounds with USE_BOUNDS_FOR_REDISTRIBUTION (IceT orders the
+ * processes by the boxes; never DATA_IS_REDISTRIBUTABLE, whose appended-XML path Debian's expat
+ * breaks in VTK 9.2), and the mapper clips its drawing to the box
+ * (vtkParticleSphereMapper::SetClipBox), so the processes' images composite to the single-process
+ * picture. The column-opacity layer estimate is taken over all processes. With the Particle Render
+ * View's density-volume or voxel-cone AO, REQUEST_RENDER (when every process renders) builds the AO
+ * volume of all processes' particles and puts it on the actor (vtkParticleDistributedVolumes).
+ * Opaque spheres stay where they are.
  *
  * View protocol (like vtkPointGaussianRepresentation): REQUEST_UPDATE hands the particle
  * polydata to the view (vtkPVView::SetPiece), reports the bounds of the spheres (the points'
@@ -61,9 +62,8 @@ class vtkActor;
 class vtkDataArray;
 class vtkDataObject;
 class vtkDoubleArray;
+class vtkParticleDistributedPartition;
 class vtkParticleDistributedVolumes;
-class vtkParticlePartition;
-class vtkUnsignedCharArray;
 class vtkParticleSphereMapper;
 class vtkTransparentSphereMapper;
 class vtkPolyData;
@@ -272,33 +272,13 @@ protected:
 
   void UpdateColoringParameters();
 
-  /**
-   * Distributed rendering: partition the particles over the processes (vtkParticlePartition)
-   * when the scene needs it (translucent spheres, more than one process), again only when the
-   * data or the radii changed. Collective (RequestData). True when the partition's output
-   * and box are in use.
-   */
-  bool PartitionParticles(bool translucent, const double sphereBounds[6], vtkDataObject* input);
   // the actor's opacity is below 1 or an opacity array is in use
   bool IsTranslucent();
-  /**
-   * With more than one process: the column-opacity layer estimate of all particles (each
-   * process would otherwise estimate from its piece and give its particles another opacity),
-   * set as the mapper's ColumnLayers. Collective (RequestData).
-   */
-  void UpdateGlobalColumnLayers(const double sphereBounds[6]);
+  // distributed rendering: the partition, the spread over the processes and the column layers
+  // of all processes (RequestData), the pieces to deliver and draw
+  vtkNew<vtkParticleDistributedPartition> DistributedPartition;
   // the AO volumes of all processes' particles (distributed rendering, REQUEST_RENDER)
   vtkNew<vtkParticleDistributedVolumes> DistributedVolumes;
-  double GlobalColumnLayers = 0.0;
-  // `particles` without its ghost copies (cached)
-  vtkPolyData* WithoutGhosts(vtkPolyData* particles, vtkUnsignedCharArray* ghosts);
-  vtkNew<vtkParticlePartition> Partition;
-  vtkNew<vtkDoubleArray> Distribution;
-  std::string PartitionKey;
-  bool Partitioned = false;
-  vtkSmartPointer<vtkPolyData> OwnedData;
-  vtkPolyData* OwnedDataSource = nullptr;
-  vtkMTimeType OwnedDataTime = 0;
   void UpdateMapperRadiusArray();
   // The radius array the mode selects for these particles ("" = the constant radius).
   std::string EffectiveRadiusArray(vtkPolyData* particles) const;

@@ -1,0 +1,117 @@
+/**
+ * @class   vtkParticleDistributedPartition
+ * @brief   the representation's particles under distributed rendering: partition when the
+ *          technique needs it, spread statistics, global column-layer estimate, ghost removal
+ *
+ * With more than one process (pvbatch, pvserver with MPI), each process holds a piece of the
+ * particles. vtkParticleDistributedPartition decides what the representation does with that
+ * piece, beside vtkParticleDistributedVolumes (the AO volumes of all processes):
+ *
+ * - Partition (Update, in RequestData; collective): when the caller says the technique needs it
+ *   (translucent spheres, metaballs) the particles go through a vtkParticlePartition (one k-d box
+ *   per process, ghost copies of the spheres reaching into other boxes), again only when the
+ *   data, the radius array, the radii or the reach changed on some process. Otherwise the data
+ *   stays where it is.
+ * - Distribution: 5 values per process (see vtkParticlePartition::GetDistribution); without a
+ *   partition every process owns its piece.
+ * - Column layers: the column-opacity layer estimate of all processes' particles (what
+ *   vtkTransparentSphereMapper::GetEffectiveColumnLayers counts), so every process gives its
+ *   particles the same opacity; 0 with one process (the mapper estimates itself).
+ * - Pieces (REQUEST_UPDATE, REQUEST_RENDER): PieceToDeliver gives the view the partition's output
+ *   and this process's box (IceT orders the processes' images by the boxes); PieceToDraw gives
+ *   the mapper the box to clip to, or drops the ghost copies of partitioned particles gathered
+ *   elsewhere (a client rendering locally), which would otherwise draw their spheres twice.
+ *
+ * Every collective step uses the global controller and runs on all processes together.
+ *
+ * @sa vtkParticleRepresentation vtkParticlePartition vtkParticleDistributedVolumes
+ */
+#ifndef vtkParticleDistributedPartition_h
+#define vtkParticleDistributedPartition_h
+
+#include "vtkNew.h" // for vtkNew
+#include "vtkObject.h"
+#include "vtkParticleRenderingParaViewModule.h" // for export macro
+#include "vtkSmartPointer.h"                    // for vtkSmartPointer
+
+#include <string> // for std::string
+
+class vtkDataObject;
+class vtkDoubleArray;
+class vtkParticlePartition;
+class vtkPolyData;
+
+class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleDistributedPartition : public vtkObject
+{
+public:
+  static vtkParticleDistributedPartition* New();
+  vtkTypeMacro(vtkParticleDistributedPartition, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Bring the partition, the distribution and the column layers up to date for `particles`
+   * (this process's processed piece, made from `input`). needed: the technique needs the
+   * partition; radiusArray: the radius array in use ("" for the constant `radius`); reach: how
+   * far a particle's drawing reaches, in radii; sphereBounds: this process's sphere bounds.
+   * Collective (RequestData).
+   */
+  void Update(vtkPolyData* particles, vtkDataObject* input, bool needed,
+    const std::string& radiusArray, double radius, double radiusScale, double reach,
+    const double sphereBounds[6]);
+
+  /**
+   * Whether the partition's output and box are in use (after Update).
+   */
+  vtkGetMacro(Partitioned, bool);
+
+  /**
+   * The column-opacity layer estimate of all processes' particles (0 with one process).
+   */
+  vtkGetMacro(ColumnLayers, double);
+
+  /**
+   * How the particles are spread over the processes, 5 values per process.
+   */
+  vtkDoubleArray* GetDistribution();
+
+  /**
+   * The piece to hand the view for `particles` (the local processed piece): the partition's
+   * output, with this process's box as `bounds`, when partitioned; otherwise `particles` and
+   * `bounds` unchanged.
+   */
+  vtkPolyData* PieceToDeliver(vtkPolyData* particles, double bounds[6]);
+
+  /**
+   * The particles to draw of the `delivered` piece and the box to clip them to (`clipBox`
+   * uninitialised: no clipping). Partitioned: this process's box. Otherwise a piece with ghost
+   * copies loses them (cached).
+   */
+  vtkPolyData* PieceToDraw(vtkPolyData* delivered, double clipBox[6]);
+
+protected:
+  vtkParticleDistributedPartition();
+  ~vtkParticleDistributedPartition() override;
+
+  // partition when needed; true when the partition's output and box are in use
+  bool PartitionParticles(vtkPolyData* particles, vtkDataObject* input, bool needed,
+    const std::string& radiusArray, double radius, double radiusScale, double reach,
+    const double sphereBounds[6]);
+  void UpdateColumnLayers(vtkPolyData* particles, const std::string& radiusArray, double radius,
+    const double sphereBounds[6]);
+
+  vtkNew<vtkParticlePartition> Partition;
+  vtkNew<vtkDoubleArray> Distribution;
+  std::string PartitionKey;
+  bool Partitioned = false;
+  double ColumnLayers = 0.0;
+  // the delivered piece without its ghost copies, and what it was made from
+  vtkSmartPointer<vtkPolyData> OwnedData;
+  vtkPolyData* OwnedDataSource = nullptr;
+  vtkMTimeType OwnedDataTime = 0;
+
+private:
+  vtkParticleDistributedPartition(const vtkParticleDistributedPartition&) = delete;
+  void operator=(const vtkParticleDistributedPartition&) = delete;
+};
+
+#endif
