@@ -93,13 +93,7 @@ void vtkParticleDistributedPartition::UpdateColumnLayers(vtkPolyData* particles,
   // bounds
   vtkParticleProcessReduction::Extent extent;
   const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
-  vtkDataArray* radii = (n > 0 && !radiusArray.empty())
-    ? particles->GetPointData()->GetArray(radiusArray.c_str())
-    : nullptr;
-  if (radii && radii->GetNumberOfComponents() != 1)
-  {
-    radii = nullptr;
-  }
+  vtkDataArray* radii = n > 0 ? GetRadiusValues(particles, radiusArray) : nullptr;
   for (vtkIdType i = 0; i < n; ++i)
   {
     double x[3];
@@ -200,4 +194,15 @@ void vtkParticleDistributedPartition::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColumnLayers: " << this->ColumnLayers << "\n";
   os << indent << "Partition:\n";
   this->Partition->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkParticleDistributedPartition::GetRadiusValues(
+  vtkPolyData* particles, const std::string& name)
+{
+  vtkDataArray* radii =
+    (particles && particles->GetPoints() && particles->GetNumberOfPoints() > 0 && !name.empty())
+    ? particles->GetPointData()->GetArray(name.c_str())
+    : nullptr;
+  return radii && radii->GetNumberOfComponents() == 1 ? radii : nullptr;
 }

@@ -39,6 +39,7 @@
 class vtkDataObject;
 class vtkDoubleArray;
 class vtkParticlePartition;
+class vtkDataArray;
 class vtkPolyData;
 
 class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleDistributedPartition : public vtkObject
@@ -87,6 +88,13 @@ public:
    * copies loses them (cached).
    */
   vtkPolyData* PieceToDraw(vtkPolyData* delivered, double clipBox[6]);
+
+  /**
+   * The radius array the mapper reads from `particles` (`name`, one component), or null where the
+   * particles have none, it is not a one-component data array or there are no points (the
+   * constant radius then).
+   */
+  static vtkDataArray* GetRadiusValues(vtkPolyData* particles, const std::string& name);
 
 protected:
   vtkParticleDistributedPartition();

@@ -11,6 +11,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkParticleAmbientVolume.h"
 #include "vtkParticleDensityVolume.h"
+#include "vtkParticleDistributedPartition.h"
 #include "vtkParticleProcessReduction.h"
 #include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
@@ -98,13 +99,8 @@ void vtkParticleDistributedVolumes::UpdateDensityVolume(vtkInformation* inInfo, 
   // this process's particles (each is in exactly one process's piece) in world coordinates,
   // radii as drawn; what vtkParticleDensityVolume::EndParticles gathers on one process
   const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
-  vtkDataArray* radiusValues = (n > 0 && !radiusArray.empty())
-    ? particles->GetPointData()->GetArray(radiusArray.c_str())
-    : nullptr;
-  if (radiusValues && radiusValues->GetNumberOfComponents() != 1)
-  {
-    radiusValues = nullptr;
-  }
+  vtkDataArray* radiusValues =
+    n > 0 ? vtkParticleDistributedPartition::GetRadiusValues(particles, radiusArray) : nullptr;
   const double scale = mapper->GetRadiusScaleVC(actor);
   const double constant = mapper->GetRadius();
   vtkNew<vtkDoubleArray> positions;
