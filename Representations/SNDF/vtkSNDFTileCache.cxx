@@ -333,6 +333,69 @@ public:
     }
     return best;
   }
+
+  // Tile `slot` as the average of its children `down` levels finer (SNDFDownsample.glsl): phase
+  // 0 once per part that holds children (into per-texel records), phase 1 into the destination.
+  void DownsampleInto(int slot, const Children& children, int down, int bins, bool moments)
+  {
+    const int maskVec4s = (std::max(1, bins * bins / 32) + 3) / 4;
+    const std::size_t partialBytes =
+      TileTexels * (4 + maskVec4s + (moments ? 2 : 1) * bins * bins) * 16;
+    if (this->PartialBytes < partialBytes)
+    {
+      vtkParticleComputeProgram::AllocateStorage(this->Partial, partialBytes);
+      this->PartialBytes = partialBytes;
+    }
+    vtkParticleComputeProgram* program = this->Downsample;
+    program->Use();
+    program->SetUniformi("prDestSlot", slot);
+    program->SetUniformi("prFactor", 1 << down);
+    program->SetUniformi("prBins", bins);
+    program->SetUniformi("prMoments", moments ? 1 : 0);
+    program->SetUniformf("prMaxSamples", MaxDownsampledSamples);
+    program->SetUniform2i("prTexelOffset", children.TexelOffset[0], children.TexelOffset[1]);
+    program->SetUniformi("prTilesX", children.TilesX);
+    vtkInternals::Upload(this->Scratch, this->ScratchBytes, children.Slots);
+    vtkParticleComputeProgram::BindStorage(PageBinding, this->Scratch);
+    vtkParticleComputeProgram::BindStorage(MinimumBinding, this->Partial);
+    program->SetUniformi("prPhase", 0);
+    int first = 1;
+    for (const auto& part : this->PartsOf(children.Slots))
+    {
+      this->BindPart(program, part);
+      program->SetUniformi("prFirst", first);
+      program->Dispatch(TileSize / 16, TileSize / 16);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      first = 0;
+    }
+    program->SetUniformi("prPhase", 1);
+    this->BindPart(
+      program, std::make_pair(slot / this->SlotsPerBinBuffer, slot / this->SlotsPerSumBuffer));
+    program->Dispatch(TileSize / 16, TileSize / 16);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    vtkParticleComputeProgram::UseNone();
+  }
+
+  // The view's tiles (indices into `page`) grouped part by part for the tile-list dispatches.
+  void UploadViewTileList(const std::vector<int>& page)
+  {
+    std::vector<int> list;
+    this->ViewPartTiles.clear();
+    for (const auto& part : this->ViewParts)
+    {
+      const int first = static_cast<int>(list.size());
+      for (std::size_t t = 0; t < page.size(); ++t)
+      {
+        if (page[t] / this->SlotsPerBinBuffer == part.first &&
+          page[t] / this->SlotsPerSumBuffer == part.second)
+        {
+          list.push_back(static_cast<int>(t));
+        }
+      }
+      this->ViewPartTiles.emplace_back(first, static_cast<int>(list.size()) - first);
+    }
+    Upload(this->TileList, this->TileListBytes, list);
+  }
 };
 
 vtkStandardNewMacro(vtkSNDFTileCache);
@@ -687,44 +750,7 @@ bool vtkSNDFTileCache::MapView(
           }
         }
         rebake();
-        // phase 0 once per part that holds children (into per-texel records), phase 1 into the
-        // destination (SNDFDownsample.glsl)
-        const int maskVec4s = (std::max(1, this->Bins * this->Bins / 32) + 3) / 4;
-        const std::size_t partialBytes =
-          TileTexels * (4 + maskVec4s + (this->Moments ? 2 : 1) * this->Bins * this->Bins) * 16;
-        if (internals.PartialBytes < partialBytes)
-        {
-          vtkParticleComputeProgram::AllocateStorage(internals.Partial, partialBytes);
-          internals.PartialBytes = partialBytes;
-        }
-        vtkParticleComputeProgram* program = internals.Downsample;
-        program->Use();
-        program->SetUniformi("prDestSlot", slot);
-        program->SetUniformi("prFactor", 1 << down);
-        program->SetUniformi("prBins", this->Bins);
-        program->SetUniformi("prMoments", this->Moments ? 1 : 0);
-        program->SetUniformf("prMaxSamples", MaxDownsampledSamples);
-        program->SetUniform2i("prTexelOffset", children.TexelOffset[0], children.TexelOffset[1]);
-        program->SetUniformi("prTilesX", children.TilesX);
-        vtkInternals::Upload(internals.Scratch, internals.ScratchBytes, children.Slots);
-        vtkParticleComputeProgram::BindStorage(PageBinding, internals.Scratch);
-        vtkParticleComputeProgram::BindStorage(MinimumBinding, internals.Partial);
-        program->SetUniformi("prPhase", 0);
-        int first = 1;
-        for (const auto& part : internals.PartsOf(children.Slots))
-        {
-          internals.BindPart(program, part);
-          program->SetUniformi("prFirst", first);
-          program->Dispatch(TileSize / 16, TileSize / 16);
-          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-          first = 0;
-        }
-        program->SetUniformi("prPhase", 1);
-        internals.BindPart(program,
-          std::make_pair(slot / internals.SlotsPerBinBuffer, slot / internals.SlotsPerSumBuffer));
-        program->Dispatch(TileSize / 16, TileSize / 16);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        vtkParticleComputeProgram::UseNone();
+        internals.DownsampleInto(slot, children, down, this->Bins, this->Moments);
         ++this->NumberOfDownsampledTiles;
         averaged = true;
       }
@@ -743,23 +769,7 @@ bool vtkSNDFTileCache::MapView(
   internals.MappedVersion = tableVersion;
   internals.TilesX = tilesX;
   internals.ViewParts = internals.PartsOf(page);
-  // the view's tiles part by part (tile-list dispatches)
-  std::vector<int> list;
-  internals.ViewPartTiles.clear();
-  for (const auto& part : internals.ViewParts)
-  {
-    const int first = static_cast<int>(list.size());
-    for (std::size_t t = 0; t < page.size(); ++t)
-    {
-      if (page[t] / internals.SlotsPerBinBuffer == part.first &&
-        page[t] / internals.SlotsPerSumBuffer == part.second)
-      {
-        list.push_back(static_cast<int>(t));
-      }
-    }
-    internals.ViewPartTiles.emplace_back(first, static_cast<int>(list.size()) - first);
-  }
-  vtkInternals::Upload(internals.TileList, internals.TileListBytes, list);
+  internals.UploadViewTileList(page);
   internals.TexelOffset[0] = static_cast<int>(view.Origin[0] - TileSize * tx0);
   internals.TexelOffset[1] = static_cast<int>(view.Origin[1] - TileSize * ty0);
   return true;
