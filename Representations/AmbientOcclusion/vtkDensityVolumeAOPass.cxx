@@ -224,7 +224,7 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
                                "uniform vec3 prFetchStep;\n"
                                "uniform float prFetchDistance;\n"
                                "uniform float prStrength;";
-  if (this->RetrievalMode == PER_FRAGMENT)
+  if (this->RetrievalMode == PER_FRAGMENT && this->GetExactLevel())
   {
     hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", uniforms);
     // Eq. 4 with the strength s: A = 1 - s D(p + eps n), the density fetched with trilinear

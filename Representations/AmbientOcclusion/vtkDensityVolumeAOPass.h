@@ -37,6 +37,11 @@
  * vtkParticleDensityVolume's BeginParticles / AddParticles / EndParticles, which other
  * volume-based techniques reuse.
  *
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): with RetrievalMode
+ * PER_FRAGMENT two levels, PER_SPHERE retrieval (level 0) and per fragment (exact); the volume is
+ * the same at both. The delegate's whole draw is timed (the retrieval runs in the particles'
+ * shaders).
+ *
  * @sa vtkParticleDensityVolume vtkParticleSphereMapper vtkSSAOPass
  */
 #ifndef vtkDensityVolumeAOPass_h
@@ -157,10 +162,6 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
-  /**
-   * The shader code depends on RetrievalMode: mappers rebuild their shaders when it changes.
-   */
-  vtkMTimeType GetShaderStageMTime() override { return this->GetMTime(); }
 
 protected:
   vtkDensityVolumeAOPass();
@@ -170,6 +171,9 @@ protected:
    * Rebuild the volume and its texture when the particles or the settings changed.
    */
   void UpdateVolume(const vtkRenderState* s) override;
+
+  // two levels when the retrieval is per fragment: per sphere while the camera moves
+  int GetNumberOfQualityLevels() override { return this->RetrievalMode == PER_FRAGMENT ? 2 : 1; }
 
   int RetrievalMode = PER_FRAGMENT;
   int GenerationMode = CPU_GENERATION;

@@ -13,6 +13,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <cstdint>
 
 //------------------------------------------------------------------------------
@@ -113,6 +114,15 @@ void vtkParticleVolumeAOPass::Render(const vtkRenderState* s)
   const bool bound = this->VolumeValid;
   if (bound)
   {
+    // the frame's level, then the scene drawn with it timed (the shaders change with the level)
+    const int levels = this->GetNumberOfQualityLevels();
+    const bool exact = this->FrameBudget->ChooseFrameLevel(s->GetRenderer(), levels) == levels - 1;
+    if (exact != this->ExactLevel)
+    {
+      this->ExactLevel = exact;
+      this->LevelTime.Modified();
+    }
+    this->FrameBudget->StartTiming();
     this->VolumeTexture->Activate();
     this->CurrentRenderer = s->GetRenderer();
     this->PreRender(s);
@@ -121,10 +131,17 @@ void vtkParticleVolumeAOPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   if (bound)
   {
+    this->FrameBudget->EndFrame();
     this->PostRender(s);
     this->VolumeTexture->Deactivate();
     this->CurrentRenderer = nullptr;
   }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkParticleVolumeAOPass::GetShaderStageMTime()
+{
+  return std::max(this->GetMTime(), this->LevelTime.GetMTime());
 }
 
 //------------------------------------------------------------------------------

@@ -54,6 +54,12 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   /**
+   * The shader code depends on the settings and on the frame's quality level: mappers rebuild
+   * their shaders when either changes (the shader cache keeps both programs).
+   */
+  vtkMTimeType GetShaderStageMTime() override;
+
+  /**
    * Number of volume builds so far.
    */
   vtkGetMacro(NumberOfVolumeBuilds, vtkIdType);
@@ -82,6 +88,15 @@ protected:
   ///@}
 
   using ParticleProps = std::vector<std::pair<vtkActor*, vtkParticleSphereMapper*>>;
+
+  /**
+   * The quality levels of the frame budget (GetFrameBudget()): 1 (default) when the settings are
+   * already the cheapest, else 2, the cheap one described by the subclass. Render chooses the
+   * level before the delegate draws and times the delegate; GetExactLevel() says which level the
+   * shaders of this frame are for.
+   */
+  virtual int GetNumberOfQualityLevels() { return 1; }
+  bool GetExactLevel() { return this->ExactLevel; }
 
   /**
    * Rebuild the volume texture when what it depends on changed (see NeedsBuild); set
@@ -156,6 +171,8 @@ private:
 
   std::vector<double> BuiltState;
   bool Attempted = false;
+  bool ExactLevel = true;
+  vtkTimeStamp LevelTime; // when ExactLevel last changed
 };
 
 #endif

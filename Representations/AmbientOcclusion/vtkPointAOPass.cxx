@@ -321,8 +321,10 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
+    this->FrameBudget->StartTiming(); // the occlusion and its composite, not the scene
     this->ComputeOcclusion();
     this->Composite();
+    this->FrameBudget->EndFrame();
     this->ApplyHeldBackFXAA();
     this->Internals->Timer.End();
   }
@@ -369,7 +371,9 @@ bool vtkPointAOPass::PrepareFrame(const vtkRenderState* s)
   }
   internals.Renderer = ren;
   internals.Timer.StartFrame(this->CollectTimings);
-  const int step = this->HalfResolution ? 2 : 1;
+  // the frame budget's levels: 0 half resolution, 1 the resolution set
+  const bool exact = this->FrameBudget->ChooseFrameLevel(ren, 2) == 1;
+  const int step = this->HalfResolution || !exact ? 2 : 1;
   internals.Allocate(context, width, height, step);
   internals.LowWidth = (width + step - 1) / step;
   internals.LowHeight = (height + step - 1) / step;

@@ -93,6 +93,10 @@
  * plain VTK window) is drawn without ambient occlusion, with a warning: the delegate's camera
  * pass sets up the window's viewport, not the G-buffer's. ParaView's views fill their windows.
  *
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): two levels, HalfResolution
+ * (level 0) and the resolution set (exact). The occlusion and its composite are timed, not the
+ * scene the delegate draws.
+ *
  * The shader code does not depend on the settings (uniforms), so changing them recompiles
  * nothing. Needs OpenGL 3.2 (fragment shaders only). GetStageSeconds() gives GPU times of the
  * stages (timer queries) when CollectTimings is on.

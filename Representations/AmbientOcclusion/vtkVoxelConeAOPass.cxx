@@ -134,7 +134,7 @@ bool vtkVoxelConeAOPass::PostReplaceShaderValues(std::string& vertexShader,
   hooks.Begin(vertexShader, geometryShader, fragmentShader);
   using Hooks = vtkParticleShaderHooks;
   hooks.Insert(Hooks::Fragment, "//PR::Sphere::Dec", "//PR::Include VoxelConeTrace");
-  if (this->RetrievalMode == PER_FRAGMENT)
+  if (this->RetrievalMode == PER_FRAGMENT && this->GetExactLevel())
   {
     // Eq. 7: the occlusion multiplies the lit colour, the ambient illumination is added
     hooks.Insert(Hooks::Fragment, "//PR::AmbientOcclusion::Impl",

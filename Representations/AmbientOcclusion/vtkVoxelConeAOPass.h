@@ -40,6 +40,11 @@
  * (measured: Documentation/AmbientOcclusion.md). The cone length acts in whole steps (the diameter
  * about doubles per step with the default aperture).
  *
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): with RetrievalMode
+ * PER_FRAGMENT two levels, the cones traced per sphere (level 0: six axis directions per sphere in
+ * the vertex stage, blended by the normal) and per fragment (exact); the volume is the same at
+ * both. The delegate's whole draw is timed (the cones are traced in the particles' shaders).
+ *
  * @sa vtkParticleAmbientVolume vtkDensityVolumeAOPass vtkTransparentSphereMapper
  */
 #ifndef vtkVoxelConeAOPass_h
@@ -151,10 +156,6 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
-  /**
-   * The shader code depends on RetrievalMode: mappers rebuild their shaders when it changes.
-   */
-  vtkMTimeType GetShaderStageMTime() override { return this->GetMTime(); }
 
 protected:
   vtkVoxelConeAOPass();
@@ -164,6 +165,9 @@ protected:
    * Rebuild the volume and its texture when the particles or the settings changed.
    */
   void UpdateVolume(const vtkRenderState* s) override;
+
+  // two levels when the retrieval is per fragment: per sphere while the camera moves
+  int GetNumberOfQualityLevels() override { return this->RetrievalMode == PER_FRAGMENT ? 2 : 1; }
   // colours, opacities and the transparency model also change the voxels
   void AppendPropState(
     vtkActor* actor, vtkParticleSphereMapper* mapper, std::vector<double>& state) override;

@@ -24,6 +24,8 @@
 #define vtkParticleAmbientLightPass_h
 
 #include "vtkImageProcessingPass.h"
+#include "vtkNew.h"                         // for vtkNew
+#include "vtkParticleFrameBudget.h"         // for vtkNew<vtkParticleFrameBudget>
 #include "vtkParticleRenderingCoreModule.h" // for export macro
 
 class VTKPARTICLERENDERINGCORE_EXPORT vtkParticleAmbientLightPass : public vtkImageProcessingPass
@@ -49,9 +51,20 @@ public:
    */
   virtual bool GetAddsColouredAmbientLight();
 
+  /**
+   * The pass's quality while the camera moves: its quality setting (ADAPTIVE, EXACT,
+   * INTERACTIVE), the GPU times it measured per level and its last choice (see
+   * vtkParticleFrameBudget and the subclass's description of its levels).
+   */
+  vtkParticleFrameBudget* GetFrameBudget() { return this->FrameBudget; }
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
 protected:
   vtkParticleAmbientLightPass() = default;
   ~vtkParticleAmbientLightPass() override = default;
+
+  vtkNew<vtkParticleFrameBudget> FrameBudget;
 
 private:
   vtkParticleAmbientLightPass(const vtkParticleAmbientLightPass&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkParticleSphereMapper.h"
 #include "vtkParticleEmissionModel.h"
+#include "vtkParticleFrameBudget.h"
 #include "vtkParticleOcclusionCuller.h"
 
 #include "vtkActor.h"
@@ -102,6 +103,8 @@ public:
   vtkTimeStamp VertexCellOfPointTime;
   // GPU timer query around the draw call (CollectTimings)
   vtkOpenGLRenderTimer DrawTimer;
+  // the quality ladder of subclasses with cheaper levels
+  vtkNew<vtkParticleFrameBudget> FrameBudget;
 };
 
 //------------------------------------------------------------------------------
@@ -1344,9 +1347,16 @@ double vtkParticleSphereMapper::GetLastDrawGPUSeconds()
 }
 
 //------------------------------------------------------------------------------
+vtkParticleFrameBudget* vtkParticleSphereMapper::GetFrameBudget()
+{
+  return this->Internals->FrameBudget;
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->DrawTimer.ReleaseGraphicsResources();
+  this->Internals->FrameBudget->ReleaseGraphicsResources(window);
   this->Internals->Culler->ReleaseGraphicsResources(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -1365,6 +1375,8 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
   os << indent << "OcclusionCullingThreshold: " << this->OcclusionCullingThreshold << "\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
+  os << indent << "FrameBudget:\n";
+  this->Internals->FrameBudget->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ClipBox: ";
   if (this->UseClipBox)
   {

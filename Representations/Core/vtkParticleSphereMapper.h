@@ -67,6 +67,7 @@ class vtkDoubleArray;
 class vtkFloatArray;
 class vtkMatrix4x4;
 class vtkOpenGLBufferObject;
+class vtkParticleFrameBudget;
 class vtkParticleOcclusionCuller;
 
 class VTKPARTICLERENDERINGCORE_EXPORT vtkParticleSphereMapper : public vtkOpenGLPolyDataMapper
@@ -192,6 +193,14 @@ public:
    * etc.; its cells are built on the first culled draw after an upload).
    */
   vtkParticleOcclusionCuller* GetOcclusionCuller();
+
+  /**
+   * The mapper's quality while the camera moves: its quality setting (ADAPTIVE, EXACT,
+   * INTERACTIVE), the GPU times it measured per level and its last choice (see
+   * vtkParticleFrameBudget). The opaque core has one level (exact); subclasses with cheaper
+   * levels describe them.
+   */
+  vtkParticleFrameBudget* GetFrameBudget();
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

@@ -28,6 +28,7 @@
 #include "vtkParticleDepthSort.h"
 #include "vtkParticleEmissionModel.h"
 #include "vtkParticleFragmentLists.h"
+#include "vtkParticleFrameBudget.h"
 #include "vtkParticleFrontToBackTarget.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
@@ -55,6 +56,9 @@ vtkStandardNewMacro(vtkTransparentSphereMapper);
 
 namespace
 {
+// the frame budget's levels: 0 the sorted spheres with early termination, 1 the exact setting
+const int NumberOfQualityLevels = 2;
+
 // which shader a helper holds
 enum class Variant
 {
@@ -704,6 +708,16 @@ void vtkTransparentSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
 void vtkTransparentSphereMapper::RenderTranslucentParticles(
   vtkRenderer* ren, vtkActor* act, bool savedByPass)
 {
+  vtkParticleFrameBudget* budget = this->GetFrameBudget();
+  const int level = budget->BeginFrame(ren, NumberOfQualityLevels);
+  this->RenderTranslucentLevel(ren, act, savedByPass, level == NumberOfQualityLevels - 1);
+  budget->EndFrame();
+}
+
+//------------------------------------------------------------------------------
+void vtkTransparentSphereMapper::RenderTranslucentLevel(
+  vtkRenderer* ren, vtkActor* act, bool savedByPass, bool exact)
+{
   vtkInternals& internals = *this->Internals;
   const vtkIdType numPts = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
   if (this->CollectTimings)
@@ -712,8 +726,9 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
     internals.TotalTimer.Start();
   }
   internals.SortTimed = false;
-  internals.ExactOverlapInUse = this->OverlapCompositing == EXACT_OVERLAP ||
-    (this->OverlapCompositing == AUTOMATIC && this->HasOverlappingSpheres());
+  internals.ExactOverlapInUse = exact &&
+    (this->OverlapCompositing == EXACT_OVERLAP ||
+      (this->OverlapCompositing == AUTOMATIC && this->HasOverlappingSpheres()));
   if (internals.ExactOverlapInUse)
   {
     if (this->RenderTranslucentLists(ren, act, savedByPass))
@@ -756,7 +771,7 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
       internals.DrawTimer.Reset();
       internals.DrawTimer.Start();
     }
-    const int chunks = this->EarlyTermination
+    const int chunks = this->EarlyTermination || !exact
       ? static_cast<int>(std::min<vtkIdType>(this->NumberOfChunks, numPts))
       : 1;
     vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());

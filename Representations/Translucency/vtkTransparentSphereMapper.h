@@ -97,6 +97,12 @@
  * TerminationOpacity are masked in the depth buffer, so later chunks skip them (early depth
  * test). The image changes by at most 1 - TerminationOpacity per channel.
  *
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): two levels. The exact level
+ * composites as OverlapCompositing and EarlyTermination say; the interactive level draws the
+ * sorted spheres with early termination (NumberOfChunks, TerminationOpacity), whatever they say.
+ * Still frames and frames whose measured exact time fits the window's desired update rate are
+ * exact; the sort, the opaque particles and the picking are the same at both levels.
+ *
  * Requires OpenGL 4.3 (compute shaders, shader storage buffers) for the translucent path; on an
  * older context an error says so and translucent particles are drawn opaque.
  *
@@ -377,10 +383,16 @@ protected:
   void FetchTimings();
 
   /**
-   * The translucent stage: sort when needed, accumulate front to back, blend over the opaque
-   * image.
+   * The translucent stage at the level the frame budget picks (GetFrameBudget(), timed there):
+   * sort when needed, accumulate front to back, blend over the opaque image.
    */
   void RenderTranslucentParticles(vtkRenderer* ren, vtkActor* act, bool savedByPass);
+
+  /**
+   * The translucent stage at the exact level (OverlapCompositing and EarlyTermination as set) or
+   * the interactive one (sorted spheres with early termination).
+   */
+  void RenderTranslucentLevel(vtkRenderer* ren, vtkActor* act, bool savedByPass, bool exact);
 
   /**
    * Compute the sort keys and sort, unless the camera, actor matrix and particle geometry are
