@@ -310,7 +310,33 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
   }
   // still renders converge when asked (screenshots, batch); interactive ones never do
   this->SNDFRenderPass->SetConvergeOnRender(this->SNDFConvergeStillRenders != 0 && !interactive);
+  // the speed/accuracy trade: the frame time every particle technique chooses from, and the
+  // passes' quality
+  if (interactive && this->InteractiveFrameBudget > 0.0 && this->GetRenderWindow())
+  {
+    this->GetRenderWindow()->SetDesiredUpdateRate(1000.0 / this->InteractiveFrameBudget);
+  }
+  for (int method = DENSITY_VOLUME; method <= POINT_AO; ++method)
+  {
+    if (auto* pass =
+          vtkParticleAmbientLightPass::SafeDownCast(this->GetAmbientOcclusionPass(method)))
+    {
+      pass->GetFrameBudget()->SetQuality(this->InteractiveQuality);
+    }
+  }
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkParticleRenderView::GetAmbientOcclusionQualityText()
+{
+  auto* pass = vtkParticleAmbientLightPass::SafeDownCast(
+    this->GetAmbientOcclusionPass(this->AmbientOcclusion));
+  const char* names[] = { "", "per-sphere retrieval|per-fragment retrieval",
+    "per-sphere cones|per-fragment cones", "half resolution|full resolution" };
+  this->AmbientOcclusionQualityText =
+    pass ? pass->GetFrameBudget()->GetLastChoiceText(names[this->AmbientOcclusion]) : std::string();
+  return this->AmbientOcclusionQualityText.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -360,6 +386,8 @@ void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
   os << indent << "ScaleConsistentShading: " << this->ScaleConsistentShading << "\n";
   os << indent << "SNDFConvergeStillRenders: " << this->SNDFConvergeStillRenders << "\n";
+  os << indent << "InteractiveQuality: " << this->InteractiveQuality << "\n";
+  os << indent << "InteractiveFrameBudget: " << this->InteractiveFrameBudget << "\n";
   os << indent << "ParticlePassChain:\n";
   this->ParticlePassChain->PrintSelf(os, indent.GetNextIndent());
 }

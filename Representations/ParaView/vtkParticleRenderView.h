@@ -61,6 +61,8 @@
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 #include "vtkSmartPointer.h"                    // for vtkSmartPointer
 
+#include <string> // for std::string
+
 class vtkAlgorithm;
 class vtkImageProcessingPass;
 class vtkDensityVolumeAOPass;
@@ -166,6 +168,28 @@ public:
 
   ///@{
   /**
+   * The speed/accuracy trade of the particle passes (vtkParticleFrameBudget): InteractiveQuality
+   * ADAPTIVE (default: exact on still renders, while the camera moves the most accurate level
+   * whose measured time fits the frame), EXACT or INTERACTIVE (always the cheap level), set on
+   * the three ambient-occlusion passes. InteractiveFrameBudget: milliseconds an interactive render
+   * may take (0, default: ParaView's own, 200 ms), set as the render window's desired update rate
+   * for interactive renders, so every particle technique in the view (the representations'
+   * mappers too) chooses from it.
+   */
+  vtkSetClampMacro(InteractiveQuality, int, 0, 2);
+  vtkGetMacro(InteractiveQuality, int);
+  vtkSetClampMacro(InteractiveFrameBudget, double, 0.0, 1.0e6);
+  vtkGetMacro(InteractiveFrameBudget, double);
+  ///@}
+
+  /**
+   * What the ambient-occlusion pass in use chose in the last frame and what its levels cost
+   * (vtkParticleFrameBudget::GetLastChoiceText); empty without ambient occlusion.
+   */
+  const char* GetAmbientOcclusionQualityText();
+
+  ///@{
+  /**
    * The S-NDF pass behind ScaleConsistentShading (in ParaView a proxy of group particle_passes).
    */
   void SetSNDFRenderPass(vtkSNDFRenderPass* pass);
@@ -199,6 +223,9 @@ protected:
   vtkSmartPointer<vtkSNDFRenderPass> SNDFRenderPass;
   int ScaleConsistentShading = 0;
   int SNDFConvergeStillRenders = 0;
+  int InteractiveQuality = 0;
+  double InteractiveFrameBudget = 0.0;
+  std::string AmbientOcclusionQualityText;
   bool RequestedFXAA = false; // the view's UseFXAA property (in effect without S-NDF shading)
   unsigned long PassProgressTag = 0;
   unsigned long SNDFProgressTag = 0;

@@ -18,6 +18,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkParticleDistributedPartition.h"
 #include "vtkParticleDistributedVolumes.h"
+#include "vtkParticleFrameBudget.h"
 #include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkPointData.h"
@@ -119,6 +120,7 @@ void vtkParticleRepresentation::ApplyMapperSettings()
 {
   this->UpdateMapperRadiusArray();
   this->UpdateMapperOpacityArray();
+  this->Mapper->GetFrameBudget()->SetQuality(this->InteractiveQuality);
   if (auto* transparent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper))
   {
     transparent->SetDensityModel(this->DensityModel);
@@ -729,6 +731,22 @@ void vtkParticleRepresentation::SetOverlapCompositing(int mode)
 {
   this->OverlapCompositing = mode;
   this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetInteractiveQuality(int quality)
+{
+  this->InteractiveQuality = quality;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkParticleRepresentation::GetQualityText()
+{
+  const bool translucent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper) != nullptr;
+  this->QualityText = this->Mapper->GetFrameBudget()->GetLastChoiceText(
+    translucent ? "sorted spheres, early termination|exact" : "exact");
+  return this->QualityText.c_str();
 }
 
 //------------------------------------------------------------------------------

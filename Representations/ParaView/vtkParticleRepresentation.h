@@ -119,6 +119,9 @@ public:
   void SetVolumeMix(double mix);
   void SetEarlyTermination(int on);
   void SetOverlapCompositing(int mode); // vtkTransparentSphereMapper::OverlapCompositingModes
+  // the mapper's speed/accuracy trade (vtkParticleFrameBudget::Qualities) and its last choice
+  void SetInteractiveQuality(int quality);
+  const char* GetQualityText();
   void SetFragmentListMemory(double mebibytes);
   void SetOverlapTolerance(double tolerance);
   void SetOpacityReference(int reference); // vtkTransparentSphereMapper::OpacityReferences
@@ -297,6 +300,8 @@ protected:
   double VolumeMix = 0.0;
   bool EarlyTermination = false;
   int OverlapCompositing = 0;
+  int InteractiveQuality = 0;
+  std::string QualityText;
   double FragmentListMemory = 256.0;
   double OverlapTolerance = 0.25;
   // settings of the metaball technique (vtkMetaballMapper's defaults)
