@@ -126,7 +126,9 @@ void vtkParticleFrameBudget::ReportTime(int level, double seconds)
     times.resize(static_cast<std::size_t>(level) + 1, -1.0);
   }
   double& estimate = times[static_cast<std::size_t>(level)];
-  estimate = estimate < 0.0 ? seconds : 0.5 * (estimate + seconds);
+  // a faster time is taken as it is (the slow outliers are the frames that compile shaders or
+  // build volumes); a slower one moves the estimate half way
+  estimate = estimate < 0.0 || seconds < estimate ? seconds : 0.5 * (estimate + seconds);
 }
 
 //------------------------------------------------------------------------------

@@ -84,8 +84,10 @@ public:
   int ChooseLevel(double frameTime, int numberOfLevels);
 
   /**
-   * A measured GPU time of a level (seconds): the level's estimate becomes the mean of it and the
-   * previous estimate, so one odd frame does not flip the choice. Negative times are ignored.
+   * A measured GPU time of a level (seconds). A time below the level's estimate replaces it; a
+   * time above moves it half way (the slow outliers are frames that compile shaders or build
+   * volumes: one of them does not make a level look unaffordable for long). Negative and
+   * non-finite times are ignored.
    */
   void ReportTime(int level, double seconds);
 

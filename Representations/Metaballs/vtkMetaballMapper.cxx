@@ -16,6 +16,7 @@
 #include "vtkParticleCellList.h"
 #include "vtkParticleCompat.h"
 #include "vtkParticleComputeProgram.h"
+#include "vtkParticleFrameBudget.h"
 #include "vtkParticleMemory.h"
 #include "vtkParticleOcclusionCuller.h"
 #include "vtkParticleShaderHooks.h"
@@ -1356,12 +1357,26 @@ void vtkMetaballMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     this->RenderWalkingPlane(ren, act);
     return;
   }
-  this->LastDrawUsedDepthPrePass = this->RenderVicinityWithPrePass(ren, act);
-  if (!this->LastDrawUsedDepthPrePass)
+  // the frame budget's levels (vicinity method with lists): 0 the iso-spheres alone, 1 exact
+  vtkParticleFrameBudget* budget = this->GetFrameBudget();
+  const int levels = this->Internals->Supported ? 2 : 1;
+  if (budget->BeginFrame(ren, levels) < levels - 1)
   {
-    this->Internals->Variant = FinalDraw;
+    this->LastDrawUsedDepthPrePass = false;
+    this->Internals->Variant = VicinitySpheres;
     this->Superclass::RenderPieceDraw(ren, act);
+    this->Internals->Variant = FinalDraw;
   }
+  else
+  {
+    this->LastDrawUsedDepthPrePass = this->RenderVicinityWithPrePass(ren, act);
+    if (!this->LastDrawUsedDepthPrePass)
+    {
+      this->Internals->Variant = FinalDraw;
+      this->Superclass::RenderPieceDraw(ren, act);
+    }
+  }
+  budget->EndFrame();
   if (this->Internals->Supported)
   {
     for (unsigned int binding : { RangeBinding, EntryBinding, IdBinding, ColorBinding })

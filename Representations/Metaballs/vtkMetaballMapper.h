@@ -105,6 +105,13 @@
  *
  * Not done (yet): translucent metaballs.
  *
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): with the vicinity method and
+ * shader storage buffers, two levels, every particle's own iso-sphere alone (level 0: the depth
+ * pre-pass's spheres, shaded, no search; exact where a particle is isolated, the merged shapes
+ * shown as their spheres) and the exact surface. Coarser Tolerance, fewer RefinementSteps or
+ * neighbours save at most 30 % of the frame (measured: Documentation/Performance.md), the
+ * iso-spheres ~90 %. The walking depth plane has one level (its TimeBudget bounds its passes).
+ *
  * @sa vtkParticleSphereMapper vtkMetaballWalkingPlane vtkParticleReferenceMetaballs
  * vtkParticleShaderHooks
  */

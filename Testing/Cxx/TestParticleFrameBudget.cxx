@@ -5,7 +5,8 @@
 //      times); never an unmeasured expensive one;
 //   c) the budget is honoured in direction: a longer frame never picks a cheaper level;
 //   d) EXACT and INTERACTIVE force the exact and the cheapest level;
-//   e) one level is always level 0; measured times are smoothed, bad ones ignored, forgotten on
+//   e) one level is always level 0; a faster time replaces the estimate, a slower one moves it
+//      half way; bad times are ignored, all forgotten on
 //      ForgetTimes; the frame time of a window is 1 / DesiredUpdateRate;
 //   f) the status line names the level and the reason.
 #include "prTestUtilities.h"
@@ -58,9 +59,9 @@ int TestParticleFrameBudget(int, char*[])
   slowCheap->ReportTime(0, 0.2);
   slowCheap->ReportTime(1, 0.1);
   Check(slowCheap->ChooseLevel(0.01, 2) == 1, "nothing fits, the cheap level is slower: exact");
-  slowCheap->ReportTime(0, 0.0);
+  slowCheap->ReportTime(0, 0.1);
   Check(slowCheap->ChooseLevel(0.01, 2) == 1, "equal times: the more accurate level");
-  slowCheap->ReportTime(0, 0.0);
+  slowCheap->ReportTime(0, 0.05);
   Check(slowCheap->ChooseLevel(0.01, 2) == 0, "nothing fits, the cheap level is faster: cheap");
 
   // c) direction: over a sweep of frame times the level never falls as the time grows
@@ -87,7 +88,10 @@ int TestParticleFrameBudget(int, char*[])
   vtkNew<vtkParticleFrameBudget> smooth;
   smooth->ReportTime(1, 0.1);
   smooth->ReportTime(1, 0.3);
-  Check(std::abs(smooth->GetMeasuredTime(1) - 0.2) < 1e-12, "two times: their mean");
+  Check(std::abs(smooth->GetMeasuredTime(1) - 0.2) < 1e-12, "a slower time: half way");
+  smooth->ReportTime(1, 0.15);
+  smooth->ReportTime(1, 0.25);
+  Check(std::abs(smooth->GetMeasuredTime(1) - 0.2) < 1e-12, "a faster time replaces the estimate");
   smooth->ReportTime(1, -1.0);
   smooth->ReportTime(1, std::numeric_limits<double>::quiet_NaN());
   smooth->ReportTime(1, std::numeric_limits<double>::infinity());

@@ -4,7 +4,8 @@ interactive level, in plain VTK through the render window's DesiredUpdateRate:
 - translucency (vtkTransparentSphereMapper, AUTOMATIC overlap on gas that penetrates): the
   sorted spheres with early termination while moving, the exact overlap lists still;
 - PointAO: half resolution while moving, full still;
-- density-volume and voxel-cone AO: per-sphere retrieval while moving, per fragment still.
+- density-volume and voxel-cone AO: per-sphere retrieval while moving, per fragment still;
+- metaballs (vicinity): the particles' iso-spheres while moving, the exact surface still.
 
 Scene: prVTKTesting.gas_and_slab (10^5 particles: an FCC slab between layers of random gas whose
 spheres penetrate each other), 480 x 360. For each technique:
@@ -36,12 +37,14 @@ B = pr.vtkParticleFrameBudget
 # the pixels and the 99th percentile of the pixels' largest channel difference. The AO levels
 # change fine detail everywhere (a pixel-count criterion does not fit them); measured here
 # (mean, 99th percentile): translucent 0.10, 2; PointAO 3.1, 62; density 1.9, 35; voxel cones
-# 4.5, 57.
+# 4.5, 57; metaballs 10.5, 207 (the iso-spheres show the slab's merged surface as its spheres:
+# a preview, whose mean is what is bounded).
 STATED = {
     "translucent": (0.5, 8),
     "pointao": (5.0, 80),
     "density": (3.0, 50),
     "voxelcone": (6.0, 80),
+    "metaballs": (14.0, 255),
 }
 
 
@@ -50,6 +53,8 @@ def build_scene(technique):
     data = particles_from(xyz, radius=radius, type=kinds.astype(np.float32))
     if technique == "translucent":
         mapper = pr.vtkTransparentSphereMapper()
+    elif technique == "metaballs":
+        mapper = pr.vtkMetaballMapper()
     else:
         mapper = pr.vtkParticleSphereMapper()
     mapper.SetInputData(data)
@@ -72,7 +77,7 @@ def build_scene(technique):
     renderer.ResetCameraClippingRange()
     camera_pass = vtkCameraPass()
     owner = mapper
-    if technique == "translucent":
+    if technique in ("translucent", "metaballs"):
         camera_pass.SetDelegatePass(vtkRenderStepsPass())
     else:
         aopass = {"pointao": pr.vtkPointAOPass, "density": pr.vtkDensityVolumeAOPass,
@@ -89,7 +94,7 @@ def frame(window, rate):
     return grab_image(window)[:, :3]
 
 
-for technique in ("translucent", "pointao", "density", "voxelcone"):
+for technique in ("translucent", "pointao", "density", "voxelcone", "metaballs"):
     window, mapper, owner = build_scene(technique)
     budget = owner.GetFrameBudget()
     still = frame(window, STILL_RATE)
@@ -109,14 +114,14 @@ for technique in ("translucent", "pointao", "density", "voxelcone"):
     # ... then the fastest measured level (times set here, so that the check does not depend on
     # this machine's)
     budget.ForgetTimes()
-    budget.ReportTime(0, 10.0)
-    budget.ReportTime(levels - 1, 1.0)
+    budget.ReportTime(0, 1.0e4)  # (a real time read at the frame's start can only lower it)
+    budget.ReportTime(levels - 1, 1.0e-9)
     window.Render()
     check(budget.GetLastLevel() == levels - 1,
           "%s: nothing fits and the exact level is the faster one: exact" % technique)
     budget.ForgetTimes()
-    budget.ReportTime(0, 1.0)
-    budget.ReportTime(levels - 1, 10.0)
+    budget.ReportTime(0, 1.0e-9)
+    budget.ReportTime(levels - 1, 1.0e4)
     window.Render()
     check(budget.GetLastLevel() == 0, "%s: nothing fits, the cheap level is faster: cheap"
           % technique)
