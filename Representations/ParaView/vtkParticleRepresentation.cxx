@@ -743,9 +743,16 @@ void vtkParticleRepresentation::SetInteractiveQuality(int quality)
 //------------------------------------------------------------------------------
 const char* vtkParticleRepresentation::GetQualityText()
 {
-  const bool translucent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper) != nullptr;
-  this->QualityText = this->Mapper->GetFrameBudget()->GetLastChoiceText(
-    translucent ? "sorted spheres, early termination|exact" : "exact");
+  const char* levels = "exact";
+  if (vtkTransparentSphereMapper::SafeDownCast(this->Mapper))
+  {
+    levels = "sorted spheres, early termination|exact";
+  }
+  else if (vtkMetaballMapper::SafeDownCast(this->Mapper))
+  {
+    levels = "iso-spheres|exact surface";
+  }
+  this->QualityText = this->Mapper->GetFrameBudget()->GetLastChoiceText(levels);
   return this->QualityText.c_str();
 }
 

@@ -30,6 +30,7 @@
 #include "vtkParticleFragmentLists.h"
 #include "vtkParticleFrameBudget.h"
 #include "vtkParticleFrontToBackTarget.h"
+#include "vtkParticleOverlapError.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkPointData.h"
@@ -180,6 +181,11 @@ public:
   double OverlapScale = 0.0;
   double OverlapTolerance = -1.0;
   bool ExactOverlapInUse = false;
+  // AUTOMATIC's error estimate: the pairs whose lens may be off, what they were found from, and
+  // the pixels of the last view
+  vtkParticleOverlapError OverlapError;
+  std::vector<double> OverlapErrorKey;
+  double OverlapErrorPixels = 0.0;
 
   // per-particle opacity
   vtkNew<vtkDoubleArray> Opacities;    // Theta_a
@@ -728,7 +734,7 @@ void vtkTransparentSphereMapper::RenderTranslucentLevel(
   internals.SortTimed = false;
   internals.ExactOverlapInUse = exact &&
     (this->OverlapCompositing == EXACT_OVERLAP ||
-      (this->OverlapCompositing == AUTOMATIC && this->HasOverlappingSpheres()));
+      (this->OverlapCompositing == AUTOMATIC && this->AutomaticNeedsExactOverlap(ren, act)));
   if (internals.ExactOverlapInUse)
   {
     if (this->RenderTranslucentLists(ren, act, savedByPass))
@@ -912,6 +918,89 @@ bool vtkTransparentSphereMapper::HasOverlappingSpheres()
     });
   internals.Overlapping = found.load();
   return internals.Overlapping;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransparentSphereMapper::AutomaticNeedsExactOverlap(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.OverlapErrorPixels = 0.0;
+  if (!this->HasOverlappingSpheres())
+  {
+    return false; // (the cheap geometric test first: no pair deeper than the floor)
+  }
+  vtkProperty* property = act->GetProperty();
+  vtkUnsignedCharArray* colors = this->Colors;
+  vtkPolyData* input = this->GetInput();
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  vtkFloatArray* radii = this->GetParticleRadii();
+  vtkDoubleArray* opacities = internals.Opacities;
+  const vtkIdType numPts = points ? points->GetNumberOfPoints() : 0;
+  if (!radii || radii->GetNumberOfTuples() != numPts || opacities->GetNumberOfTuples() != numPts)
+  {
+    return true; // (cannot estimate: the exact path)
+  }
+  const double shading = (1.0 - this->VolumeMix) * 255.0 *
+    (property->GetDiffuse() *
+        std::max({ property->GetColor()[0], property->GetColor()[1], property->GetColor()[2] }) +
+      property->GetSpecular());
+  const std::vector<double> key = { static_cast<double>(this->GetParticleGeometryTime()),
+    static_cast<double>(opacities->GetMTime()),
+    static_cast<double>(colors ? colors->GetMTime() : 0), this->RadiusScaleFactor,
+    this->OverlapTolerance, this->AutomaticErrorTolerance, shading, property->GetOpacity(),
+    static_cast<double>(this->DensityModel), this->HollowFraction };
+  if (key != internals.OverlapErrorKey)
+  {
+    internals.OverlapErrorKey = key;
+    const double* actorColour = property->GetColor();
+    std::vector<vtkParticleOverlapError::Sphere> spheres;
+    spheres.reserve(static_cast<size_t>(numPts));
+    for (vtkIdType i = 0; i < numPts; ++i)
+    {
+      vtkParticleOverlapError::Sphere sphere;
+      points->GetPoint(i, sphere.Centre);
+      sphere.Radius = this->RadiusScaleFactor * radii->GetValue(i);
+      double alpha = property->GetOpacity() * opacities->GetValue(i);
+      for (int k = 0; k < 3; ++k)
+      {
+        sphere.Colour[k] = colors && colors->GetNumberOfComponents() >= 3
+          ? colors->GetTypedComponent(i, k)
+          : 255.0 * actorColour[k];
+      }
+      if (colors && colors->GetNumberOfComponents() == 4)
+      {
+        alpha *= colors->GetTypedComponent(i, 3) / 255.0;
+      }
+      sphere.OpticalDepth = alpha < 1.0 ? -std::log1p(-alpha) : 0.0; // opaque: depth-tested
+      if (sphere.Radius > 0.0 && std::isfinite(sphere.Radius) && sphere.OpticalDepth > 0.0 &&
+        std::isfinite(sphere.Centre[0]) && std::isfinite(sphere.Centre[1]) &&
+        std::isfinite(sphere.Centre[2]))
+      {
+        spheres.push_back(sphere);
+      }
+    }
+    internals.OverlapError.Build(spheres,
+      GetMaximumPathIntegral(this->DensityModel, this->HollowFraction), shading,
+      this->AutomaticErrorTolerance, this->OverlapTolerance);
+  }
+  int width = 0;
+  int height = 0;
+  ren->GetTiledSize(&width, &height);
+  internals.OverlapErrorPixels = internals.OverlapError.EstimatePixels(ren);
+  return internals.OverlapErrorPixels >
+    this->AutomaticPixelShare * static_cast<double>(width) * static_cast<double>(height);
+}
+
+//------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::GetEstimatedOverlapErrorPixels()
+{
+  return this->Internals->OverlapErrorPixels;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransparentSphereMapper::GetLargestOverlapErrorBound()
+{
+  return this->Internals->OverlapError.GetLargestAmplitude();
 }
 
 //------------------------------------------------------------------------------
@@ -1185,6 +1274,8 @@ void vtkTransparentSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OverlapCompositing: " << this->OverlapCompositing << "\n";
   os << indent << "FragmentListMemory: " << this->FragmentListMemory << " MiB\n";
   os << indent << "OverlapTolerance: " << this->OverlapTolerance << "\n";
+  os << indent << "AutomaticErrorTolerance: " << this->AutomaticErrorTolerance << "\n";
+  os << indent << "AutomaticPixelShare: " << this->AutomaticPixelShare << "\n";
   os << indent << "NumberOfSorts: " << this->NumberOfSorts << "\n";
   os << indent << "NumberOfOpacityUploads: " << this->NumberOfOpacityUploads << "\n";
 }

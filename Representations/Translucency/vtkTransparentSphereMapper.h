@@ -79,8 +79,13 @@
  * fit, see vtkParticleFragmentLists). AUTOMATIC (default) uses the lists when two drawn
  * translucent spheres penetrate each other by more than OverlapTolerance of the smaller radius
  * (|p_i - p_j| < s (r_i + r_j - t min(r_i, r_j)), s = RadiusScaleFactor; checked over the
- * occupied cells of a vtkParticleCellList when the positions, radii or opacities change) and the
- * sort otherwise. Where spheres do not overlap both paths agree; early termination applies to the
+ * occupied cells of a vtkParticleCellList when the positions, radii or opacities change) and
+ * the error the sort would make there matters in this view: for every such pair a bound of the
+ * sorted path's error in its lens (a_i a_j |L_i - L_j|, from the lens opacities, colours and
+ * shading; vtkParticleOverlapError) is found when the particles change, and the lists are used
+ * when the lenses whose bound exceeds AutomaticErrorTolerance (2/255) cover more than
+ * AutomaticPixelShare (0.01 %) of the viewport in this view; the sort otherwise. Where spheres
+ * do not overlap both paths agree; early termination applies to the
  * sorted path only. The lists cost more than the sorted path (measured:
  * Documentation/Translucency.md).
  *
@@ -287,6 +292,27 @@ public:
   bool GetExactOverlapInUse();
   bool HasOverlappingSpheres();
 
+  ///@{
+  /**
+   * AUTOMATIC's error estimate (see the class description): the lists are used when the sorted
+   * spheres may be off by more than AutomaticErrorTolerance (in 1/255, default 2) on more than
+   * AutomaticPixelShare of the viewport's pixels (default 1e-4): the suite's own image
+   * criterion.
+   */
+  vtkSetClampMacro(AutomaticErrorTolerance, double, 0.0, 255.0);
+  vtkGetMacro(AutomaticErrorTolerance, double);
+  vtkSetClampMacro(AutomaticPixelShare, double, 0.0, 1.0);
+  vtkGetMacro(AutomaticPixelShare, double);
+  ///@}
+
+  /**
+   * The estimate of the last AUTOMATIC frame: pixels the sorted spheres may put over
+   * AutomaticErrorTolerance (0 when no pair penetrates deeper than OverlapTolerance), and the
+   * largest bound of a pair's error in 1/255 (vtkParticleOverlapError).
+   */
+  double GetEstimatedOverlapErrorPixels();
+  double GetLargestOverlapErrorBound();
+
   /**
    * The exact-overlap lists (statistics of the last frame: fragments, bands, incomplete pixels).
    */
@@ -395,6 +421,11 @@ protected:
   void RenderTranslucentLevel(vtkRenderer* ren, vtkActor* act, bool savedByPass, bool exact);
 
   /**
+   * AUTOMATIC: whether the sorted spheres may miss the image criterion in this view.
+   */
+  bool AutomaticNeedsExactOverlap(vtkRenderer* ren, vtkActor* act);
+
+  /**
    * Compute the sort keys and sort, unless the camera, actor matrix and particle geometry are
    * those of the last sort. Returns false when the sort could not run.
    */
@@ -427,6 +458,8 @@ protected:
   int OverlapCompositing = AUTOMATIC;
   double FragmentListMemory = 256.0;
   double OverlapTolerance = 0.25;
+  double AutomaticErrorTolerance = 2.0;
+  double AutomaticPixelShare = 1.0e-4;
 
   vtkIdType NumberOfSorts = 0;
   vtkIdType NumberOfOpacityUploads = 0;
