@@ -41,6 +41,7 @@ parser.add_argument("--size", default="1024x768")
 parser.add_argument("--csv", default="")
 parser.add_argument("--png", default="")
 parser.add_argument("--scenes", default="dense,mixed,sparse")
+parser.add_argument("--renderer", default="Mesa llvmpipe")
 args, _ = parser.parse_known_args()
 simple.LoadPlugin(args.plugin, remote=False)
 size = [int(v) for v in args.size.split("x")]
@@ -116,6 +117,7 @@ for scene in args.scenes.split(","):
         still = timed(view, False)
         interactive = timed(view, True)
         chosen = level_text(view, display, technique).split(" (")[0]
+        chosen = "-" if technique == "opaque core" else chosen
         quality_owner = view if technique in AO else display
         quality_owner.InteractiveQuality = "Interactive"
         view.SMProxy.InteractiveRender()
@@ -179,6 +181,6 @@ if args.png:
         ax.set_xticklabels(TECHNIQUES, rotation=20)
         ax.legend(fontsize=8)
     fig.suptitle("Interactive (cheap level) and still frames, %dx%d, ParaView, %s"
-                 % (size[0], size[1], "llvmpipe" if True else ""))
+                 % (size[0], size[1], args.renderer))
     fig.tight_layout()
     fig.savefig(args.png, dpi=90)

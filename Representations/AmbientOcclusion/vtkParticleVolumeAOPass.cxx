@@ -115,11 +115,11 @@ void vtkParticleVolumeAOPass::Render(const vtkRenderState* s)
   if (bound)
   {
     // the frame's level, then the scene drawn with it timed (the shaders change with the level)
-    const int levels = this->GetNumberOfQualityLevels();
-    const bool exact = this->FrameBudget->ChooseFrameLevel(s->GetRenderer(), levels) == levels - 1;
-    if (exact != this->ExactLevel)
+    const int level =
+      this->FrameBudget->ChooseFrameLevel(s->GetRenderer(), this->GetNumberOfQualityLevels());
+    if (level != this->QualityLevel)
     {
-      this->ExactLevel = exact;
+      this->QualityLevel = level;
       this->LevelTime.Modified();
     }
     this->FrameBudget->StartTiming();

@@ -91,12 +91,13 @@ protected:
 
   /**
    * The quality levels of the frame budget (GetFrameBudget()): 1 (default) when the settings are
-   * already the cheapest, else 2, the cheap one described by the subclass. Render chooses the
-   * level before the delegate draws and times the delegate; GetExactLevel() says which level the
-   * shaders of this frame are for.
+   * already the cheapest, else as many as the subclass describes, the last exact. Render chooses
+   * the level before the delegate draws and times the delegate; GetQualityLevel() and
+   * GetExactLevel() say which level the shaders of this frame are for.
    */
   virtual int GetNumberOfQualityLevels() { return 1; }
-  bool GetExactLevel() { return this->ExactLevel; }
+  int GetQualityLevel() { return this->QualityLevel; }
+  bool GetExactLevel() { return this->QualityLevel == this->GetNumberOfQualityLevels() - 1; }
 
   /**
    * Rebuild the volume texture when what it depends on changed (see NeedsBuild); set
@@ -171,8 +172,8 @@ private:
 
   std::vector<double> BuiltState;
   bool Attempted = false;
-  bool ExactLevel = true;
-  vtkTimeStamp LevelTime; // when ExactLevel last changed
+  int QualityLevel = 0;
+  vtkTimeStamp LevelTime; // when QualityLevel last changed
 };
 
 #endif

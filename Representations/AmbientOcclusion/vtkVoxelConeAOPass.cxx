@@ -199,7 +199,7 @@ bool vtkVoxelConeAOPass::SetShaderParameters(
   program->SetUniformf("prAmbientScale", static_cast<float>(this->AmbientIllumination));
 
   // the cones in the normal's frame (u, v, n) and their cosine weights
-  const int count = this->ConeCount;
+  const int count = this->GetQualityLevel() == 0 && !this->GetExactLevel() ? 1 : this->ConeCount;
   const bool central = count >= 5;
   const int ring = central ? count - 1 : (count == 1 ? 0 : count);
   const double tilt = vtkMath::RadiansFromDegrees(

@@ -40,10 +40,12 @@
  * (measured: Documentation/AmbientOcclusion.md). The cone length acts in whole steps (the diameter
  * about doubles per step with the default aperture).
  *
- * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): with RetrievalMode
- * PER_FRAGMENT two levels, the cones traced per sphere (level 0: six axis directions per sphere in
- * the vertex stage, blended by the normal) and per fragment (exact); the volume is the same at
- * both. The delegate's whole draw is timed (the cones are traced in the particles' shaders).
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): up to three levels, one cone
+ * traced per sphere (level 0: along six axis directions per sphere in the vertex stage, blended
+ * by the normal), ConeCount cones per sphere (when ConeCount > 1), and per fragment (when
+ * RetrievalMode is PER_FRAGMENT; the last level is the settings as set). The volume is the same
+ * at every level. The delegate's whole draw is timed (the cones are traced in the particles'
+ * shaders).
  *
  * @sa vtkParticleAmbientVolume vtkDensityVolumeAOPass vtkTransparentSphereMapper
  */
@@ -166,8 +168,12 @@ protected:
    */
   void UpdateVolume(const vtkRenderState* s) override;
 
-  // two levels when the retrieval is per fragment: per sphere while the camera moves
-  int GetNumberOfQualityLevels() override { return this->RetrievalMode == PER_FRAGMENT ? 2 : 1; }
+  // the levels: one cone per sphere; the cones as set per sphere (when more than one); per
+  // fragment (when set)
+  int GetNumberOfQualityLevels() override
+  {
+    return 1 + (this->ConeCount > 1 ? 1 : 0) + (this->RetrievalMode == PER_FRAGMENT ? 1 : 0);
+  }
   // colours, opacities and the transparency model also change the voxels
   void AppendPropState(
     vtkActor* actor, vtkParticleSphereMapper* mapper, std::vector<double>& state) override;

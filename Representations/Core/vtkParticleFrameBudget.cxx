@@ -106,6 +106,11 @@ int vtkParticleFrameBudget::ChooseLevel(double frameTime, int numberOfLevels)
       }
     }
     level = std::max(level, 0); // the cheapest, not measured yet, is tried
+    if (level + 1 < exact && this->GetMeasuredTime(level) >= 0.0 &&
+      this->GetMeasuredTime(level) <= frameTime && this->GetMeasuredTime(level + 1) < 0.0)
+    {
+      ++level; // the next level between, not measured yet, is tried once when this one fits
+    }
   }
   this->LastLevel = level;
   this->LastNumberOfLevels = exact + 1;

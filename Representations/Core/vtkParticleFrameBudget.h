@@ -23,7 +23,8 @@
  *   measured yet is not assumed to fit); when none fits, the fastest level measured, the more
  *   accurate of equal times (a level meant to be cheap need not be cheaper on every scene: the
  *   per-sphere AO retrieval costs more than per fragment where spheres cover few pixels); the
- *   cheapest level is drawn once to measure it. The exact level is measured by the still frames,
+ *   cheapest level is drawn once to measure it, and a level between the cheapest and the exact
+ *   one once when the level below it fits. The exact level is measured by the still frames,
  *   so a scene that is cheap enough stays exact while moving.
  * EXACT always draws the exact level; INTERACTIVE always the cheapest (tests, benchmarks, or a
  * user who wants the fast picture). The technique's measured time is compared with the whole

@@ -130,6 +130,8 @@ void vtkParticleRepresentation::ApplyMapperSettings()
     transparent->SetOverlapCompositing(this->OverlapCompositing);
     transparent->SetFragmentListMemory(this->FragmentListMemory);
     transparent->SetOverlapTolerance(this->OverlapTolerance);
+    transparent->SetAutomaticErrorTolerance(this->AutomaticErrorTolerance);
+    transparent->SetAutomaticPixelShare(this->AutomaticPixelShare);
     transparent->SetOpacityReference(this->OpacityReference);
     // 0: the mapper estimates from its own particles (one process)
     transparent->SetColumnLayers(this->DistributedPartition->GetColumnLayers());
@@ -730,6 +732,20 @@ void vtkParticleRepresentation::SetEarlyTermination(int on)
 void vtkParticleRepresentation::SetOverlapCompositing(int mode)
 {
   this->OverlapCompositing = mode;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetAutomaticErrorTolerance(double tolerance)
+{
+  this->AutomaticErrorTolerance = tolerance;
+  this->ApplyMapperSettings();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetAutomaticPixelShare(double share)
+{
+  this->AutomaticPixelShare = share;
   this->ApplyMapperSettings();
 }
 

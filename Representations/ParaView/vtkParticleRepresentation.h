@@ -124,6 +124,8 @@ public:
   const char* GetQualityText();
   void SetFragmentListMemory(double mebibytes);
   void SetOverlapTolerance(double tolerance);
+  void SetAutomaticErrorTolerance(double tolerance); // 1/255
+  void SetAutomaticPixelShare(double share);
   void SetOpacityReference(int reference); // vtkTransparentSphereMapper::OpacityReferences
   void SetUseOpacityArray(bool use);
   vtkGetMacro(UseOpacityArray, bool);
@@ -301,6 +303,8 @@ protected:
   bool EarlyTermination = false;
   int OverlapCompositing = 0;
   int InteractiveQuality = 0;
+  double AutomaticErrorTolerance = 2.0;
+  double AutomaticPixelShare = 1.0e-4;
   std::string QualityText;
   double FragmentListMemory = 256.0;
   double OverlapTolerance = 0.25;

@@ -64,6 +64,14 @@ int TestParticleFrameBudget(int, char*[])
   slowCheap->ReportTime(0, 0.05);
   Check(slowCheap->ChooseLevel(0.01, 2) == 0, "nothing fits, the cheap level is faster: cheap");
 
+  vtkNew<vtkParticleFrameBudget> middle;
+  middle->ReportTime(0, 0.01);
+  middle->ReportTime(2, 1.0);
+  Check(middle->ChooseLevel(0.1, 3) == 1, "the cheapest fits, the middle level unmeasured: tried");
+  middle->ReportTime(1, 0.5);
+  Check(middle->ChooseLevel(0.1, 3) == 0, "the middle level measured too slow: the cheapest");
+  Check(middle->ChooseLevel(0.005, 3) == 0, "nothing fits: the fastest measured");
+
   // c) direction: over a sweep of frame times the level never falls as the time grows
   int previous = 0;
   bool monotone = true;
