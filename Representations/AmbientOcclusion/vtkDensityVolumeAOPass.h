@@ -163,6 +163,16 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
 
+  /**
+   * The frame budget's levels with these settings: "per-sphere retrieval|per-fragment retrieval"
+   * (per fragment set), else "per-sphere retrieval".
+   */
+  std::string GetQualityLevelNames() override
+  {
+    return this->RetrievalMode == PER_FRAGMENT ? "per-sphere retrieval|per-fragment retrieval"
+                                               : "per-sphere retrieval";
+  }
+
 protected:
   vtkDensityVolumeAOPass();
   ~vtkDensityVolumeAOPass() override;

@@ -219,6 +219,11 @@ public:
   vtkBooleanMacro(HalfResolution, bool);
   ///@}
 
+  /**
+   * The frame budget's levels: "half resolution|full resolution".
+   */
+  std::string GetQualityLevelNames() override { return "half resolution|full resolution"; }
+
   ///@{
   /**
    * GPU time of the last Render()'s stages (timer queries, read at the next Render() or by

@@ -159,6 +159,17 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
 
+  /**
+   * The frame budget's levels with these settings (GetNumberOfQualityLevels): "one cone per
+   * sphere", then "cones per sphere" (ConeCount > 1), then "cones per fragment" (per fragment
+   * set).
+   */
+  std::string GetQualityLevelNames() override
+  {
+    return std::string("one cone per sphere") + (this->ConeCount > 1 ? "|cones per sphere" : "") +
+      (this->RetrievalMode == PER_FRAGMENT ? "|cones per fragment" : "");
+  }
+
 protected:
   vtkVoxelConeAOPass();
   ~vtkVoxelConeAOPass() override;
@@ -174,6 +185,7 @@ protected:
   {
     return 1 + (this->ConeCount > 1 ? 1 : 0) + (this->RetrievalMode == PER_FRAGMENT ? 1 : 0);
   }
+
   // colours, opacities and the transparency model also change the voxels
   void AppendPropState(
     vtkActor* actor, vtkParticleSphereMapper* mapper, std::vector<double>& state) override;

@@ -28,6 +28,8 @@
 #include "vtkParticleFrameBudget.h"         // for vtkNew<vtkParticleFrameBudget>
 #include "vtkParticleRenderingCoreModule.h" // for export macro
 
+#include <string> // for std::string
+
 class VTKPARTICLERENDERINGCORE_EXPORT vtkParticleAmbientLightPass : public vtkImageProcessingPass
 {
 public:
@@ -57,6 +59,17 @@ public:
    * vtkParticleFrameBudget and the subclass's description of its levels).
    */
   vtkParticleFrameBudget* GetFrameBudget() { return this->FrameBudget; }
+
+  /**
+   * The names of the quality levels with the current settings, cheapest first, separated by '|'
+   * ("exact" by default), and one line saying which the last frame drew, why, and what each cost
+   * (vtkParticleFrameBudget::GetLastChoiceText).
+   */
+  virtual std::string GetQualityLevelNames() { return "exact"; }
+  std::string GetQualityText()
+  {
+    return this->FrameBudget->GetLastChoiceText(this->GetQualityLevelNames());
+  }
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

@@ -1353,6 +1353,12 @@ vtkParticleFrameBudget* vtkParticleSphereMapper::GetFrameBudget()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkParticleSphereMapper::GetQualityText()
+{
+  return this->Internals->FrameBudget->GetLastChoiceText(this->GetQualityLevelNames());
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleSphereMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->DrawTimer.ReleaseGraphicsResources();

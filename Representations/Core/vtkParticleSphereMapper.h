@@ -202,6 +202,14 @@ public:
    */
   vtkParticleFrameBudget* GetFrameBudget();
 
+  /**
+   * The names of the quality levels, cheapest first, separated by '|' ("exact" for the core),
+   * and one line saying which the last frame drew, why, and what each cost
+   * (vtkParticleFrameBudget::GetLastChoiceText).
+   */
+  virtual std::string GetQualityLevelNames() { return "exact"; }
+  std::string GetQualityText();
+
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   /**

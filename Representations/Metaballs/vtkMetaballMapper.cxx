@@ -1350,6 +1350,13 @@ vtkMetaballWalkingPlane* vtkMetaballMapper::GetWalkingPlane()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkMetaballMapper::GetQualityLevelNames()
+{
+  return this->Method == VICINITY && this->Internals->Supported ? "iso-spheres|exact surface"
+                                                                : "exact surface";
+}
+
+//------------------------------------------------------------------------------
 void vtkMetaballMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
   if (this->Method == WALKING_DEPTH_PLANE)

@@ -137,6 +137,12 @@ public:
    */
   bool GetDrawsSphereGlyphs() override;
 
+  /**
+   * The frame budget's levels: "iso-spheres|exact surface" (one, "exact surface", for the walking
+   * depth plane or without shader storage buffers).
+   */
+  std::string GetQualityLevelNames() override;
+
   enum MethodType
   {
     VICINITY = 0,

@@ -332,26 +332,7 @@ const char* vtkParticleRenderView::GetAmbientOcclusionQualityText()
 {
   auto* pass = vtkParticleAmbientLightPass::SafeDownCast(
     this->GetAmbientOcclusionPass(this->AmbientOcclusion));
-  std::string names = "per-sphere retrieval|per-fragment retrieval";
-  if (this->AmbientOcclusion == POINT_AO)
-  {
-    names = "half resolution|full resolution";
-  }
-  else if (this->AmbientOcclusion == VOXEL_CONE_TRACING)
-  {
-    // the levels that exist with these settings (vtkVoxelConeAOPass)
-    names = "one cone per sphere";
-    if (this->VoxelConeAOPass->GetConeCount() > 1)
-    {
-      names += "|cones per sphere";
-    }
-    if (this->VoxelConeAOPass->GetRetrievalMode() == vtkVoxelConeAOPass::PER_FRAGMENT)
-    {
-      names += "|cones per fragment";
-    }
-  }
-  this->AmbientOcclusionQualityText =
-    pass ? pass->GetFrameBudget()->GetLastChoiceText(names) : std::string();
+  this->AmbientOcclusionQualityText = pass ? pass->GetQualityText() : std::string();
   return this->AmbientOcclusionQualityText.c_str();
 }
 

@@ -759,16 +759,7 @@ void vtkParticleRepresentation::SetInteractiveQuality(int quality)
 //------------------------------------------------------------------------------
 const char* vtkParticleRepresentation::GetQualityText()
 {
-  const char* levels = "exact";
-  if (vtkTransparentSphereMapper::SafeDownCast(this->Mapper))
-  {
-    levels = "sorted spheres, early termination|exact";
-  }
-  else if (vtkMetaballMapper::SafeDownCast(this->Mapper))
-  {
-    levels = "iso-spheres|exact surface";
-  }
-  this->QualityText = this->Mapper->GetFrameBudget()->GetLastChoiceText(levels);
+  this->QualityText = this->Mapper->GetQualityText();
   return this->QualityText.c_str();
 }
 

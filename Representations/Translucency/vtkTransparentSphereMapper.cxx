@@ -992,6 +992,12 @@ bool vtkTransparentSphereMapper::AutomaticNeedsExactOverlap(vtkRenderer* ren, vt
 }
 
 //------------------------------------------------------------------------------
+std::string vtkTransparentSphereMapper::GetQualityLevelNames()
+{
+  return "sorted spheres, early termination|exact";
+}
+
+//------------------------------------------------------------------------------
 double vtkTransparentSphereMapper::GetEstimatedOverlapErrorPixels()
 {
   return this->Internals->OverlapErrorPixels;

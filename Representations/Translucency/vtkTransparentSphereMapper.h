@@ -311,6 +311,11 @@ public:
    * largest bound of a pair's error in 1/255 (vtkParticleOverlapError).
    */
   double GetEstimatedOverlapErrorPixels();
+
+  /**
+   * The frame budget's levels: "sorted spheres, early termination|exact".
+   */
+  std::string GetQualityLevelNames() override;
   double GetLargestOverlapErrorBound();
 
   /**
