@@ -42,11 +42,15 @@ parser.add_argument("--csv", default="")
 parser.add_argument("--png", default="")
 parser.add_argument("--scenes", default="dense,mixed,sparse")
 parser.add_argument("--renderer", default="Mesa llvmpipe")
+parser.add_argument("--techniques", default="",
+                    help="comma-separated subset (the opaque core is always measured)")
 args, _ = parser.parse_known_args()
 simple.LoadPlugin(args.plugin, remote=False)
 size = [int(v) for v in args.size.split("x")]
 SCENES = {"dense": "fcc_block.vtp", "mixed": "lj_film.vtp", "sparse": "lj_droplets.vtp"}
 TECHNIQUES = ["opaque core", "translucent", "density AO", "voxel-cone AO", "PointAO", "metaballs"]
+if args.techniques:
+    TECHNIQUES = ["opaque core"] + [t for t in args.techniques.split(",") if t != "opaque core"]
 AO = {"density AO": "Density Volume", "voxel-cone AO": "Voxel Cone Tracing", "PointAO": "PointAO"}
 
 

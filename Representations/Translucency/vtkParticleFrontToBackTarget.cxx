@@ -50,8 +50,13 @@ public:
   vtkNew<vtkOpenGLFramebufferObject> ResolveFBO;
   bool ResolveAllocated = false;
   int ResolveFormat = 0;
+  // downsampled accumulation: the opaque depth at full resolution, reduced into OpaqueDepth
+  vtkNew<vtkTextureObject> FullDepth;
+  vtkNew<vtkOpenGLFramebufferObject> ReduceFBO;
+  bool ReduceAllocated = false;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> BlendQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> ReduceQuad;
   bool Allocated = false;
   bool Active = false;
 
@@ -105,6 +110,37 @@ public:
     this->MaskFBO->AddDepthAttachment(this->MaskDepth);
     this->State->PopFramebufferBindings();
     this->Allocated = true;
+    return true;
+  }
+
+  // The full-resolution depth texture and the framebuffer that writes the reduced one.
+  bool AllocateReduction(int w, int h)
+  {
+    if (this->ReduceAllocated)
+    {
+      if (this->FullDepth->GetWidth() != static_cast<unsigned int>(w) ||
+        this->FullDepth->GetHeight() != static_cast<unsigned int>(h))
+      {
+        this->FullDepth->Resize(w, h);
+      }
+      return true;
+    }
+    vtkTextureObject* full = this->FullDepth;
+    full->SetContext(this->Context);
+    full->SetMinificationFilter(vtkTextureObject::Nearest);
+    full->SetMagnificationFilter(vtkTextureObject::Nearest);
+    full->SetWrapS(vtkTextureObject::ClampToEdge);
+    full->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!full->AllocateDepth(w, h, vtkTextureObject::Float32))
+    {
+      return false;
+    }
+    this->ReduceFBO->SetContext(this->Context);
+    this->State->PushFramebufferBindings();
+    this->ReduceFBO->Bind();
+    this->ReduceFBO->AddDepthAttachment(this->OpaqueDepth);
+    this->State->PopFramebufferBindings();
+    this->ReduceAllocated = true;
     return true;
   }
 
@@ -202,18 +238,26 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
   {
     return false;
   }
-  this->Size[0] = vp[2];
-  this->Size[1] = vp[3];
+  const int factor = this->Downsampling;
+  this->Size[0] = (vp[2] + factor - 1) / factor;
+  this->Size[1] = (vp[3] + factor - 1) / factor;
 
   ostate->Push(); // everything, including the current framebuffer bindings, back in End()
-  if (!internals.Allocate(ctx, vp[2], vp[3]))
+  if (!internals.Allocate(ctx, this->Size[0], this->Size[1]) ||
+    (factor > 1 && !internals.AllocateReduction(vp[2], vp[3])))
   {
-    vtkErrorMacro(<< "Cannot allocate the " << vp[2] << "x" << vp[3]
+    vtkErrorMacro(<< "Cannot allocate the " << this->Size[0] << "x" << this->Size[1]
                   << " float accumulation buffers of the translucent particles.");
     ostate->Pop();
     return false;
   }
   internals.Active = true;
+  // bilinear upsampling in End() when downsampled; never filtered at full resolution
+  const int filter = factor > 1 ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+  internals.Accumulation->SetMinificationFilter(filter);
+  internals.Accumulation->SetMagnificationFilter(filter);
+  vtkTextureObject* depthCopy =
+    factor > 1 ? internals.FullDepth.Get() : internals.OpaqueDepth.Get();
 
   // the opaque depth
   ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, outer);
@@ -266,16 +310,20 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
     ostate->vtkglBlitFramebuffer(vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3], 0, 0, vp[2], vp[3],
       GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     internals.ResolveFBO->Bind(GL_READ_FRAMEBUFFER);
-    CopyDepth(internals.OpaqueDepth, 0, 0, vp[2], vp[3]);
+    CopyDepth(depthCopy, 0, 0, vp[2], vp[3]);
   }
   else
   {
-    CopyDepth(internals.OpaqueDepth, vp[0], vp[1], vp[2], vp[3]);
+    CopyDepth(depthCopy, vp[0], vp[1], vp[2], vp[3]);
+  }
+  if (factor > 1)
+  {
+    this->ReduceOpaqueDepth(vp[2], vp[3]);
   }
 
   internals.AccumulationFBO->Bind();
   internals.AccumulationFBO->ActivateDrawBuffer(0);
-  ostate->vtkglViewport(0, 0, vp[2], vp[3]);
+  ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDepthMask(GL_TRUE);
@@ -285,6 +333,47 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
   this->ActivateDrawingState();
   this->NumberOfMaskedPixels = 0;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::ReduceOpaqueDepth(int width, int height)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkOpenGLState* ostate = internals.State;
+  // the farthest opaque depth of each Downsampling x Downsampling block
+  vtkOpenGLQuadHelper* quad = internals.Quad(internals.ReduceQuad,
+    "uniform sampler2D fullDepth;\nuniform int factor;\nuniform ivec2 fullSize;\n"
+    "uniform ivec2 size;\n",
+    "  ivec2 first = ivec2(floor(texCoord * vec2(size))) * factor;\n"
+    "  float depth = 0.0;\n"
+    "  for (int j = 0; j < factor; ++j)\n"
+    "  {\n"
+    "    for (int i = 0; i < factor; ++i)\n"
+    "    {\n"
+    "      depth = max(depth,\n"
+    "        texelFetch(fullDepth, min(first + ivec2(i, j), fullSize - 1), 0).r);\n"
+    "    }\n"
+    "  }\n"
+    "  gl_FragDepth = depth;\n");
+  if (!quad)
+  {
+    return;
+  }
+  internals.ReduceFBO->Bind();
+  internals.ReduceFBO->DeactivateDrawBuffers();
+  ostate->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  internals.FullDepth->Activate();
+  quad->Program->SetUniformi("fullDepth", internals.FullDepth->GetTextureUnit());
+  quad->Program->SetUniformi("factor", this->Downsampling);
+  const int fullSize[2] = { width, height };
+  quad->Program->SetUniform2i("fullSize", fullSize);
+  quad->Program->SetUniform2i("size", this->Size);
+  quad->Render();
+  internals.FullDepth->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -440,6 +529,14 @@ void vtkParticleFrontToBackTarget::ReleaseGraphicsResources(vtkWindow* window)
     internals.BlendQuad->ReleaseGraphicsResources(window);
     internals.BlendQuad.reset();
   }
+  if (internals.ReduceQuad)
+  {
+    internals.ReduceQuad->ReleaseGraphicsResources(window);
+    internals.ReduceQuad.reset();
+  }
+  internals.FullDepth->ReleaseGraphicsResources(window);
+  internals.ReduceFBO->ReleaseGraphicsResources(window);
+  internals.ReduceAllocated = false;
   internals.Accumulation->ReleaseGraphicsResources(window);
   internals.MaskDepth->ReleaseGraphicsResources(window);
   internals.OpaqueDepth->ReleaseGraphicsResources(window);
@@ -462,6 +559,7 @@ void vtkParticleFrontToBackTarget::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "Downsampling: " << this->Downsampling << "\n";
   os << indent << "CountMaskedPixels: " << this->CountMaskedPixels << "\n";
   os << indent << "NumberOfMaskedPixels: " << this->NumberOfMaskedPixels << "\n";
   os << indent << "KeepAccumulation: " << this->KeepAccumulation << "\n";

@@ -19,6 +19,13 @@
  * 1/255 in all) and restores the OpenGL state and bindings exactly.
  *
  * The accumulation is float so that hundreds of layers add up without 8-bit banding.
+ *
+ * Downsampling > 1 (the interactive level of vtkTransparentSphereMapper) accumulates at
+ * ceil(width / d) x ceil(height / d) pixels over the same view: the opaque depth is reduced to
+ * the farthest depth of each d x d block (so that no translucent fragment in front of any opaque
+ * pixel of the block is cut away) and End() composites the accumulation with bilinear
+ * upsampling. The picture differs from the full-resolution one only at the scale of d pixels
+ * (silhouettes and opaque edges); with 1 (the default) nothing is resampled.
  */
 #ifndef vtkParticleFrontToBackTarget_h
 #define vtkParticleFrontToBackTarget_h
@@ -48,7 +55,8 @@ public:
   bool Begin(vtkRenderer* ren, bool savedByPass);
 
   /**
-   * Depth of the opaque image (window depth, same size as the accumulation), valid between
+   * Depth of the opaque image (window depth, same size as the accumulation: the farthest of
+   * each block when downsampled), valid between
    * Begin() and End(). Sample it with texelFetch at gl_FragCoord.xy.
    */
   vtkTextureObject* GetOpaqueDepthTexture();
@@ -77,8 +85,18 @@ public:
 
   ///@{
   /**
-   * Size of the accumulation buffer (the renderer's viewport) and the number of masked pixels
-   * of the last MaskSaturatedPixels() (only counted with CountMaskedPixels, a read-back).
+   * Accumulate at 1 / Downsampling of the viewport's resolution in each direction (1 to 4;
+   * default 1, full resolution). Read at Begin().
+   */
+  vtkSetClampMacro(Downsampling, int, 1, 4);
+  vtkGetMacro(Downsampling, int);
+  ///@}
+
+  ///@{
+  /**
+   * Size of the accumulation buffer (the renderer's viewport, divided by Downsampling) and the
+   * number of masked pixels of the last MaskSaturatedPixels() (only counted with CountMaskedPixels,
+   * a read-back).
    */
   vtkGetVector2Macro(Size, int);
   vtkSetMacro(CountMaskedPixels, bool);
@@ -107,11 +125,15 @@ protected:
   ~vtkParticleFrontToBackTarget() override;
 
   int Size[2] = { 0, 0 };
+  int Downsampling = 1;
   bool CountMaskedPixels = false;
   long long NumberOfMaskedPixels = 0;
   bool KeepAccumulation = false;
 
 private:
+  // reduce the full-resolution opaque depth into the accumulation-sized one (Downsampling > 1)
+  void ReduceOpaqueDepth(int width, int height);
+
   vtkParticleFrontToBackTarget(const vtkParticleFrontToBackTarget&) = delete;
   void operator=(const vtkParticleFrontToBackTarget&) = delete;
 

@@ -58,7 +58,11 @@ vtkStandardNewMacro(vtkTransparentSphereMapper);
 namespace
 {
 // the frame budget's levels: 0 the sorted spheres with early termination, 1 the exact setting
-const int NumberOfQualityLevels = 2;
+// the frame budget's levels (GetQualityLevelNames): half resolution sorted spheres, full
+// resolution sorted spheres with early termination, exact
+const int NumberOfQualityLevels = 3;
+// the accumulation's resolution divisor at the cheapest level
+const int InteractiveDownsampling = 2;
 
 // which shader a helper holds
 enum class Variant
@@ -716,7 +720,9 @@ void vtkTransparentSphereMapper::RenderTranslucentParticles(
 {
   vtkParticleFrameBudget* budget = this->GetFrameBudget();
   const int level = budget->BeginFrame(ren, NumberOfQualityLevels);
+  this->Internals->Target->SetDownsampling(level == 0 ? InteractiveDownsampling : 1);
   this->RenderTranslucentLevel(ren, act, savedByPass, level == NumberOfQualityLevels - 1);
+  this->Internals->Target->SetDownsampling(1);
   budget->EndFrame();
 }
 
@@ -777,9 +783,14 @@ void vtkTransparentSphereMapper::RenderTranslucentLevel(
       internals.DrawTimer.Reset();
       internals.DrawTimer.Start();
     }
-    const int chunks = this->EarlyTermination || !exact
-      ? static_cast<int>(std::min<vtkIdType>(this->NumberOfChunks, numPts))
-      : 1;
+    // early termination: as set at the exact level; on at the full-resolution interactive
+    // level; off at half resolution (a quarter of the fragments leaves too little for the mask
+    // passes to save; the interactive picture's error against the still one was the same with
+    // and without on the bundled scenes)
+    const bool terminate =
+      exact ? this->EarlyTermination : internals.Target->GetDownsampling() == 1;
+    const int chunks =
+      terminate ? static_cast<int>(std::min<vtkIdType>(this->NumberOfChunks, numPts)) : 1;
     vtkOpenGLRenderWindow* ctx = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
     for (int c = 0; c < chunks; ++c)
     {
@@ -994,7 +1005,7 @@ bool vtkTransparentSphereMapper::AutomaticNeedsExactOverlap(vtkRenderer* ren, vt
 //------------------------------------------------------------------------------
 std::string vtkTransparentSphereMapper::GetQualityLevelNames()
 {
-  return "sorted spheres, early termination|exact";
+  return "half resolution, sorted spheres|sorted spheres, early termination|exact";
 }
 
 //------------------------------------------------------------------------------

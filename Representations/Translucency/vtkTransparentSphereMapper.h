@@ -102,11 +102,15 @@
  * TerminationOpacity are masked in the depth buffer, so later chunks skip them (early depth
  * test). The image changes by at most 1 - TerminationOpacity per channel.
  *
- * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): two levels. The exact level
- * composites as OverlapCompositing and EarlyTermination say; the interactive level draws the
- * sorted spheres with early termination (NumberOfChunks, TerminationOpacity), whatever they say.
- * Still frames and frames whose measured exact time fits the window's desired update rate are
- * exact; the sort, the opaque particles and the picking are the same at both levels.
+ * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): three levels. The exact level
+ * composites as OverlapCompositing and EarlyTermination say; the two interactive levels draw the
+ * sorted spheres whatever they say: the cheapest into an accumulation of half the viewport's
+ * resolution in each direction (a quarter of the fragments, the cost of this stage; composited
+ * with bilinear upsampling over the full-resolution opaque image, so that only translucent
+ * silhouettes and edges against opaque geometry blur by a pixel), the next at full resolution
+ * with early termination (NumberOfChunks, TerminationOpacity). Still frames and frames whose
+ * measured exact time fits the window's desired update rate are exact; the sort, the opaque
+ * particles and the picking are the same at every level.
  *
  * Requires OpenGL 4.3 (compute shaders, shader storage buffers) for the translucent path; on an
  * older context an error says so and translucent particles are drawn opaque.
@@ -313,7 +317,9 @@ public:
   double GetEstimatedOverlapErrorPixels();
 
   /**
-   * The frame budget's levels: "sorted spheres, early termination|exact".
+   * The frame budget's levels: "half resolution, sorted spheres|sorted spheres, early
+   * termination|exact" (the first accumulates at half the viewport's resolution in each
+   * direction, vtkParticleFrontToBackTarget::SetDownsampling, and upsamples bilinearly).
    */
   std::string GetQualityLevelNames() override;
   double GetLargestOverlapErrorBound();
@@ -421,7 +427,8 @@ protected:
 
   /**
    * The translucent stage at the exact level (OverlapCompositing and EarlyTermination as set) or
-   * the interactive one (sorted spheres with early termination).
+   * an interactive one (sorted spheres at the target's resolution; early termination at full
+   * resolution).
    */
   void RenderTranslucentLevel(vtkRenderer* ren, vtkActor* act, bool savedByPass, bool exact);
 

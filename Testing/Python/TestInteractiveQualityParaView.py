@@ -5,7 +5,7 @@ representation and the Particle Render View):
   (QualityText, AmbientOcclusionQualityText);
 - an interactive render (what the GUI issues while the mouse moves) gets ParaView's 200 ms, or
   the view's Interactive Frame Budget: with 0.001 ms nothing fits and the translucent particles
-  are drawn as sorted spheres with early termination, PointAO at half resolution;
+  are drawn as sorted spheres at half resolution, PointAO at half resolution;
 - the still render after interactive ones is the first still render, bit for bit;
 - Interactive Quality 'Interactive' draws the cheap level in a still render, 'Exact' the exact
   level in an interactive one, on the representation and on the view.
@@ -64,8 +64,9 @@ view.InteractiveFrameBudget = 0.001
 interactive_render(view)
 said = text(display, "QualityText")
 print("interactive, 0.001 ms: " + said)
-check(said.startswith("sorted spheres") and "(interactive frame of 0.001 ms)" in said,
-      "nothing fits 0.001 ms: the sorted spheres")
+check(said.startswith("half resolution, sorted spheres") and
+      "(interactive frame of 0.001 ms)" in said,
+      "nothing fits 0.001 ms: the sorted spheres at half resolution")
 interactive_render(view)
 
 again = pr.capture(view, shot % "still_again")
@@ -76,7 +77,8 @@ check(text(display, "QualityText").startswith("exact"), "... and exact")
 display.InteractiveQuality = "Interactive"
 simple.Render(view)
 said = text(display, "QualityText")
-check(said.startswith("sorted spheres") and "(interactive quality asked for)" in said,
+check(said.startswith("half resolution, sorted spheres") and
+      "(interactive quality asked for)" in said,
       "Interactive Quality 'Interactive': the cheap level in a still render (%s)" % said)
 display.InteractiveQuality = "Exact"
 interactive_render(view)

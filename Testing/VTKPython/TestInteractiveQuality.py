@@ -2,10 +2,11 @@
 interactive level, in plain VTK through the render window's DesiredUpdateRate:
 
 - translucency (vtkTransparentSphereMapper, AUTOMATIC overlap on gas that penetrates): the
-  sorted spheres with early termination while moving, the exact overlap lists still;
+  sorted spheres at half resolution, then at full resolution with early termination, while
+  moving, the exact overlap lists still (three levels);
 - PointAO: half resolution while moving, full still;
 - density-volume AO: per-sphere retrieval while moving, per fragment still; voxel-cone AO: one
-  cone per sphere, the three cones per sphere, per fragment still (three levels);
+  cone per sphere, the cones per sphere, per fragment still (three levels);
 - metaballs (vicinity): the particles' iso-spheres while moving, the exact surface still.
 
 Scene: prVTKTesting.gas_and_slab (10^5 particles: an FCC slab between layers of random gas whose
@@ -37,11 +38,12 @@ B = pr.vtkParticleFrameBudget
 # stated interactive errors in 1/255 (Documentation/Performance.md): the mean difference over
 # the pixels and the 99th percentile of the pixels' largest channel difference. The AO levels
 # change fine detail everywhere (a pixel-count criterion does not fit them); measured here
-# (mean, 99th percentile): translucent 0.10, 2; PointAO 3.1, 62; density 1.9, 35; voxel cones
+# (mean, 99th percentile): translucent (half resolution: the gas's spheres are 2-6 pixels here)
+# 5.3, 56; PointAO 3.1, 62; density 1.9, 35; voxel cones
 # (one cone per sphere) 7.6, 85; metaballs 10.5, 207 (the iso-spheres show the slab's merged surface as its spheres:
 # a preview, whose mean is what is bounded).
 STATED = {
-    "translucent": (0.5, 8),
+    "translucent": (7.0, 80),
     "pointao": (5.0, 80),
     "density": (3.0, 50),
     "voxelcone": (9.0, 110),
@@ -100,7 +102,7 @@ for technique in ("translucent", "pointao", "density", "voxelcone", "metaballs")
     budget = owner.GetFrameBudget()
     still = frame(window, STILL_RATE)
     levels = budget.GetLastNumberOfLevels()
-    expected_levels = 3 if technique == "voxelcone" else 2
+    expected_levels = 3 if technique in ("voxelcone", "translucent") else 2
     check(levels == expected_levels, "%s: %d levels (%d)" % (technique, expected_levels, levels))
     check(budget.GetLastLevel() == levels - 1, "%s: a still frame is exact" % technique)
     if technique == "translucent":
@@ -139,7 +141,7 @@ for technique in ("translucent", "pointao", "density", "voxelcone", "metaballs")
     p99 = float(np.percentile(d, 99))
     stated = STATED[technique]
     print("%s: interactive vs still: mean %.2f/255, 99th percentile %.0f/255, max %d/255; %s"
-          % (technique, mean, p99, d.max(), budget.GetLastChoiceText("cheap|exact")))
+          % (technique, mean, p99, d.max(), budget.GetLastChoiceText(owner.GetQualityLevelNames())))
     check(d.max() > 0, "%s: the interactive picture is the cheaper one (it differs)" % technique)
     check(mean <= stated[0] and p99 <= stated[1],
           "%s: interactive error within the stated mean %.1f/255, 99th percentile %d/255"
