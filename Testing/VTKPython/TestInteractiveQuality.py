@@ -141,7 +141,8 @@ for technique in ("translucent", "pointao", "density", "voxelcone", "metaballs")
     p99 = float(np.percentile(d, 99))
     stated = STATED[technique]
     print("%s: interactive vs still: mean %.2f/255, 99th percentile %.0f/255, max %d/255; %s"
-          % (technique, mean, p99, d.max(), budget.GetLastChoiceText(owner.GetQualityLevelNames())))
+          % (technique, mean, p99, d.max(),
+             budget.GetLastChoiceText(owner.GetQualityLevelNames())))
     check(d.max() > 0, "%s: the interactive picture is the cheaper one (it differs)" % technique)
     check(mean <= stated[0] and p99 <= stated[1],
           "%s: interactive error within the stated mean %.1f/255, 99th percentile %d/255"
