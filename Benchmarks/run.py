@@ -325,7 +325,7 @@ SUITES = [
           ["quality.csv", "quality.png"], "(built in)",
           lambda c: [Cmd(["pvpython", "--force-offscreen-rendering",
                           os.path.join(BENCH, "quality_benchmark.py"), "--plugin",
-                          os.path.join(c.build, PLUGIN), "--data", DATA, "--frames", "5",
+                          os.path.join(c.build, PLUGIN), "--data", DATA, "--frames", "9",
                           "--csv", os.path.join(c.out, "quality.csv"),
                           "--png", os.path.join(c.out, "quality.png")], main=True)],
           lambda c: [Cmd(["pvpython", "--force-offscreen-rendering",
