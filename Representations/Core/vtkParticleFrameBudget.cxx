@@ -85,6 +85,10 @@ int vtkParticleFrameBudget::ChooseLevel(double frameTime, int numberOfLevels)
   {
     level = 0;
   }
+  else if (this->Quality == ADAPTIVE && !(frameTime >= this->StillFrameTime) && !this->ChooseByTime)
+  {
+    level = 0;
+  }
   else if (this->Quality == ADAPTIVE && !(frameTime >= this->StillFrameTime))
   {
     level = -1;
@@ -240,7 +244,8 @@ std::string vtkParticleFrameBudget::GetLastChoiceText(const std::string& levelNa
   }
   else
   {
-    text << " (interactive frame of " << FormatMilliseconds(this->LastFrameTime) << ")";
+    text << " (interactive frame of " << FormatMilliseconds(this->LastFrameTime)
+         << (this->ChooseByTime ? ")" : ", the cheapest level on every process)");
   }
   if (exact > 0)
   {
@@ -271,6 +276,7 @@ void vtkParticleFrameBudget::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Quality: " << this->Quality << "\n";
+  os << indent << "ChooseByTime: " << this->ChooseByTime << "\n";
   os << indent << "StillFrameTime: " << this->StillFrameTime << "\n";
   os << indent << "LastLevel: " << this->LastLevel << " of " << this->LastNumberOfLevels << "\n";
   os << indent << "LastFrameTime: " << this->LastFrameTime << "\n";

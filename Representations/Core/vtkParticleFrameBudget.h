@@ -26,6 +26,10 @@
  *   cheapest level is drawn once to measure it, and a level between the cheapest and the exact
  *   one once when the level below it fits. The exact level is measured by the still frames,
  *   so a scene that is cheap enough stays exact while moving.
+ * With ChooseByTime off, an interactive ADAPTIVE frame draws the cheapest level without looking
+ * at measured times: the processes of a distributed render, each with its own timings, then draw
+ * the same level (ParaView's Particles representation and Particle Render View turn it off under
+ * MPI; still frames stay exact).
  * EXACT always draws the exact level; INTERACTIVE always the cheapest (tests, benchmarks, or a
  * user who wants the fast picture). The technique's measured time is compared with the whole
  * frame's time: the opaque scene around it is not subtracted.
@@ -62,6 +66,17 @@ public:
    */
   vtkSetClampMacro(Quality, int, ADAPTIVE, INTERACTIVE);
   vtkGetMacro(Quality, int);
+  ///@}
+
+  ///@{
+  /**
+   * Whether an interactive ADAPTIVE frame chooses its level by the measured times (default on)
+   * or always draws the cheapest level (off: the same level on every process of a distributed
+   * render).
+   */
+  vtkSetMacro(ChooseByTime, bool);
+  vtkGetMacro(ChooseByTime, bool);
+  vtkBooleanMacro(ChooseByTime, bool);
   ///@}
 
   ///@{
@@ -153,6 +168,7 @@ protected:
   ~vtkParticleFrameBudget() override;
 
   int Quality = ADAPTIVE;
+  bool ChooseByTime = true;
   double StillFrameTime = 1.0;
   int LastLevel = 0;
   int LastNumberOfLevels = 1;

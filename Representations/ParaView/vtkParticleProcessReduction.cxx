@@ -44,6 +44,13 @@ void vtkParticleProcessReduction::Extent::Reduce(vtkMultiProcessController* cont
 }
 
 //------------------------------------------------------------------------------
+bool vtkParticleProcessReduction::Distributed()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller && controller->GetNumberOfProcesses() > 1;
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleProcessReduction::OnEveryProcess(vtkMultiProcessController* controller, bool ok)
 {
   int local = ok ? 1 : 0;

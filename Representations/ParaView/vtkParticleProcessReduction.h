@@ -42,6 +42,8 @@ public:
     double MeanRadius() const { return this->Count > 0.0 ? this->RadiusSum / this->Count : 0.0; }
   };
 
+  // whether the global controller has more than one process (not collective)
+  static bool Distributed();
   // whether ok holds on every process (collective)
   static bool OnEveryProcess(vtkMultiProcessController* controller, bool ok);
   // the values summed over the processes, in place (collective)

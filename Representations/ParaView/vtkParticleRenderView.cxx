@@ -11,6 +11,7 @@
 #include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkParticlePassChain.h"
+#include "vtkParticleProcessReduction.h"
 #include "vtkPointAOPass.h"
 #include "vtkProcessModule.h"
 #include "vtkRenderWindow.h"
@@ -322,6 +323,8 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
           vtkParticleAmbientLightPass::SafeDownCast(this->GetAmbientOcclusionPass(method)))
     {
       pass->GetFrameBudget()->SetQuality(this->InteractiveQuality);
+      // under MPI every process draws the same level (see vtkParticleFrameBudget)
+      pass->GetFrameBudget()->SetChooseByTime(!vtkParticleProcessReduction::Distributed());
     }
   }
   this->Superclass::AboutToRenderOnLocalProcess(interactive);

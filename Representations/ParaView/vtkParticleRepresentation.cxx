@@ -19,6 +19,7 @@
 #include "vtkParticleDistributedPartition.h"
 #include "vtkParticleDistributedVolumes.h"
 #include "vtkParticleFrameBudget.h"
+#include "vtkParticleProcessReduction.h"
 #include "vtkParticleRenderView.h"
 #include "vtkParticleSphereMapper.h"
 #include "vtkPointData.h"
@@ -121,6 +122,9 @@ void vtkParticleRepresentation::ApplyMapperSettings()
   this->UpdateMapperRadiusArray();
   this->UpdateMapperOpacityArray();
   this->Mapper->GetFrameBudget()->SetQuality(this->InteractiveQuality);
+  // under MPI every process must draw the same level: the cheapest while moving, not each
+  // process's own choice by its own timings
+  this->Mapper->GetFrameBudget()->SetChooseByTime(!vtkParticleProcessReduction::Distributed());
   if (auto* transparent = vtkTransparentSphereMapper::SafeDownCast(this->Mapper))
   {
     transparent->SetDensityModel(this->DensityModel);

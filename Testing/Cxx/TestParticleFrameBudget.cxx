@@ -4,7 +4,8 @@
 //      the cheapest once (to measure it), then the fastest measured (the more accurate of equal
 //      times); never an unmeasured expensive one;
 //   c) the budget is honoured in direction: a longer frame never picks a cheaper level;
-//   d) EXACT and INTERACTIVE force the exact and the cheapest level;
+//   d) EXACT and INTERACTIVE force the exact and the cheapest level; with ChooseByTime off
+//      (distributed renders) an interactive frame draws the cheapest level, a still one exact;
 //   e) one level is always level 0; a faster time replaces the estimate, a slower one moves it
 //      half way; bad times are ignored, all forgotten on
 //      ForgetTimes; the frame time of a window is 1 / DesiredUpdateRate;
@@ -90,6 +91,19 @@ int TestParticleFrameBudget(int, char*[])
   fresh->SetQuality(vtkParticleFrameBudget::INTERACTIVE);
   Check(fresh->ChooseLevel(1e4, 3) == 0, "INTERACTIVE: the cheapest in a still frame");
   fresh->SetQuality(vtkParticleFrameBudget::ADAPTIVE);
+  // ChooseByTime off (distributed renders): the cheapest while moving, whatever fits; exact still
+  Check(fresh->ChooseLevel(0.5, 3) == 2, "by time: an interactive frame that fits is exact");
+  fresh->ChooseByTimeOff();
+  Check(fresh->ChooseLevel(0.9, 3) == 0 && fresh->ChooseLevel(0.5, 3) == 0,
+    "ChooseByTime off: the cheapest in every interactive frame");
+  Check(fresh->ChooseLevel(1e4, 3) == 2, "ChooseByTime off: a still frame is exact");
+  Check(fresh->GetLastChoiceText("a|b|c").find("(still frame)") != std::string::npos,
+    "ChooseByTime off: the still frame says so");
+  fresh->ChooseLevel(0.5, 3);
+  Check(fresh->GetLastChoiceText("a|b|c").find("the cheapest level on every process") !=
+      std::string::npos,
+    "ChooseByTime off: the interactive frame says why");
+  fresh->ChooseByTimeOn();
 
   // e) one level, smoothing, bad times, forgetting
   Check(fresh->ChooseLevel(1e-6, 1) == 0 && fresh->ChooseLevel(1e4, 1) == 0, "one level: 0");
