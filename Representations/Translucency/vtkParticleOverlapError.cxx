@@ -141,20 +141,63 @@ double vtkParticleOverlapError::EstimatePixels(vtkRenderer* ren) const
   ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
   double eye[3];
   double direction[3];
+  double up[3];
   camera->GetPosition(eye);
   camera->GetDirectionOfProjection(direction);
+  camera->GetViewUp(up);
   const bool parallel = camera->GetParallelProjection() != 0;
+  // the view angle spans the height, or the width with UseHorizontalViewAngle
+  const double span = camera->GetUseHorizontalViewAngle() ? width : height;
   const double pixelsPerUnit = parallel
     ? height / (2.0 * camera->GetParallelScale())
-    : height / (2.0 * std::tan(0.5 * camera->GetViewAngle() * 3.14159265358979323846 / 180.0));
-  return this->EstimatePixels(eye, direction, pixelsPerUnit, parallel,
-    static_cast<double>(width) * static_cast<double>(height));
+    : span / (2.0 * std::tan(0.5 * camera->GetViewAngle() * 3.14159265358979323846 / 180.0));
+  return this->EstimatePixels(eye, direction, up, pixelsPerUnit, parallel, width, height);
 }
 
 //------------------------------------------------------------------------------
 double vtkParticleOverlapError::EstimatePixels(const double eye[3], const double direction[3],
-  double pixelsPerUnit, bool parallel, double viewportPixels) const
+  const double up[3], double pixelsPerUnit, bool parallel, int width, int height) const
 {
+  const double viewportPixels = static_cast<double>(width) * static_cast<double>(height);
+  // the view's right and (orthogonalised) up axes
+  double right[3] = { direction[1] * up[2] - direction[2] * up[1],
+    direction[2] * up[0] - direction[0] * up[2], direction[0] * up[1] - direction[1] * up[0] };
+  const double rightLength =
+    std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
+  const bool haveAxes = rightLength > 0.0 && pixelsPerUnit > 0.0;
+  double upward[3] = { 0.0, 0.0, 0.0 };
+  if (haveAxes)
+  {
+    for (double& c : right)
+    {
+      c /= rightLength;
+    }
+    upward[0] = right[1] * direction[2] - right[2] * direction[1];
+    upward[1] = right[2] * direction[0] - right[0] * direction[2];
+    upward[2] = right[0] * direction[1] - right[1] * direction[0];
+  }
+  // the frustum's half extents: tangents of the half angles (perspective) or world units
+  // (parallel)
+  const double halfX = haveAxes ? 0.5 * width / pixelsPerUnit : 0.0;
+  const double halfY = haveAxes ? 0.5 * height / pixelsPerUnit : 0.0;
+  auto outside = [&](const Lens& lens, double along)
+  {
+    if (!haveAxes)
+    {
+      return false;
+    }
+    const double v[3] = { lens.Centre[0] - eye[0], lens.Centre[1] - eye[1],
+      lens.Centre[2] - eye[2] };
+    const double x = std::abs(v[0] * right[0] + v[1] * right[1] + v[2] * right[2]);
+    const double y = std::abs(v[0] * upward[0] + v[1] * upward[1] + v[2] * upward[2]);
+    if (parallel)
+    {
+      return x - lens.Radius > halfX || y - lens.Radius > halfY;
+    }
+    // beyond a side plane x = t along (signed distance (x - t along) / sqrt(1 + t^2))
+    return x - halfX * along > lens.Radius * std::sqrt(1.0 + halfX * halfX) ||
+      y - halfY * along > lens.Radius * std::sqrt(1.0 + halfY * halfY);
+  };
   double pixels = 0.0;
   for (const Lens& lens : this->Lenses)
   {
@@ -163,6 +206,10 @@ double vtkParticleOverlapError::EstimatePixels(const double eye[3], const double
     if (!parallel && !(along + lens.Radius > 0.0))
     {
       continue; // behind the camera
+    }
+    if (outside(lens, along))
+    {
+      continue; // beside the view
     }
     // a lens the eye is in or near covers the view
     const double scale = parallel ? pixelsPerUnit : pixelsPerUnit / std::max(along, 1e-300);

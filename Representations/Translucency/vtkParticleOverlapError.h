@@ -24,9 +24,10 @@
  * Build keeps the pairs with A_ij above the tolerance (the only ones that can put a pixel over
  * it) that penetrate by more than a floor (a fraction of the smaller radius); EstimatePixels
  * sums the pixels their lenses can cover in a view (discs of radius max(a, d / 2) projected at
- * the pair's depth, a pair behind the camera counting nothing, the total at most the
- * viewport). Lenses outside the view and occlusion by other geometry are not excluded: the
- * estimate errs towards exact.
+ * the pair's depth, the total at most the viewport); a lens behind the camera or wholly outside
+ * the view frustum's side planes (its bounding sphere beyond one of them) counts nothing.
+ * Occlusion by other geometry is not subtracted, nor are lenses counted once where they overlap
+ * on screen: the estimate errs towards exact.
  *
  * Plain C++ (no VTK object), thread-safe after Build.
  */
@@ -66,12 +67,13 @@ public:
   double EstimatePixels(vtkRenderer* ren) const;
 
   /**
-   * The same for an explicit view: eye position, unit view direction, pixels per world unit at
-   * distance 1 along it (perspective: height / (2 tan(angle / 2)); parallel projection: pass
-   * parallel true and height / (2 parallel scale)), and the viewport's pixels.
+   * The same for an explicit view: eye position, unit view direction, view-up (need not be
+   * orthogonal to the direction), pixels per world unit at distance 1 along the direction
+   * (perspective: height / (2 tan(angle / 2)); parallel projection: pass parallel true and
+   * height / (2 parallel scale)), and the viewport's size in pixels.
    */
-  double EstimatePixels(const double eye[3], const double direction[3], double pixelsPerUnit,
-    bool parallel, double viewportPixels) const;
+  double EstimatePixels(const double eye[3], const double direction[3], const double up[3],
+    double pixelsPerUnit, bool parallel, int width, int height) const;
 
   /**
    * Kept pairs, and the largest A_ij over all penetrating pairs (1/255).

@@ -6,8 +6,8 @@
 //   b) Build keeps the pairs over the tolerance and deeper than the floor, and reports the
 //      largest bound of all;
 //   c) EstimatePixels: a lens of radius r at distance D covers pi (r P / D)^2 pixels (P pixels
-//      per unit at distance 1), nothing behind the eye, at most the viewport; parallel views use
-//      P as is.
+//      per unit at distance 1), nothing behind the eye or wholly beside the view frustum (its
+//      side planes, the viewport's aspect), at most the viewport; parallel views use P as is.
 #include "prTestUtilities.h"
 
 #include "vtkParticleOverlapError.h"
@@ -95,14 +95,50 @@ int TestParticleOverlapError(int, char*[])
   const double eye[3] = { 0.5, 0, 10 };
   const double down[3] = { 0, 0, -1 };
   const double r = std::sqrt(3.0) / 2.0;
-  const double pixels = one.EstimatePixels(eye, down, 500.0, false, 1e6);
+  const double north[3] = { 0, 1, 0 }; // the view-up
+  const double pixels = one.EstimatePixels(eye, down, north, 500.0, false, 1000, 1000);
   const double expectedPixels = pi * std::pow(r * 500.0 / 10.0, 2);
   Check(std::abs(pixels - expectedPixels) < 1e-9 * expectedPixels,
     "a lens covers pi (r P / D)^2 pixels");
   const double up[3] = { 0, 0, 1 };
-  Check(one.EstimatePixels(eye, up, 500.0, false, 1e6) == 0.0, "behind the eye: nothing");
-  Check(one.EstimatePixels(eye, down, 5e4, false, 1e6) == 1e6, "at most the viewport");
-  Check(std::abs(one.EstimatePixels(eye, up, 50.0, true, 1e6) - pi * std::pow(r * 50.0, 2)) < 1e-6,
+  Check(
+    one.EstimatePixels(eye, up, north, 500.0, false, 1000, 1000) == 0.0, "behind the eye: nothing");
+  Check(
+    one.EstimatePixels(eye, down, north, 5e4, false, 1000, 1000) == 1e6, "at most the viewport");
+  Check(std::abs(one.EstimatePixels(eye, up, north, 50.0, true, 1000, 1000) -
+          pi * std::pow(r * 50.0, 2)) < 1e-6,
     "parallel projection: P pixels per unit at any depth");
+
+  // beside the view: 1000 x 1000 pixels, P 500 (a 90 degree frustum, side planes x = +-D at
+  // depth D): the lens at depth 10 is outside where its centre lies more than r sqrt(2) beyond
+  // the plane, i.e. at a sideways offset of 10 + r sqrt(2)
+  const double edge = 10.0 + r * std::sqrt(2.0);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    for (double sign : { -1.0, 1.0 })
+    {
+      double inside[3] = { eye[0], eye[1], eye[2] };
+      double outside[3] = { eye[0], eye[1], eye[2] };
+      inside[axis] -= sign * (edge - 0.01);
+      outside[axis] -= sign * (edge + 0.01);
+      Check(std::abs(one.EstimatePixels(inside, down, north, 500.0, false, 1000, 1000) -
+              expectedPixels) < 1e-9 * expectedPixels,
+        "a lens reaching into the view from beside it counts");
+      Check(one.EstimatePixels(outside, down, north, 500.0, false, 1000, 1000) == 0.0,
+        "a lens wholly beside the view counts nothing");
+    }
+  }
+  // the viewport's aspect: 10 pixels wide, the side planes at x = +-D / 100
+  double aside[3] = { eye[0] + 0.1 + r * std::sqrt(1.0 + 1e-4) + 0.01, eye[1], eye[2] };
+  Check(one.EstimatePixels(aside, down, north, 500.0, false, 10, 1000) == 0.0 &&
+      one.EstimatePixels(aside, down, north, 500.0, false, 1000, 1000) > 0.0,
+    "the frustum's width follows the viewport's");
+  // parallel: 1000 pixels at 50 per unit, the view +-10 units wide
+  double beside[3] = { eye[0] + 10.0 + r + 0.01, eye[1], eye[2] };
+  Check(one.EstimatePixels(beside, down, north, 50.0, true, 1000, 1000) == 0.0,
+    "parallel projection: a lens beside the view counts nothing");
+  beside[0] -= 0.02;
+  Check(one.EstimatePixels(beside, down, north, 50.0, true, 1000, 1000) > 0.0,
+    "parallel projection: a lens reaching into the view counts");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
