@@ -57,7 +57,6 @@ vtkStandardNewMacro(vtkTransparentSphereMapper);
 
 namespace
 {
-// the frame budget's levels: 0 the sorted spheres with early termination, 1 the exact setting
 // the frame budget's levels (GetQualityLevelNames): half resolution sorted spheres, full
 // resolution sorted spheres with early termination, exact
 const int NumberOfQualityLevels = 3;
