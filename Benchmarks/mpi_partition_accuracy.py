@@ -8,11 +8,15 @@ the film):
         around it: deep penetrations), opacity from a 'speed' array (gas fast, slab slow)
   deep  6 000 spheres of radius 0.9-1.5 at mean spacing 0.9 (up to ~10 overlapping at a point)
 Cases: <scene>:<settings>:<compositing>, settings from {speed (opacity array), squared
-(Squared Distance density), hollow (HollowFraction 0.5), one (Opacity Of One Particle)}.
+(Squared Distance density), hollow (HollowFraction 0.5), one (Opacity Of One Particle), opaque
+(Opacity 1), dvao / vcao (Density Volume / Voxel Cone Tracing AO), metaballs, neighbours
+(metaballs' Maximum Neighbours 255, the largest: no neighbour list cut)}: the rows of the
+outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent with AO).
 
 This pvbatch script renders one rank count; Benchmarks/run_mpi_partition_accuracy.sh runs
 np 1, 2, 3 and compares (mpi_partition_accuracy_compare.py).
 usage: mpiexec -np N pvbatch mpi_partition_accuracy.py --plugin SO --out DIR [--size W H]
+           [--cases scene:settings:compositing,...]
 """
 import argparse
 import os
@@ -66,7 +70,11 @@ CAMERAS = {  # position, focal point: the slab obliquely; the deep block from th
     "deep": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
 }
 
-CASES = ["gas:speed-squared:Automatic", "gas:speed-squared:Exact Overlap",
+CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:Automatic",
+         "gas:metaballs:Automatic", "gas:metaballs-neighbours:Automatic",
+         "gas:speed-squared-dvao:Automatic",
+         "gas:speed-squared-vcao:Automatic", "deep:opaque:Automatic",
+         "deep:opaque-vcao:Automatic", "gas:speed-squared:Automatic", "gas:speed-squared:Exact Overlap",
          "gas:speed-hollow:Sorted Spheres", "gas:one-speed:Automatic",
          "gas:one:Sorted Spheres", "gas:one:Exact Overlap",
          "deep:speed-squared:Automatic", "deep:speed-squared:Exact Overlap",
@@ -79,11 +87,12 @@ def main():
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--size", type=int, nargs=2, default=(400, 300))
+    parser.add_argument("--cases", default=",".join(CASES), help="a comma-separated subset")
     args, _ = parser.parse_known_args()
     simple.LoadPlugin(args.plugin, remote=False)
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     os.makedirs(args.out, exist_ok=True)
-    for scene in ("gas", "deep"):
+    for scene in sorted({case.split(":")[0] for case in args.cases.split(",")}):
         source = simple.ProgrammableSource()
         source.OutputDataSetType = "vtkPolyData"
         source.Script = SCENE_SCRIPT % {"scene": scene}
@@ -100,7 +109,7 @@ def main():
         simple.ColorBy(display, ("POINTS", "type"))
         view.CameraPosition, view.CameraFocalPoint = CAMERAS[scene]
         view.CameraViewUp = [0.0, 0.0, 1.0]
-        for case in CASES:
+        for case in args.cases.split(","):
             case_scene, settings, compositing = case.split(":")
             if case_scene != scene:
                 continue
@@ -109,7 +118,12 @@ def main():
             display.OpacityReference = 0 if "one" in settings else 1
             display.UseOpacityArray = 1 if "speed" in settings else 0
             display.ParticleOpacityArray = ["POINTS", "speed"]
-            display.Opacity = 0.5 if "one" in settings else 0.7
+            display.Opacity = 1.0 if "opaque" in settings else (0.5 if "one" in settings else 0.7)
+            display.Technique = "Metaballs" if "metaballs" in settings else "Spheres"
+            if "neighbours" in settings:
+                display.MaximumNumberOfNeighbors = 255
+            view.ParticleAmbientOcclusion = ("Density Volume" if "dvao" in settings else
+                                             "Voxel Cone Tracing" if "vcao" in settings else "None")
             display.OverlapCompositing = compositing
             simple.Render(view)
             name = "%s_%s_%s_np%d.png" % (scene, settings, compositing.split()[0].lower(), ranks)

@@ -1,8 +1,9 @@
 """Compare the np N pictures of mpi_partition_accuracy.py with the np 1 pictures: per case and
 rank count the largest difference (8-bit steps, any channel) and the pixels over 2/255 and 3/255
 (the distributed criterion: at most 0.01 % over 2/255, none over 3/255). Writes a CSV and prints
-a Markdown table.
-usage: python3 mpi_partition_accuracy_compare.py IMAGE_DIR CSV
+a Markdown table; with PNG, a bar chart of the pixels over 2/255 per case and rank count against
+the criterion's allowance.
+usage: python3 mpi_partition_accuracy_compare.py IMAGE_DIR CSV [PNG]
 """
 import csv
 import glob
@@ -41,6 +42,32 @@ def main():
         print("| %s | %d | %d/255 | %d | %d | %s |" % (r["case"], r["ranks"], r["max"],
                                                       r["px_over_2"], r["px_over_3"],
                                                       r["criterion"]))
+    if len(sys.argv) > 3:
+        plot(rows, sys.argv[3])
+
+
+def plot(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    cases = sorted({r["case"] for r in rows})
+    fig, ax = plt.subplots(figsize=(10, 0.32 * len(cases) + 1.5))
+    for k, ranks in enumerate((2, 3)):
+        values = [next((r["px_over_2"] for r in rows if r["case"] == c and r["ranks"] == ranks), 0)
+                  for c in cases]
+        ax.barh([i + 0.4 * k for i in range(len(cases))], [max(v, 0.5) for v in values], 0.4,
+                label="np %d" % ranks)
+    allowed = 1e-4 * rows[0]["pixels"]
+    ax.axvline(allowed, color="k", linestyle="--", label="criterion (0.01 %% = %d px)" % allowed)
+    ax.set_xscale("log")
+    ax.set_yticks([i + 0.2 for i in range(len(cases))])
+    ax.set_yticklabels(cases, fontsize=8)
+    ax.set_xlabel("pixels over 2/255 against the single-process picture (of %d; 0 drawn at 0.5)"
+                  % rows[0]["pixels"])
+    ax.set_title("Distributed rendering vs one process (Benchmarks/run_mpi_partition_accuracy.sh)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
 
 
 main()

@@ -305,6 +305,17 @@ SUITES = [
                      plot("plot_mpi_scaling.py", os.path.join(c.out, "mpi_scaling.csv"),
                           os.path.join(c.out, "mpi_scaling.png"))],
           "2 ranks, the film once (19 360 atoms), 200x150, 1 frame", needs=[PLUGIN]),
+    Suite("mpi-partition-accuracy", "pvbatch (mpiexec; bash run_mpi_partition_accuracy.sh)",
+          "run_mpi_partition_accuracy.sh -> mpi_partition_accuracy.py",
+          "np 2 and 3 against np 1 per technique on a gas-plus-slab and a deeply penetrating "
+          "scene: pixels over 2/255 and 3/255",
+          "one rank (the same pipeline without distribution)",
+          ["mpi_partition_accuracy.csv", "mpi_partition_accuracy.png"],
+          "mpi_partition_accuracy_compare.py",
+          lambda c: [bash("run_mpi_partition_accuracy.sh", c)],
+          lambda c: [bash("run_mpi_partition_accuracy.sh", c, env={
+              "CASES": "gas:speed-squared:Exact Overlap,gas:metaballs:Automatic"})],
+          "two gas cases (exact translucency, metaballs)", needs=[PLUGIN], time_text="~6 min"),
     Suite("view-overhead", "pvpython", "view_overhead.py",
           "Particles representation in the Render View and the Particle Render View (AO off), alone and alternating",
           "Point Gaussian (Sphere) in a view of the same data",
