@@ -2,8 +2,8 @@
 (issue 42): per case, how many pixels of the np N picture differ from the np 1 picture by more
 than 2/255 and 3/255, and the largest difference.
 
-Scenes (seeded, the same on every rank; particle i on rank i mod N, as TestParticlesMPI splits
-the film):
+Scenes (seeded, written to <out>/<scene>.vtp and split as TestParticlesMPI splits the film:
+particle i on rank i mod N; the tests' view, colours and camera set-up):
   gas   a dense fcc slab (8 000 atoms, radius 0.5) in hot gas (16 000 atoms spread through and
         around it: deep penetrations), opacity from a 'speed' array (gas fast, slab slow)
   deep  6 000 spheres of radius 0.9-1.5 at mean spacing 0.9 (up to ~10 overlapping at a point)
@@ -15,55 +15,52 @@ outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent
 
 This pvbatch script renders one rank count; Benchmarks/run_mpi_partition_accuracy.sh runs
 np 1, 2, 3 and compares (mpi_partition_accuracy_compare.py).
-usage: mpiexec -np N pvbatch mpi_partition_accuracy.py --plugin SO --out DIR [--size W H]
+usage: PYTHONPATH=<build>/lib/python3/dist-packages
+       mpiexec -np N pvbatch mpi_partition_accuracy.py --plugin SO --out DIR [--size W H]
            [--cases scene:settings:compositing,...]
 """
 import argparse
 import os
+import sys
 
-from paraview import servermanager, simple
-
-SCENE_SCRIPT = """
 import numpy
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
-from vtkmodules.util.numpy_support import numpy_to_vtk
-info = self.GetOutputInformation(0)
-piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
-pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
-rng = numpy.random.default_rng(20261127)
-if %(scene)r == "gas":
-    a = 1.5874  # fcc at number density 1
-    cells = numpy.stack(numpy.meshgrid(numpy.arange(20), numpy.arange(20), numpy.arange(5),
-                                       indexing="ij"), -1).reshape(-1, 1, 3)
-    basis = numpy.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
-    slab = ((cells + basis[None]).reshape(-1, 3)) * a
-    gas = rng.random((16000, 3)) * [20 * a, 20 * a, 5 * a + 16.0] - [0.0, 0.0, 8.0]
-    xyz = numpy.vstack([slab, gas])
-    kind = numpy.r_[numpy.ones(len(slab)), numpy.full(len(gas), 2.0)]
-    speed = numpy.where(kind == 2, 0.3 + 0.7 * rng.random(len(xyz)),
-                        0.05 + 0.1 * rng.random(len(xyz)))
-    radius = numpy.full(len(xyz), 0.5)
-else:
-    xyz = rng.random((6000, 3)) * [24.0, 24.0, 10.0]
-    kind = 1.0 + (rng.random(6000) < 0.3)
-    speed = 0.2 + 0.8 * rng.random(6000)
-    radius = 0.9 + 0.6 * rng.random(6000)
-keep = numpy.nonzero(numpy.arange(len(xyz)) %% pieces == piece)[0]
-out = self.GetPolyDataOutput()
-points = vtkPoints()
-points.SetData(numpy_to_vtk(numpy.ascontiguousarray(xyz[keep], dtype=numpy.float32), deep=1))
-out.SetPoints(points)
-for name, values in (("radius", radius), ("type", kind), ("speed", speed)):
-    array = numpy_to_vtk(numpy.ascontiguousarray(values[keep], dtype=numpy.float32), deep=1)
-    array.SetName(name)
-    out.GetPointData().AddArray(array)
-"""
+from paraview import servermanager, simple
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-INFORMATION_SCRIPT = """
-from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
-self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
-"""
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path[:0] = [os.path.join(TOP, "Testing", "Python"), os.path.join(TOP, "Testing", "VTKPython")]
+import prMPITesting  # noqa: E402  (the split of TestParticlesMPI: particle i on rank i mod N)
+import prParaViewTesting as pr  # noqa: E402  (the tests' view, display and camera set-up)
+from prVTKTesting import particles_from  # noqa: E402
+
+
+def write_scene(name, path):
+    """Write the seeded scene `name` (points, radius, type, speed) to the .vtp file `path`."""
+    rng = numpy.random.default_rng(20261127)
+    if name == "gas":
+        a = 1.5874  # fcc at number density 1
+        cells = numpy.stack(numpy.meshgrid(numpy.arange(20), numpy.arange(20), numpy.arange(5),
+                                           indexing="ij"), -1).reshape(-1, 1, 3)
+        basis = numpy.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+        slab = ((cells + basis[None]).reshape(-1, 3)) * a
+        gas = rng.random((16000, 3)) * [20 * a, 20 * a, 5 * a + 16.0] - [0.0, 0.0, 8.0]
+        xyz = numpy.vstack([slab, gas])
+        kind = numpy.r_[numpy.ones(len(slab)), numpy.full(len(gas), 2.0)]
+        speed = numpy.where(kind == 2, 0.3 + 0.7 * rng.random(len(xyz)),
+                            0.05 + 0.1 * rng.random(len(xyz)))
+        radius = numpy.full(len(xyz), 0.5)
+    else:
+        xyz = rng.random((6000, 3)) * [24.0, 24.0, 10.0]
+        kind = 1.0 + (rng.random(6000) < 0.3)
+        speed = 0.2 + 0.8 * rng.random(6000)
+        radius = 0.9 + 0.6 * rng.random(6000)
+    f32 = numpy.float32
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(particles_from(xyz.astype(f32), radius=radius.astype(f32),
+                                       type=kind.astype(f32), speed=speed.astype(f32)))
+    writer.Write()
+
 
 CAMERAS = {  # position, focal point: the slab obliquely; the deep block from the front
     "gas": ((80.0, -40.0, 30.0), (16.0, 16.0, 4.0)),
@@ -93,22 +90,17 @@ def main():
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     os.makedirs(args.out, exist_ok=True)
     for scene in sorted({case.split(":")[0] for case in args.cases.split(",")}):
+        path = os.path.join(args.out, scene + ".vtp")
+        write_scene(scene, path)  # (this script runs on the first rank; the pieces read it)
         source = simple.ProgrammableSource()
         source.OutputDataSetType = "vtkPolyData"
-        source.Script = SCENE_SCRIPT % {"scene": scene}
-        source.ScriptRequestInformation = INFORMATION_SCRIPT
+        source.Script = prMPITesting.SPLIT_SCRIPT % {"path": path, "empty_rank": False, "keep": 0,
+                                                     "bad": False}
+        source.ScriptRequestInformation = prMPITesting.SPLIT_INFORMATION_SCRIPT
         source.UpdatePipeline()
-        view = simple.CreateView("ParticleRenderView")
-        view.ViewSize = list(args.size)
-        view.OrientationAxesVisibility = 0
-        view.UseFXAA = 0
-        display = simple.Show(source, view)
-        display.Representation = "Particles"
-        display.UseRadiusArray = 1
-        display.RadiusArray = ["POINTS", "radius"]
-        simple.ColorBy(display, ("POINTS", "type"))
-        view.CameraPosition, view.CameraFocalPoint = CAMERAS[scene]
-        view.CameraViewUp = [0.0, 0.0, 1.0]
+        view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=args.size)
+        display = pr.show_particles(source, view)
+        pr.set_camera(view, *CAMERAS[scene])
         for case in args.cases.split(","):
             case_scene, settings, compositing = case.split(":")
             if case_scene != scene:

@@ -52,15 +52,17 @@ def plot(rows, path):
     import matplotlib.pyplot as plt
     cases = sorted({r["case"] for r in rows})
     fig, ax = plt.subplots(figsize=(10, 0.32 * len(cases) + 1.5))
-    for k, ranks in enumerate((2, 3)):
+    rank_counts = sorted({r["ranks"] for r in rows})
+    width = 0.8 / len(rank_counts)
+    for k, ranks in enumerate(rank_counts):
         values = [next((r["px_over_2"] for r in rows if r["case"] == c and r["ranks"] == ranks), 0)
                   for c in cases]
-        ax.barh([i + 0.4 * k for i in range(len(cases))], [max(v, 0.5) for v in values], 0.4,
+        ax.barh([i + width * k for i in range(len(cases))], [max(v, 0.5) for v in values], width,
                 label="np %d" % ranks)
     allowed = 1e-4 * rows[0]["pixels"]
     ax.axvline(allowed, color="k", linestyle="--", label="criterion (0.01 %% = %d px)" % allowed)
     ax.set_xscale("log")
-    ax.set_yticks([i + 0.2 for i in range(len(cases))])
+    ax.set_yticks([i + 0.4 - width / 2 for i in range(len(cases))])
     ax.set_yticklabels(cases, fontsize=8)
     ax.set_xlabel("pixels over 2/255 against the single-process picture (of %d; 0 drawn at 0.5)"
                   % rows[0]["pixels"])

@@ -15,8 +15,9 @@ rm -f "$images"/*_np[0-9].png
 cases=()
 [ -n "${CASES:-}" ] && cases=(--cases "$CASES")
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export PYTHONPATH="$build/lib/python3/dist-packages"
 for np in 1 2 3; do
-  "$top/Scripts/with_xvfb.sh" mpiexec -np "$np" --oversubscribe -x DISPLAY \
+  "$top/Scripts/with_xvfb.sh" mpiexec -np "$np" --oversubscribe -x DISPLAY -x PYTHONPATH \
     pvbatch "$top/Benchmarks/mpi_partition_accuracy.py" \
     --plugin "$build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so" \
     --out "$images" "${cases[@]}"
