@@ -22,6 +22,7 @@
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -157,6 +158,7 @@ public:
   int Pass = 0;
   int Variant = FinalDraw;      // the shader variant wanted (ShaderVariant)
   int BuiltVariant = FinalDraw; // and built
+  std::string OpacityWarning;   // the last warning about an opacity that is not applied
   // the vicinity pre-pass: the depth of the iso-spheres, its viewport origin
   vtkNew<vtkTextureObject> PrePassDepth;
   int PrePassOrigin[2] = { 0, 0 };
@@ -767,6 +769,14 @@ void vtkMetaballMapper::ReplaceShaderValues(
   std::string gs = shaders[vtkShader::Geometry]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   internals.Hooks.Begin(vs, gs, fs);
+  // The surface is opaque whatever the colours' alpha (translucent metaballs are not
+  // implemented): a partial alpha would blend it with whatever was drawn before it, which
+  // depends on the draw order and, under MPI, on the partition. prMetaballAlpha: 1, or the
+  // actor's opacity where VTK draws the actor as translucent geometry.
+  internals.Hooks.Insert(
+    vtkParticleShaderHooks::Fragment, "//PR::Sphere::Dec", "uniform float prMetaballAlpha;");
+  internals.Hooks.Insert(
+    vtkParticleShaderHooks::Fragment, "//PR::Shading::Impl", "gl_FragData[0].a = prMetaballAlpha;");
   if (this->Method == WALKING_DEPTH_PLANE)
   {
     this->ReplaceWalkingShaderValues(vs, gs, fs);
@@ -1056,6 +1066,10 @@ void vtkMetaballMapper::SetMapperShaderParameters(
     return;
   }
   vtkInternals& internals = *this->Internals;
+  program->SetUniformf("prMetaballAlpha",
+    act->IsRenderingTranslucentPolygonalGeometry()
+      ? static_cast<float>(act->GetProperty()->GetOpacity())
+      : 1.0f);
   const double k = this->InfluenceFactor;
   program->SetUniformf("prInfluenceFactor", static_cast<float>(k));
   if (this->Method == WALKING_DEPTH_PLANE)
@@ -1344,6 +1358,18 @@ bool vtkMetaballMapper::GetOcclusionCullingCompiled(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+bool vtkMetaballMapper::HasOpaqueGeometry()
+{
+  return true; // (colours with alpha below 1 included: the surface is opaque)
+}
+
+//------------------------------------------------------------------------------
+bool vtkMetaballMapper::HasTranslucentPolygonalGeometry()
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 vtkMetaballWalkingPlane* vtkMetaballMapper::GetWalkingPlane()
 {
   return this->Internals->Plane;
@@ -1359,6 +1385,18 @@ std::string vtkMetaballMapper::GetQualityLevelNames()
 //------------------------------------------------------------------------------
 void vtkMetaballMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
+  std::string translucent;
+  if (act->IsRenderingTranslucentPolygonalGeometry())
+  {
+    std::ostringstream text;
+    text << "The metaball surface is an opaque surface (translucent metaballs are not "
+            "implemented). With the actor's opacity "
+         << act->GetProperty()->GetOpacity()
+         << " VTK draws it as translucent geometry, blended by VTK's translucency method: set "
+            "the opacity to 1 (or ForceOpaqueOn() the actor) for the opaque surface.";
+    translucent = text.str();
+  }
+  this->WarnOnChange(translucent, this->Internals->OpacityWarning);
   if (this->Method == WALKING_DEPTH_PLANE)
   {
     this->RenderWalkingPlane(ren, act);

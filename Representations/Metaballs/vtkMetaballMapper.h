@@ -103,7 +103,13 @@
  * Occlusion culling (vtkParticleOcclusionCuller) tests each particle with the sphere it draws
  * (its influence sphere when it has neighbours).
  *
- * Not done (yet): translucent metaballs.
+ * Not done (yet): translucent metaballs. The surface is opaque whatever the colours' alpha
+ * (HasOpaqueGeometry() is true, HasTranslucentPolygonalGeometry() false): a partial alpha would
+ * blend it with what was drawn before it, a picture that depends on the draw order and, under
+ * MPI, on the partition. An actor whose opacity is below 1 is drawn by VTK in its translucent
+ * pass; there the surface has that opacity, blended by VTK's translucency method, with a warning
+ * (ForceOpaqueOn() or opacity 1 draws the opaque surface; ParaView's Particles representation
+ * does that).
  *
  * Interactive frames (GetFrameBudget(), vtkParticleFrameBudget): with the vicinity method and
  * shader storage buffers, two levels, every particle's own iso-sphere alone (level 0: the depth
@@ -321,6 +327,14 @@ public:
    */
   using Superclass::GetBounds;
   double* GetBounds() override;
+
+  ///@{
+  /**
+   * The surface is opaque, whatever the colours' alpha (see the class description).
+   */
+  bool HasOpaqueGeometry() override;
+  bool HasTranslucentPolygonalGeometry() override;
+  ///@}
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

@@ -39,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkParticleRepresentation);
@@ -112,6 +113,7 @@ void vtkParticleRepresentation::SetTechnique(int technique)
   this->Mapper->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkParticleRepresentation::ForwardMapperProgress);
   this->ApplyMapperSettings();
+  this->ApplyOpacity();
   this->Actor->SetMapper(this->Mapper);
   this->MarkModified(); // bounds, and the partition of metaballs under MPI
 }
@@ -370,7 +372,27 @@ int vtkParticleRepresentation::RequestData(
   this->ApplyMapperSettings(); // the column layers of all processes
   this->UpdateOpacityArrayDataRange();
   this->UpdateMapperOpacityArray();
+  this->WarnOpaqueMetaballs();
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::WarnOpaqueMetaballs()
+{
+  std::string warning;
+  if (this->Technique == METABALLS && (this->Opacity < 1.0 || this->UseOpacityArray))
+  {
+    std::ostringstream text;
+    text << "Metaballs are drawn opaque: "
+         << (this->UseOpacityArray ? "the opacity array is" : "Opacity is")
+         << " not applied (translucent metaballs are not implemented; Spheres draw translucency).";
+    warning = text.str();
+  }
+  if (!warning.empty() && warning != this->OpacityWarning)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  this->OpacityWarning = warning;
 }
 
 //------------------------------------------------------------------------------
@@ -791,14 +813,24 @@ void vtkParticleRepresentation::SetOpacityReference(int reference)
 //------------------------------------------------------------------------------
 bool vtkParticleRepresentation::IsTranslucent()
 {
-  return this->Actor->GetProperty()->GetOpacity() < 1.0 || this->UseOpacityArray;
+  // (metaballs are opaque, see ApplyOpacity)
+  return this->Technique == SPHERES && (this->Opacity < 1.0 || this->UseOpacityArray);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::ApplyOpacity()
+{
+  // The metaball surface is opaque (translucent metaballs are not implemented): drawn in the
+  // opaque pass and composited by depth, not blended with what lies behind it.
+  this->Actor->GetProperty()->SetOpacity(this->Technique == METABALLS ? 1.0 : this->Opacity);
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetOpacity(double val)
 {
   const bool wasTranslucent = this->IsTranslucent();
-  this->Actor->GetProperty()->SetOpacity(val);
+  this->Opacity = val;
+  this->ApplyOpacity();
   if (this->IsTranslucent() != wasTranslucent)
   {
     this->MarkModified(); // partitioned for translucency or not (RequestData)

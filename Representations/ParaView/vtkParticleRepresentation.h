@@ -44,7 +44,7 @@
  * Colouring: the standard ColorArrayName (SetInputArrayToProcess), LookupTable and MapScalars;
  * point arrays only (a cell array gives the solid DiffuseColor, as in Point Gaussian).
  * Material: the actor's property (Ambient, Diffuse, Specular, SpecularPower and colours,
- * Opacity). Transform: Position, Scale, Orientation, Origin, UserTransform.
+ * Opacity; metaballs are opaque). Transform: Position, Scale, Orientation, Origin, UserTransform.
  *
  * @sa vtkParticleSphereMapper vtkParticleRenderView vtkPointGaussianRepresentation
  */
@@ -277,8 +277,12 @@ protected:
 
   void UpdateColoringParameters();
 
-  // the actor's opacity is below 1 or an opacity array is in use
+  // spheres with Opacity below 1 or an opacity array
   bool IsTranslucent();
+  // the actor's opacity: Opacity for spheres, 1 for metaballs (opaque)
+  void ApplyOpacity();
+  // a warning, once per change, when metaballs would have been translucent
+  void WarnOpaqueMetaballs();
   // distributed rendering: the partition, the spread over the processes and the column layers
   // of all processes (RequestData), the pieces to deliver and draw
   vtkNew<vtkParticleDistributedPartition> DistributedPartition;
@@ -322,6 +326,8 @@ protected:
   int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points
   bool UseOpacityArray = false;
+  double Opacity = 1.0;       // the Opacity property (the actor's opacity: ApplyOpacity)
+  std::string OpacityWarning; // the last WarnOpaqueMetaballs warning
   int OpacityArrayRangeMode = OPACITY_RANGE_DATA;
   double OpacityArrayRange[2] = { 0.0, 1.0 };
   double OpacityArrayDataRange[2] = { 0.0, 1.0 };

@@ -19,6 +19,8 @@ Cases (Particle Render View, 400x300, coloured by type, radii from 'radius'):
   voxel-cone-translucent  opacity 0.7, Voxel Cone Tracing AO
   metaballs           the Metaballs technique (partitioned with ghosts within the influence
                       radius, the surface clipped to each rank's box)
+  metaballs-opacity   the same with opacity 0.7, which metaballs do not apply (opaque: the
+                      baseline is the metaballs picture)
 With N = 1 each image is compared with its baseline (Testing/Data/Baseline/TestParticlesMPI_*,
 the GPU's own picture on this platform) and written to <temp-dir>/TestParticlesMPI_<case>_np1.png;
 with N > 1 each image must equal that single-process image within --tolerance per pixel (8-bit

@@ -20,6 +20,9 @@ CASES = {
     "voxel-cone": (1.0, 0, "Voxel Cone Tracing", "Spheres"),
     "voxel-cone-translucent": (0.7, 0, "Voxel Cone Tracing", "Spheres"),
     "metaballs": (1.0, 0, "None", "Metaballs"),
+    # Opacity is not applied to metaballs (opaque; its baseline is the metaballs picture): a
+    # partial alpha blended the surface with what each process had drawn before it
+    "metaballs-opacity": (0.7, 0, "None", "Metaballs"),
 }
 
 # share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)

@@ -267,6 +267,50 @@ check(mapper.GetNumberOfListEntries() <= len(crowd) * mapper.GetMaximumNumberOfN
 check(any("MaximumNumberOfNeighbors" in w for w in messages.warnings),
       "huge influence: a warning, got %r" % messages.warnings)
 
+# colours with alpha below 1, and an actor opacity below 1 with ForceOpaque: the opaque surface,
+# the same picture (a partial alpha would blend it with what was drawn before it: order-
+# dependent, and under MPI partition-dependent). An actor opacity below 1 alone: VTK's
+# translucent pass, with a warning that names the opacity and how to get the opaque surface.
+for method in (pr.vtkMetaballMapper.VICINITY, pr.vtkMetaballMapper.WALKING_DEPTH_PLANE):
+    xyz, kind = droplet()
+    mapper, actor, renderer, window = metaball_view(xyz, (200, 200), kind=kind)
+    mapper.SetMethod(method)
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("kind")
+    mapper.SetScalarRange(0, 1)
+    renderer.SetBackground(0.9, 0.1, 0.1)
+    renderer.ResetCamera()
+    pictures = {}
+    for alpha in (1.0, 0.3):
+        lut = type_lookup_table(0, 1)
+        for i in range(2):
+            lut.SetTableValue(i, *(lut.GetTableValue(i)[:3] + (alpha,)))
+        mapper.SetLookupTable(lut)
+        window.Render()
+        pictures[alpha] = grab_image(window)[:, :3].astype(int)
+    check(actor.HasOpaqueGeometry() and not actor.HasTranslucentPolygonalGeometry(),
+          "method %d: colours with alpha: still opaque geometry" % method)
+    messages = Messages(mapper)
+    actor.GetProperty().SetOpacity(0.5)
+    window.Render()
+    translucent = grab_image(window)
+    warned = [w for w in messages.warnings if "opacity 0.5" in w and "ForceOpaque" in w]
+    check(len(warned) == 1, "method %d: one warning about the opacity, got %r"
+          % (method, messages.warnings))
+    check(np.isfinite(translucent).all() and np.abs(translucent[:, :3] - pictures[0.3]).max() > 8,
+          "method %d: opacity 0.5 is drawn translucent" % method)
+    actor.ForceOpaqueOn()
+    window.Render()
+    pictures["forced"] = grab_image(window)[:, :3].astype(int)
+    check(len(messages.warnings) == 1, "method %d: no warning once forced opaque" % method)
+    for name in (0.3, "forced"):
+        diff = np.abs(pictures[name] - pictures[1.0]).max(axis=1)
+        print("method %d, %s against the opaque colours: max %d/255, %d px over 2/255"
+              % (method, name if name == "forced" else "colour alpha 0.3", diff.max(),
+                 (diff > 2).sum()))
+        check(diff.max() <= 1, "method %d, %s: not the opaque picture (max %d/255)"
+              % (method, name, diff.max()))
+
 mapper, actor, renderer, window = metaball_view(droplet()[0], (200, 200))
 mapper.SetIterationLimit(1)
 renderer.ResetCamera()
