@@ -379,6 +379,22 @@ void vtkParticleSphereMapper::SetRadiusScaleFactor(double factor)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetPositionBounds(const double bounds[6])
+{
+  if (!std::equal(bounds, bounds + 6, this->PositionBounds))
+  {
+    std::copy(bounds, bounds + 6, this->PositionBounds);
+    this->Modified(); // the buffers are uploaded again
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::GetPositionBounds(double bounds[6])
+{
+  std::copy(this->PositionBounds, this->PositionBounds + 6, bounds);
+}
+
+//------------------------------------------------------------------------------
 vtkMTimeType vtkParticleSphereMapper::GetParticleDataMTime()
 {
   const vtkMTimeType mtime = this->GetMTime();
@@ -989,8 +1005,7 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   vtkOpenGLVertexBufferObject* posVBO = this->VBOs->GetVBO("vertexMC");
   if (posVBO)
   {
-    posVBO->SetCoordShiftAndScaleMethod(
-      static_cast<vtkOpenGLVertexBufferObject::ShiftScaleMethod>(this->ShiftScaleMethod));
+    this->SetPositionShiftScale(posVBO);
     posVBO->SetProp3D(act);
     posVBO->SetCamera(ren->GetActiveCamera());
   }
@@ -1173,10 +1188,60 @@ void vtkParticleSphereMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetPositionShiftScale(vtkOpenGLVertexBufferObject* positions)
+{
+  using VBO = vtkOpenGLVertexBufferObject;
+  const double* b = this->PositionBounds;
+  const bool automatic =
+    this->ShiftScaleMethod == VBO::AUTO_SHIFT_SCALE || this->ShiftScaleMethod == VBO::AUTO_SHIFT;
+  if (!automatic || !vtkMath::AreBoundsInitialized(b))
+  {
+    positions->SetCoordShiftAndScaleMethod(
+      static_cast<VBO::ShiftScaleMethod>(this->ShiftScaleMethod));
+    return;
+  }
+  // VTK's automatic shift and scale (vtkOpenGLVertexBufferObject::UpdateShiftScale), from the
+  // given bounds instead of the uploaded array's range: the same operations, so that one piece
+  // holding all the data uploads what AUTO_SHIFT_SCALE would
+  double diag2 = 0.0;
+  double dist2 = 0.0;
+  double shift[3];
+  double scale[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double delta = b[2 * k + 1] - b[2 * k];
+    diag2 += delta * delta;
+    shift[k] = 0.5 * (b[2 * k + 1] + b[2 * k]);
+    dist2 += shift[k] * shift[k];
+    scale[k] = delta > 0 ? 1.0 / delta : 1.0;
+  }
+  bool shifted = true;
+  if (this->ShiftScaleMethod == VBO::AUTO_SHIFT_SCALE)
+  {
+    shifted =
+      (diag2 > 0 && (std::abs(dist2) / diag2 > 1.0e6 || std::abs(std::log10(diag2)) > 3.0)) ||
+      (diag2 == 0 && dist2 > 1.0e6);
+  }
+  else
+  {
+    std::fill(scale, scale + 3, 1.0); // AUTO_SHIFT: the translation only
+  }
+  if (!shifted)
+  {
+    std::fill(shift, shift + 3, 0.0);
+    std::fill(scale, scale + 3, 1.0);
+  }
+  positions->SetCoordShiftAndScaleMethod(VBO::MANUAL_SHIFT_SCALE);
+  positions->SetShift(shift[0], shift[1], shift[2]);
+  positions->SetScale(scale[0], scale[1], scale[2]);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleSphereMapper::UpdateFocalPointShift()
 {
   vtkInternals& internals = *this->Internals;
-  const double* b = internals.CenterBounds;
+  const double* b = vtkMath::AreBoundsInitialized(this->PositionBounds) ? this->PositionBounds
+                                                                        : internals.CenterBounds;
   double extent = 0.0;
   if (b[0] <= b[1])
   {

@@ -67,6 +67,7 @@ class vtkDoubleArray;
 class vtkFloatArray;
 class vtkMatrix4x4;
 class vtkOpenGLBufferObject;
+class vtkOpenGLVertexBufferObject;
 class vtkParticleFrameBudget;
 class vtkParticleOcclusionCuller;
 
@@ -186,6 +187,21 @@ public:
   vtkBooleanMacro(OcclusionCulling, bool);
   vtkSetClampMacro(OcclusionCullingThreshold, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(OcclusionCullingThreshold, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * The bounds of the particle centres over all the data the input is a piece of (e.g. every
+   * process's particles under MPI; ParaView's Particles representation sets them on every
+   * process, one process included). When set, the positions' vertex buffer shift and scale, and
+   * the choice between them and the focal-point shift, come from these bounds instead of the
+   * input's own centres, with VTK's AUTO_SHIFT_SCALE rule: every piece then rounds a particle's
+   * centre to float exactly as the whole data does, and a ray that grazes a sphere within that
+   * rounding hits or misses it in every piece alike. Uninitialized bounds (the default) unset
+   * them. They must contain the input's valid centres.
+   */
+  void SetPositionBounds(const double bounds[6]);
+  void GetPositionBounds(double bounds[6]);
   ///@}
 
   /**
@@ -394,6 +410,12 @@ protected:
   void UpdateFocalPointShift();
 
   /**
+   * The positions' vertex buffer shift/scale method, and with PositionBounds set, VTK's
+   * automatic shift and scale computed from them (MANUAL_SHIFT_SCALE). Before each upload.
+   */
+  void SetPositionShiftScale(vtkOpenGLVertexBufferObject* positions);
+
+  /**
    * The array to upload for a per-particle array of the input's length: the array itself, or
    * every GetParticleStride()-th tuple of it (kept alive until the next upload). Subclasses
    * adding attributes in CacheParticleAttributes() pass their arrays through it.
@@ -445,6 +467,7 @@ protected:
   bool CollectTimings = false;
   vtkIdType MaximumNumberOfParticles = 150000000;
   bool OcclusionCulling = true;
+  double PositionBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; // unset
   vtkIdType OcclusionCullingThreshold = 8192;
   vtkIdType ProgressThreshold = vtkIdType(1) << 20;
   vtkIdType NumberOfUploads = 0;

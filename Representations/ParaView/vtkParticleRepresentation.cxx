@@ -114,6 +114,7 @@ void vtkParticleRepresentation::SetTechnique(int technique)
     vtkCommand::ProgressEvent, this, &vtkParticleRepresentation::ForwardMapperProgress);
   this->ApplyMapperSettings();
   this->ApplyOpacity();
+  this->Mapper->SetPositionBounds(this->PositionBounds);
   this->Actor->SetMapper(this->Mapper);
   this->MarkModified(); // bounds, and the partition of metaballs under MPI
 }
@@ -360,6 +361,7 @@ int vtkParticleRepresentation::RequestData(
   // runs on every process together (a render pass may not: IceT runs it zero or more times)
   double bounds[6];
   this->ComputeSphereBounds(this->ProcessedData, bounds);
+  this->UpdatePositionBounds();
   // Translucent spheres need the partition (ordered compositing of boxes); metaballs need every
   // particle whose influence reaches into the box (ghosts within k R) and a surface clipped to
   // it; opaque spheres composite by depth wherever they are.
@@ -374,6 +376,34 @@ int vtkParticleRepresentation::RequestData(
   this->UpdateMapperOpacityArray();
   this->WarnOpaqueMetaballs();
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdatePositionBounds()
+{
+  // The finite centres of all processes' particles (collective; one process: its own), so that
+  // every process uploads a particle's position with the same float rounding as one process
+  // (vtkParticleSphereMapper::SetPositionBounds).
+  vtkParticleProcessReduction::Extent extent;
+  const vtkIdType n = this->ProcessedData ? this->ProcessedData->GetNumberOfPoints() : 0;
+  if (n > 0)
+  {
+    // (ComputeSphereBounds cached them for these points)
+    const double lo[3] = { this->CenterBounds[0], this->CenterBounds[2], this->CenterBounds[4] };
+    const double hi[3] = { this->CenterBounds[1], this->CenterBounds[3], this->CenterBounds[5] };
+    extent.AddBox(lo, hi);
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    extent.Reduce(controller);
+  }
+  std::copy(extent.Bounds, extent.Bounds + 6, this->PositionBounds);
+  if (!vtkMath::AreBoundsInitialized(this->PositionBounds))
+  {
+    vtkMath::UninitializeBounds(this->PositionBounds);
+  }
+  this->Mapper->SetPositionBounds(this->PositionBounds);
 }
 
 //------------------------------------------------------------------------------

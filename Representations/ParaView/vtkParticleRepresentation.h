@@ -26,7 +26,10 @@
  * picture. The column-opacity layer estimate is taken over all processes. With the Particle Render
  * View's density-volume or voxel-cone AO, REQUEST_RENDER (when every process renders) builds the AO
  * volume of all processes' particles and puts it on the actor (vtkParticleDistributedVolumes).
- * Opaque spheres stay where they are.
+ * Opaque spheres stay where they are. Every process (one included) gives the mapper the bounds of
+ * all processes' centres (vtkParticleSphereMapper::SetPositionBounds), so that the positions
+ * round to float as in one process. Metaballs are opaque: Opacity and the opacity array apply to
+ * spheres only (the actor's opacity is 1 for metaballs, with a warning).
  *
  * View protocol (like vtkPointGaussianRepresentation): REQUEST_UPDATE hands the particle
  * polydata to the view (vtkPVView::SetPiece), reports the bounds of the spheres (the points'
@@ -283,6 +286,9 @@ protected:
   void ApplyOpacity();
   // a warning, once per change, when metaballs would have been translucent
   void WarnOpaqueMetaballs();
+  // the centre bounds of all processes' particles, to the mapper (RequestData, collective)
+  void UpdatePositionBounds();
+  double PositionBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   // distributed rendering: the partition, the spread over the processes and the column layers
   // of all processes (RequestData), the pieces to deliver and draw
   vtkNew<vtkParticleDistributedPartition> DistributedPartition;
