@@ -1445,6 +1445,9 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfParticles: " << this->MaximumNumberOfParticles << "\n";
   os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
   os << indent << "OcclusionCullingThreshold: " << this->OcclusionCullingThreshold << "\n";
+  os << indent << "PositionBounds: (" << this->PositionBounds[0] << ", " << this->PositionBounds[1]
+     << ", " << this->PositionBounds[2] << ", " << this->PositionBounds[3] << ", "
+     << this->PositionBounds[4] << ", " << this->PositionBounds[5] << ")\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
   os << indent << "FrameBudget:\n";
   this->Internals->FrameBudget->PrintSelf(os, indent.GetNextIndent());
