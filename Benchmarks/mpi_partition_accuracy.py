@@ -9,8 +9,8 @@ particle i on rank i mod N; the tests' view, colours and camera set-up):
   deep  6 000 spheres of radius 0.9-1.5 at mean spacing 0.9 (up to ~10 overlapping at a point)
 Cases: <scene>:<settings>:<compositing>, settings from {speed (opacity array), squared
 (Squared Distance density), hollow (HollowFraction 0.5), one (Opacity Of One Particle), opaque
-(Opacity 1), dvao / vcao (Density Volume / Voxel Cone Tracing AO), metaballs, neighbours
-(metaballs' Maximum Neighbours 255, the largest: no neighbour list cut)}: the rows of the
+(Opacity 1), dvao / vcao / pointao (Density Volume / Voxel Cone Tracing / PointAO), metaballs,
+neighbours (metaballs' Maximum Neighbours 255, the largest: no neighbour list cut)}: the rows of the
 outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent with AO).
 
 This pvbatch script renders one rank count; Benchmarks/run_mpi_partition_accuracy.sh runs
@@ -68,6 +68,7 @@ CAMERAS = {  # position, focal point: the slab obliquely; the deep block from th
 }
 
 CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:Automatic",
+         "gas:opaque-pointao:Automatic", "deep:opaque-pointao:Automatic",
          "gas:metaballs:Automatic", "gas:metaballs-neighbours:Automatic",
          "gas:speed-squared-dvao:Automatic",
          "gas:speed-squared-vcao:Automatic", "deep:opaque:Automatic",
@@ -115,7 +116,8 @@ def main():
             if "neighbours" in settings:
                 display.MaximumNumberOfNeighbors = 255
             view.ParticleAmbientOcclusion = ("Density Volume" if "dvao" in settings else
-                                             "Voxel Cone Tracing" if "vcao" in settings else "None")
+                                             "Voxel Cone Tracing" if "vcao" in settings else
+                                             "PointAO" if "pointao" in settings else "None")
             display.OverlapCompositing = compositing
             simple.Render(view)
             name = "%s_%s_%s_np%d.png" % (scene, settings, compositing.split()[0].lower(), ranks)

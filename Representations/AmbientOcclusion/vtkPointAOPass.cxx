@@ -17,6 +17,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkParticleComputeProgram.h"
+#include "vtkParticleGBufferExchange.h"
 #include "vtkParticleGBufferGuard.h"
 #include "vtkParticleShaders.h"
 #include "vtkParticleSphereMapper.h"
@@ -98,6 +99,12 @@ public:
   vtkNew<vtkTextureObject> Normal;
   vtkNew<vtkTextureObject> NormalDepth; // the stamp of the fragment that wrote Normal
   vtkNew<vtkTextureObject> Depth;
+  // distributed rendering: the nearest depth over all processes (the occlusion reads it; the
+  // composite writes this process's own depth)
+  vtkNew<vtkTextureObject> ExchangedDepth;
+  vtkNew<vtkParticleGBufferExchange> Exchange;
+  vtkNew<vtkFloatArray> ExchangeDepths;
+  vtkNew<vtkFloatArray> ExchangePayload; // normal (4) and stamp per pixel
   vtkNew<vtkOpenGLFramebufferObject> Work;
   vtkNew<vtkTextureObject> Occlusion;
   vtkNew<vtkTextureObject> Blurred;
@@ -106,8 +113,10 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
   bool WarnedTranslucent = false;
-  // the mean particle radius of the automatic Radius, and what it was computed from
-  double MeanRadius = 0.0;
+  // the automatic Radius: the sum and number of this process's particles' mean radii, and what
+  // they were computed from
+  double RadiusSum = 0.0;
+  double RadiusCount = 0.0;
   std::vector<double> RadiusKey;
   bool WarnedViewport = false;
   // GPU times: G-buffer, occlusion, blur, composite
@@ -124,13 +133,15 @@ public:
   float Projection[16];        // view -> clip, column-major
   float InverseProjection[16]; // clip -> view
   double ClipRange[2] = { 0.0, 1.0 };
-  vtkTextureObject* Result = nullptr; // the occlusion the composite reads
-  bool VerticalBlur = false;          // the composite blurs vertically
+  vtkTextureObject* OcclusionDepth = nullptr; // the depth the occlusion reads
+  vtkTextureObject* Result = nullptr;         // the occlusion the composite reads
+  bool VerticalBlur = false;                  // the composite blurs vertically
 
   void ReleaseTextures(vtkWindow* w)
   {
-    for (vtkTextureObject* t : { this->Colour.Get(), this->Normal.Get(), this->NormalDepth.Get(),
-           this->Depth.Get(), this->Occlusion.Get(), this->Blurred.Get() })
+    for (vtkTextureObject* t :
+      { this->Colour.Get(), this->Normal.Get(), this->NormalDepth.Get(), this->Depth.Get(),
+        this->ExchangedDepth.Get(), this->Occlusion.Get(), this->Blurred.Get() })
     {
       t->ReleaseGraphicsResources(w);
     }
@@ -144,7 +155,8 @@ public:
   void Allocate(vtkOpenGLRenderWindow* context, int width, int height, int step)
   {
     if (width == this->Width && height == this->Height && step == this->Step &&
-      this->Colour->GetHandle())
+      this->Colour->GetHandle() &&
+      (!this->Exchange->IsDistributed() || this->ExchangedDepth->GetHandle()))
     {
       return;
     }
@@ -174,6 +186,14 @@ public:
     this->NormalDepth->Allocate2D(width, height, 1, VTK_FLOAT);
     setUp(this->Depth);
     this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    if (this->Exchange->IsDistributed())
+    {
+      setUp(this->ExchangedDepth);
+      this->ExchangedDepth->SetInternalFormat(GL_R32F);
+      this->ExchangedDepth->SetFormat(GL_RED);
+      this->ExchangedDepth->SetDataType(GL_FLOAT);
+      this->ExchangedDepth->Allocate2D(width, height, 1, VTK_FLOAT);
+    }
     for (vtkTextureObject* t : { this->Occlusion.Get(), this->Blurred.Get() })
     {
       setUp(t);
@@ -225,6 +245,22 @@ vtkPointAOPass::vtkPointAOPass()
 vtkPointAOPass::~vtkPointAOPass()
 {
   delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+void vtkPointAOPass::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Internals->Exchange->GetController() != controller)
+  {
+    this->Internals->Exchange->SetController(controller);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMultiProcessController* vtkPointAOPass::GetController()
+{
+  return this->Internals->Exchange->GetController();
 }
 
 //------------------------------------------------------------------------------
@@ -310,6 +346,7 @@ void vtkPointAOPass::Render(const vtkRenderState* s)
   this->InspectProps(s);
   this->UpdateEffectiveRadius(s);
   this->RenderGBuffer(s);
+  this->ExchangeGBuffer();
   this->SetUpProjection();
   {
     // the image-space stages draw full-screen quads without blending or scissor
@@ -444,31 +481,47 @@ void vtkPointAOPass::UpdateEffectiveRadius(const vtkRenderState* s)
     }
     if (key != internals.RadiusKey)
     {
-      double sum = 0.0;
-      double count = 0.0;
+      internals.RadiusSum = 0.0;
+      internals.RadiusCount = 0.0;
       for (const auto& particle : particles)
       {
         double mean = 0.0;
         double n = 0.0;
         if (MeanRadius(particle.first, particle.second, mean, n))
         {
-          sum += mean * n;
-          count += n;
+          internals.RadiusSum += mean * n;
+          internals.RadiusCount += n;
         }
       }
-      internals.MeanRadius = count > 0.0 ? sum / count : 0.0;
       internals.RadiusKey = key;
     }
-    if (internals.MeanRadius > 0.0)
+    // over every process's particles under distributed rendering (each frame: collective)
+    double totals[2] = { internals.RadiusSum, internals.RadiusCount };
+    internals.Exchange->Sum(totals, 2);
+    if (totals[1] > 0.0 && totals[0] > 0.0)
     {
-      radius = 4.0 * internals.MeanRadius;
+      radius = 4.0 * (totals[0] / totals[1]);
     }
     else
     {
       double bounds[6];
       internals.Renderer->ComputeVisiblePropBounds(bounds);
+      // (minima of the lower bounds and of the negated upper ones)
+      double extremes[6];
+      for (int a = 0; a < 3; ++a)
+      {
+        const bool valid = bounds[2 * a] <= bounds[2 * a + 1];
+        extremes[2 * a] = valid ? bounds[2 * a] : VTK_DOUBLE_MAX;
+        extremes[2 * a + 1] = valid ? -bounds[2 * a + 1] : VTK_DOUBLE_MAX;
+      }
+      internals.Exchange->Minimum(extremes, 6);
+      for (int a = 0; a < 3; ++a)
+      {
+        bounds[2 * a] = extremes[2 * a];
+        bounds[2 * a + 1] = -extremes[2 * a + 1];
+      }
       double diagonal = 0.0;
-      if (vtkMath::AreBoundsInitialized(bounds))
+      if (vtkMath::AreBoundsInitialized(bounds) && bounds[0] < VTK_DOUBLE_MAX)
       {
         for (int a = 0; a < 3; ++a)
         {
@@ -540,6 +593,81 @@ void vtkPointAOPass::RenderGBuffer(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+void vtkPointAOPass::ExchangeGBuffer()
+{
+  // 1b. distributed rendering: the occlusion reads the whole picture's G-buffer -- per pixel the
+  // nearest depth over all processes with its process's normal and stamp -- while the colour and
+  // the depth this process composites stay its own
+  vtkInternals& internals = *this->Internals;
+  internals.OcclusionDepth = internals.Depth;
+  if (!internals.Exchange->IsDistributed() || !internals.Occlude)
+  {
+    return;
+  }
+  const int w = internals.Width;
+  const int h = internals.Height;
+  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  internals.ExchangeDepths->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  internals.ExchangePayload->SetNumberOfComponents(5);
+  internals.ExchangePayload->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  float* depths = internals.ExchangeDepths->GetPointer(0);
+  float* payload = internals.ExchangePayload->GetPointer(0);
+  vtkOpenGLState* ostate = internals.Context->GetState();
+  // Every draw into the G-buffer finished before it is read: on llvmpipe, reading the targets
+  // right after the delegate's draws returned stale 128 x 128 blocks in about every second run
+  // at np 3 (TestParticlesMPI pointao: the same frame drawn twice differed by up to 244/255);
+  // with glFinish none in 12 runs. The readback stalls for the GPU anyway.
+  glFinish();
+  ostate->PushReadFramebufferBinding();
+  internals.GBuffer->Bind(GL_READ_FRAMEBUFFER);
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  std::vector<float> normals;
+  std::vector<float> stamps;
+  if (internals.StoredNormals)
+  {
+    normals.resize(4 * n);
+    stamps.resize(n);
+    internals.GBuffer->ActivateReadBuffer(1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, normals.data());
+    internals.GBuffer->ActivateReadBuffer(2);
+    glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, stamps.data());
+  }
+  ostate->PopReadFramebufferBinding();
+  // a process whose normal targets were not drawn gives no stamp: the depth's normal there
+  for (size_t i = 0; i < n; ++i)
+  {
+    float* p = payload + 5 * i;
+    for (int c = 0; c < 4; ++c)
+    {
+      p[c] = internals.StoredNormals ? normals[4 * i + c] : 0.0f;
+    }
+    p[4] = internals.StoredNormals ? stamps[i] : -1.0f;
+  }
+  internals.Exchange->CompositeNearest(internals.ExchangeDepths, internals.ExchangePayload);
+  normals.resize(4 * n);
+  stamps.resize(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    const float* p = payload + 5 * i;
+    std::copy(p, p + 4, normals.begin() + 4 * i);
+    stamps[i] = p[4];
+  }
+  // the whole picture's buffers (the normal targets hold stamps now, also where this process
+  // drew none)
+  auto upload = [&](vtkTextureObject* texture, GLenum format, const float* data)
+  {
+    texture->Activate(); // (its own texture unit, bound)
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, format, GL_FLOAT, data);
+    texture->Deactivate();
+  };
+  upload(internals.ExchangedDepth, GL_RED, depths);
+  upload(internals.Normal, GL_RGBA, normals.data());
+  upload(internals.NormalDepth, GL_RED, stamps.data());
+  internals.StoredNormals = true;
+  internals.OcclusionDepth = internals.ExchangedDepth;
+}
+
+//------------------------------------------------------------------------------
 void vtkPointAOPass::SetUpProjection()
 {
   // the camera's matrices (view -> clip) in the G-buffer's aspect
@@ -593,10 +721,10 @@ void vtkPointAOPass::ComputeOcclusion()
     if (quad)
     {
       vtkShaderProgram* program = quad->Program;
-      internals.Depth->Activate();
+      internals.OcclusionDepth->Activate();
       internals.Normal->Activate();
       internals.NormalDepth->Activate();
-      program->SetUniformi("prDepth", internals.Depth->GetTextureUnit());
+      program->SetUniformi("prDepth", internals.OcclusionDepth->GetTextureUnit());
       program->SetUniformi("prNormal", internals.Normal->GetTextureUnit());
       program->SetUniformi("prNormalDepth", internals.NormalDepth->GetTextureUnit());
       program->SetUniformf("prStampKey", StampKey);
@@ -621,7 +749,7 @@ void vtkPointAOPass::ComputeOcclusion()
         static_cast<float>(internals.ClipRange[1]) };
       program->SetUniform2f("prClipRange", clip);
       quad->Render();
-      internals.Depth->Deactivate();
+      internals.OcclusionDepth->Deactivate();
       internals.Normal->Deactivate();
       internals.NormalDepth->Deactivate();
     }
@@ -824,4 +952,5 @@ void vtkPointAOPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Blur: " << this->Blur << "\n";
   os << indent << "HalfResolution: " << this->HalfResolution << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";
+  os << indent << "Controller: " << this->GetController() << "\n";
 }

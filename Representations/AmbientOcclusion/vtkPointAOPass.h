@@ -109,6 +109,8 @@
 #include "vtkParticleAmbientLightPass.h"
 #include "vtkParticleRenderingAmbientOcclusionModule.h" // for export macro
 
+class vtkMultiProcessController;
+
 class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkPointAOPass
   : public vtkParticleAmbientLightPass
 {
@@ -236,6 +238,19 @@ public:
   double GetStageSeconds(int stage);
   ///@}
 
+  ///@{
+  /**
+   * Distributed rendering: the processes whose pictures are composited by depth after this pass
+   * (IceT in ParaView; the Particle Render View sets it for each distributed render). With more
+   * than one, every process's G-buffer depth and normals are composited over all of them before
+   * the occlusion (vtkParticleGBufferExchange), so each process sees the occluders the others
+   * draw, and the automatic Radius is the mean over all processes' particles. Collective: every
+   * process must render the pass each frame. nullptr (default): this process's G-buffer only.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController();
+  ///@}
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -274,6 +289,7 @@ private:
   void InspectProps(const vtkRenderState* s);
   void UpdateEffectiveRadius(const vtkRenderState* s);
   void RenderGBuffer(const vtkRenderState* s);
+  void ExchangeGBuffer();
   void SetUpProjection();
   void ComputeOcclusion();
   void BlurOcclusion();

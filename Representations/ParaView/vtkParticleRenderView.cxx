@@ -5,6 +5,7 @@
 #include "vtkCommand.h"
 #include "vtkDensityVolumeAOPass.h"
 #include "vtkImageProcessingPass.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVProgressHandler.h"
@@ -37,6 +38,10 @@ vtkParticleRenderView::vtkParticleRenderView()
   this->SetVoxelConeAOPass(vtkSmartPointer<vtkVoxelConeAOPass>::New());
   this->SetPointAOPass(vtkSmartPointer<vtkPointAOPass>::New());
   this->SetSNDFRenderPass(vtkSmartPointer<vtkSNDFRenderPass>::New());
+  // drawn never; visible (its bounds counted) only for distributed PointAO
+  this->CompositeBounds->VisibilityOff();
+  this->CompositeBounds->SetUseBounds(true);
+  this->GetRenderer()->AddViewProp(this->CompositeBounds);
   vtkProcessModule* processModule = vtkProcessModule::GetProcessModule();
   vtkPVSession* session =
     processModule ? vtkPVSession::SafeDownCast(processModule->GetActiveSession()) : nullptr;
@@ -327,7 +332,42 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
       pass->GetFrameBudget()->SetChooseByTime(!vtkParticleProcessReduction::Distributed());
     }
   }
+  this->UpdateDistributedPointAO(interactive);
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::Render(bool interactive, bool skip_rendering)
+{
+  this->Superclass::Render(interactive, skip_rendering);
+  this->CompositeBounds->VisibilityOff();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::UpdateDistributedPointAO(bool interactive)
+{
+  // Every process renders this frame (distributed rendering, as ParaView decides it in Render)
+  // and IceT composites one tile: PointAO reads the G-buffer of all processes. IceT calls a
+  // process's draw callback only when its visible props' bounds project into the view, so
+  // CompositeBounds gives every process the view's geometry bounds over all processes (reduced
+  // by ParaView in Update): the same bounds everywhere, the same decision everywhere. Tile and
+  // CAVE displays draw several tiles per frame and keep each process's own G-buffer.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool lod = interactive && this->GetUseLODForInteractiveRender();
+  const bool distributed = controller && controller->GetNumberOfProcesses() > 1 &&
+    (lod ? this->GetUseDistributedRenderingForLODRender()
+         : this->GetUseDistributedRenderingForRender()) &&
+    !this->InTileDisplayMode() && !this->InCaveDisplayMode();
+  const bool exchange = distributed && this->AmbientOcclusion == POINT_AO && this->PointAOPass &&
+    this->GeometryBounds.IsValid();
+  this->PointAOPass->SetController(exchange ? controller : nullptr);
+  if (exchange)
+  {
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    this->CompositeBounds->SetBounds(bounds);
+  }
+  this->CompositeBounds->SetVisibility(exchange);
 }
 
 //------------------------------------------------------------------------------
@@ -388,6 +428,7 @@ void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SNDFConvergeStillRenders: " << this->SNDFConvergeStillRenders << "\n";
   os << indent << "InteractiveQuality: " << this->InteractiveQuality << "\n";
   os << indent << "InteractiveFrameBudget: " << this->InteractiveFrameBudget << "\n";
+  os << indent << "CompositeBounds visible: " << this->CompositeBounds->GetVisibility() << "\n";
   os << indent << "ParticlePassChain:\n";
   this->ParticlePassChain->PrintSelf(os, indent.GetNextIndent());
 }

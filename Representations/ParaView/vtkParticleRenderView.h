@@ -49,7 +49,11 @@
  * or of this class, plus the property in the XML).
  *
  * Parallel: each rank's chain sees that rank's props and data only (IceT composites the ranks'
- * images afterwards); a pass that needs global quantities must reduce them itself.
+ * images afterwards); a pass that needs global quantities must reduce them itself. PointAO is
+ * the exception the view arranges: for each distributed render it gives the pass the global
+ * controller (vtkPointAOPass::SetController: the ranks' G-buffers are composited while they draw)
+ * and shows a vtkParticleBoundsProp with its geometry bounds over all ranks, so that IceT, which
+ * skips the draw of a rank whose props lie outside the view, draws on every rank or on none.
  *
  * @sa vtkParticlePassChain vtkParticleRepresentation vtkPVRenderViewWithEDL
  */
@@ -58,6 +62,7 @@
 
 #include "vtkNew.h" // for vtkNew
 #include "vtkPVRenderView.h"
+#include "vtkParticleBoundsProp.h"              // for vtkNew<vtkParticleBoundsProp>
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 #include "vtkSmartPointer.h"                    // for vtkSmartPointer
 
@@ -211,9 +216,16 @@ protected:
 
   /**
    * Re-installs the chain if the render-pass slot was emptied, tells the S-NDF pass whether this
-   * render is to converge, then defers to the superclass.
+   * render is to converge, sets up distributed PointAO (UpdateDistributedPointAO), then defers to
+   * the superclass.
    */
   void AboutToRenderOnLocalProcess(bool interactive) override;
+
+  /**
+   * The superclass's render; afterwards CompositeBounds is hidden again, so that ParaView's
+   * geometry bounds (reduced in Update from the renderer's visible props too) never include it.
+   */
+  void Render(bool interactive, bool skip_rendering) override;
 
   vtkNew<vtkParticlePassChain> ParticlePassChain;
   vtkSmartPointer<vtkDensityVolumeAOPass> DensityVolumeAOPass;
@@ -230,6 +242,7 @@ protected:
   unsigned long PassProgressTag = 0;
   unsigned long SNDFProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;
+  vtkNew<vtkParticleBoundsProp> CompositeBounds;
 
 private:
   vtkParticleRenderView(const vtkParticleRenderView&) = delete;
@@ -239,6 +252,10 @@ private:
   void ForwardPassProgress(vtkObject* caller, unsigned long, void* callData);
   // the pass of an AO method (nullptr for none)
   vtkImageProcessingPass* GetAmbientOcclusionPass(int method);
+  // Distributed renders with PointAO: the pass composites the processes' G-buffers while they
+  // draw (vtkPointAOPass::SetController), and CompositeBounds gives every process the view's
+  // bounds over all of them, so that IceT draws on every process or on none.
+  void UpdateDistributedPointAO(bool interactive);
   // takes a pass out of the chain and releases its graphics resources
   void TakeOutOfChain(vtkImageProcessingPass* pass);
   // a new pass object for an AO method, swapped into the chain when that method is on

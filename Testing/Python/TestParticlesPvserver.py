@@ -30,7 +30,9 @@ from prMPITesting import (apply_case, compare_with_single_process,  # noqa: E402
                           make_film_pieces, show_film)
 from paraview import simple  # noqa: E402
 
-CASE = "ao-translucent"
+# translucent with the summed AO volume, and opaque with PointAO (the ranks' G-buffers are
+# composited inside IceT's draw: every rank must draw)
+CASES = ("ao-translucent", "pointao")
 
 
 def parse_extra():
@@ -78,11 +80,16 @@ def start_server(extra, port):
     return None
 
 
-def render_case(args, name):
+def render_case(args, case, name):
     source = make_film_pieces(args)
     view, display = show_film(source, pr)
-    apply_case(view, display, CASE)
-    return pr.capture(view, os.path.join(args.temp_dir, "TestParticlesPvserver_%s.png" % name))
+    apply_case(view, display, case)
+    path = os.path.join(args.temp_dir, "TestParticlesPvserver_%s_%s.png" % (case, name))
+    image = pr.capture(view, path)
+    simple.Delete(display)
+    simple.Delete(source)
+    simple.Delete(view)
+    return image
 
 
 def main():
@@ -92,8 +99,10 @@ def main():
 
     # the built-in connection's picture
     pr.load_plugin(args)
-    render_case(args, "builtin")
-    reference = os.path.join(args.temp_dir, "TestParticlesPvserver_builtin.png")
+    reference = {}
+    for case in CASES:
+        render_case(args, case, "builtin")
+        reference[case] = os.path.join(args.temp_dir, "TestParticlesPvserver_%s_builtin.png" % case)
     simple.Disconnect()
 
     port = free_port()
@@ -110,13 +119,17 @@ def main():
         if partitions != extra.np:
             print("FAIL: the server has %d ranks, not %d" % (partitions, extra.np))
             ok = False
-        ok = compare_with_single_process(pr, render_case(args, "pvserver"), reference,
-                                         args.temp_dir, "TestParticlesPvserver_server")[0] and ok
+        for case in CASES:
+            ok = compare_with_single_process(
+                pr, render_case(args, case, "pvserver"), reference[case], args.temp_dir,
+                "TestParticlesPvserver_%s_server" % case)[0] and ok
         # the client renders: the server gathers the partitioned particles to it, ghost copies
         # included, which the client must leave out
         simple.GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 1e6
-        ok = compare_with_single_process(pr, render_case(args, "client"), reference,
-                                         args.temp_dir, "TestParticlesPvserver_client")[0] and ok
+        for case in CASES:
+            ok = compare_with_single_process(
+                pr, render_case(args, case, "client"), reference[case], args.temp_dir,
+                "TestParticlesPvserver_%s_client" % case)[0] and ok
         simple.Disconnect()
     finally:
         server.terminate()

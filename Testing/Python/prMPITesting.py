@@ -19,6 +19,8 @@ CASES = {
     "ao-translucent": (0.7, 0, "Density Volume", "Spheres"),
     "voxel-cone": (1.0, 0, "Voxel Cone Tracing", "Spheres"),
     "voxel-cone-translucent": (0.7, 0, "Voxel Cone Tracing", "Spheres"),
+    # screen space: the processes' G-buffers are composited before the occlusion
+    "pointao": (1.0, 0, "PointAO", "Spheres"),
     "metaballs": (1.0, 0, "None", "Metaballs"),
     # Opacity is not applied to metaballs (opaque; its baseline is the metaballs picture): a
     # partial alpha blended the surface with what each process had drawn before it
