@@ -25,10 +25,12 @@
  * fit is composited with the fragments that did, with a warning. The resolve is two compute
  * passes holding 16 segments per pixel: the first composites every pixel whose list is no
  * longer; the second runs over the other pixels only and walks their lists in rounds, so any
- * depth is exact as long as fewer than 16 spheres overlap at one point of a ray; beyond that
- * the segments without room are skipped and the pixels counted
- * (GetLastNumberOfIncompletePixels(), with a warning). (Two passes are faster than one
- * carrying the rounds' code; measured: Documentation/Translucency.md.)
+ * depth is exact as long as fewer than 16 spheres overlap at one point of a ray. Where more do
+ * (a band's count of such pixels is read back after the second pass), that band's long lists are
+ * resolved once more by a third program holding 32 segments, built only when first needed
+ * (GetLastNumberOfDeepPixels()); beyond 31 at one point the segments without room are skipped and
+ * the pixels counted (GetLastNumberOfIncompletePixels(), with a warning). (Two passes are faster
+ * than one carrying the rounds' code; measured: Documentation/Translucency.md.)
  *
  * Use (within vtkParticleFrontToBackTarget's Begin()/End(), with its accumulation texture):
  * Render() with a callback that draws the translucent particles with a program built from
@@ -109,13 +111,15 @@ public:
   /**
    * Statistics of the last Render(): fragments appended, bands drawn (1: the whole view at
    * once), pixels whose lists could not be composited completely, fragments left out for want of
-   * memory, pixels resolved by the second pass (lists longer than 16), and bytes allocated.
+   * memory, pixels resolved by the second pass (lists longer than 16), pixels that needed the
+   * third (more than 15 spheres at one point), and bytes allocated.
    */
   vtkGetMacro(LastNumberOfFragments, long long);
   vtkGetMacro(LastNumberOfBands, int);
   vtkGetMacro(LastNumberOfIncompletePixels, long long);
   vtkGetMacro(LastNumberOfDroppedFragments, long long);
   vtkGetMacro(LastNumberOfDeferredPixels, long long);
+  vtkGetMacro(LastNumberOfDeepPixels, long long);
   vtkGetMacro(AllocatedBytes, double);
   ///@}
 
@@ -133,6 +137,7 @@ protected:
   long long LastNumberOfIncompletePixels = 0;
   long long LastNumberOfDroppedFragments = 0;
   long long LastNumberOfDeferredPixels = 0;
+  long long LastNumberOfDeepPixels = 0;
   double AllocatedBytes = 0.0;
 
 private:
@@ -157,6 +162,7 @@ private:
     const vtkFrame& frame, const std::pair<int, int>& band);
   void ResolveBand(
     vtkTextureObject* accumulation, const vtkFrame& frame, const std::pair<int, int>& band);
+  void ResolveDeepPixels(const unsigned int countersBefore[3]);
   void FinishLists();
   void WarnOfLosses();
 };

@@ -12,8 +12,9 @@ transparent mode integrates each ray through the summed densities of the spheres
   lists deeper than 16 exist): within 2/255 of the reference, no incomplete pixel.
 - A 2 MiB budget at 400 x 400: the view in bands, the same image within 1/255; 1 MiB (less than
   the per-pixel arrays): an error and the sorted spheres instead.
-- 24 concentric spheres (more overlapping at one point than the resolve holds): a warning, a
-  finite image.
+- 24 concentric spheres (more overlapping at one point than the second pass holds): the third
+  pass resolves them within 2/255 of the reference, both density models; 80 (more than it holds): a warning, a sane
+  image.
 """
 import sys
 import numpy as np
@@ -183,15 +184,34 @@ for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
           and error(fallback, gpu).max() < 60 and (fallback != 255).any(),
           "1 MiB: an error, the sorted spheres drawn instead")
 
-# 5. more spheres overlapping at one point than the resolve holds: a warning, a sane image
+# 5. 24 concentric spheres: more overlapping at one point than the second pass holds (15): the
+# third (32 segments) resolves them exactly, against the reference; 80 are more than it holds: a
+# warning, a sane image
 onion = np.zeros((24, 3)) + rng.normal(scale=0.01, size=(24, 3))
-deep = scene(onion, rng.integers(30, 255, size=(24, 3)), opacity=0.2, mode=M.EXACT_OVERLAP)
-deep[3].Render()
-image = grab_image(deep[3])[:, :3]
-incomplete = deep[0].GetFragmentLists().GetLastNumberOfIncompletePixels()
-print("24 concentric spheres: %d incomplete pixels, warnings %s" % (incomplete, deep[4].warnings))
-check(incomplete > 0 and any("overlapping at one point" in w for w in deep[4].warnings),
+onion_rgb = rng.integers(30, 255, size=(24, 3))
+for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
+    deep = scene(onion, onion_rgb, opacity=0.2, model=model, mode=M.EXACT_OVERLAP)
+    gpu, ref = render(*deep[:4])
+    lists = deep[0].GetFragmentLists()
+    e = error(gpu, ref)
+    print("24 concentric spheres, model %d: %d pixels through the deep resolve, %d incomplete, "
+          "max %d/255 from the reference, warnings %s"
+          % (model, lists.GetLastNumberOfDeepPixels(), lists.GetLastNumberOfIncompletePixels(),
+             e.max(), deep[4].warnings))
+    check(lists.GetLastNumberOfDeepPixels() > 100,
+          "24 at a point, model %d: resolved by the deep pass" % model)
+    check(lists.GetLastNumberOfIncompletePixels() == 0 and not deep[4].warnings,
+          "24 at a point, model %d: complete, no warning" % model)
+    check(e.max() <= 2, "24 at a point, model %d: within 2/255 of the reference" % model)
+many = np.zeros((80, 3)) + rng.normal(scale=0.01, size=(80, 3))
+deeper = scene(many, rng.integers(30, 255, size=(80, 3)), opacity=0.05, mode=M.EXACT_OVERLAP)
+deeper[3].Render()
+image = grab_image(deeper[3])[:, :3]
+incomplete = deeper[0].GetFragmentLists().GetLastNumberOfIncompletePixels()
+print("80 concentric spheres: %d incomplete pixels, warnings %s" % (incomplete, deeper[4].warnings))
+check(incomplete > 0 and any("more than 31" in w for w in deeper[4].warnings),
       "too many overlaps at a point are reported")
 check((image != 26).any(axis=1).sum() > 1000, "too many overlaps: the spheres are still drawn")
+check(np.isfinite(image).all(), "too many overlaps: a finite image")
 
 sys.exit(finish())
