@@ -73,6 +73,8 @@ def expected(ranks, extra=0):
     """The reference: per pixel the clamped nearest depth (NaN as 1) and the lowest rank at it."""
     keys = np.stack([np.clip(np.nan_to_num(depths_with(r, ranks, extra), nan=1.0), 0.0, 1.0)
                      for r in range(ranks)])
+    # -0 is 0 (numpy 2 keeps -0 through clip, numpy 1.24 did not)
+    keys = np.where(keys == 0.0, np.float32(0.0), keys).astype(np.float32)
     owner = np.argmin(keys, axis=0)  # the first (lowest rank) at the minimum
     pixels = keys.shape[1]
     payloads = np.stack([payloads_of(r, pixels) for r in range(ranks)])
