@@ -358,8 +358,8 @@ void vtkParticleRenderView::UpdateDistributedPointAO(bool interactive)
     (lod ? this->GetUseDistributedRenderingForLODRender()
          : this->GetUseDistributedRenderingForRender()) &&
     !this->InTileDisplayMode() && !this->InCaveDisplayMode();
-  const bool exchange = distributed && this->AmbientOcclusion == POINT_AO && this->PointAOPass &&
-    this->GeometryBounds.IsValid();
+  const bool exchange =
+    distributed && this->AmbientOcclusion == POINT_AO && this->GeometryBounds.IsValid();
   this->PointAOPass->SetController(exchange ? controller : nullptr);
   if (exchange)
   {

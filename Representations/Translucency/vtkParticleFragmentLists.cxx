@@ -255,23 +255,19 @@ bool vtkParticleFragmentLists::BuildResolvePrograms(vtkOpenGLRenderWindow* conte
   vtkParticleComputeProgram* resolveDeferred = internals.ResolveDeferred;
   if (internals.ResolveModel != this->DensityModel)
   {
-    const std::string source = vtkParticleShaders::Get("FragmentListResolve");
-    const std::string model = "#define PR_DENSITY_MODEL " + std::to_string(this->DensityModel);
-    std::string first = source;
-    vtkShaderProgram::Substitute(first, "#version 430\n",
-      "#version 430\n" + model + "\n#define PR_LIST_LOCAL " + std::to_string(SegmentsHeldFirst) +
-        "\n");
-    resolve->SetSource(first);
-    std::string second = source;
-    vtkShaderProgram::Substitute(second, "#version 430\n",
-      "#version 430\n" + model + "\n#define PR_LIST_LOCAL " + std::to_string(SegmentsHeld) +
-        "\n#define PR_LIST_DEFERRED\n");
-    resolveDeferred->SetSource(second);
-    std::string deep = source;
-    vtkShaderProgram::Substitute(deep, "#version 430\n",
-      "#version 430\n" + model + "\n#define PR_LIST_LOCAL " + std::to_string(SegmentsHeldDeep) +
-        "\n#define PR_LIST_DEFERRED\n");
-    internals.ResolveDeep->SetSource(deep);
+    // the resolve's variants: the density model, the segments held, the pass
+    auto variant = [this](int segments, bool deferred)
+    {
+      std::string source = vtkParticleShaders::Get("FragmentListResolve");
+      vtkShaderProgram::Substitute(source, "#version 430\n",
+        "#version 430\n#define PR_DENSITY_MODEL " + std::to_string(this->DensityModel) +
+          "\n#define PR_LIST_LOCAL " + std::to_string(segments) + "\n" +
+          (deferred ? "#define PR_LIST_DEFERRED\n" : ""));
+      return source;
+    };
+    resolve->SetSource(variant(SegmentsHeldFirst, false));
+    resolveDeferred->SetSource(variant(SegmentsHeld, true));
+    internals.ResolveDeep->SetSource(variant(SegmentsHeldDeep, true));
     internals.ResolveModel = this->DensityModel;
   }
   internals.ResolveContext = context;
@@ -325,15 +321,23 @@ void vtkParticleFragmentLists::ResolveBand(
   this->LastNumberOfDeferredPixels += counters[2];
   if (counters[2] > 0)
   {
-    resolveDeferred->Use();
-    this->PrepareProgram(resolveDeferred->GetHandle());
-    resolveDeferred->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
-    resolveDeferred->SetUniformi("prDeferredCount", static_cast<int>(counters[2]));
-    resolveDeferred->Dispatch(static_cast<unsigned int>((counters[2] + 63) / 64));
+    this->DispatchDeferred(resolveDeferred, counters[2]);
     this->ResolveDeepPixels(counters);
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   vtkParticleComputeProgram::UseNone();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFragmentLists::DispatchDeferred(
+  vtkParticleComputeProgram* program, unsigned int pixels)
+{
+  // a resolve over the band's deferred pixels (the accumulation image bound)
+  program->Use();
+  this->PrepareProgram(program->GetHandle());
+  program->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
+  program->SetUniformi("prDeferredCount", static_cast<int>(pixels));
+  program->Dispatch((pixels + 63) / 64);
 }
 
 //------------------------------------------------------------------------------
@@ -361,11 +365,7 @@ void vtkParticleFragmentLists::ResolveDeepPixels(const unsigned int countersBefo
   // (the second pass's colours are overwritten: its image stores come first)
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  deep->Use();
-  this->PrepareProgram(deep->GetHandle());
-  deep->SetUniformf("prHollowFraction2", static_cast<float>(this->HollowFraction2));
-  deep->SetUniformi("prDeferredCount", static_cast<int>(countersBefore[2]));
-  deep->Dispatch(static_cast<unsigned int>((countersBefore[2] + 63) / 64));
+  this->DispatchDeferred(deep, countersBefore[2]);
   this->LastNumberOfDeepPixels += counters[1] - countersBefore[1];
 }
 

@@ -51,6 +51,7 @@
 #include <utility>    // for std::pair
 
 class vtkOpenGLRenderWindow;
+class vtkParticleComputeProgram;
 class vtkOpenGLState;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -162,6 +163,7 @@ private:
     const vtkFrame& frame, const std::pair<int, int>& band);
   void ResolveBand(
     vtkTextureObject* accumulation, const vtkFrame& frame, const std::pair<int, int>& band);
+  void DispatchDeferred(vtkParticleComputeProgram* program, unsigned int pixels);
   void ResolveDeepPixels(const unsigned int countersBefore[3]);
   void FinishLists();
   void WarnOfLosses();
