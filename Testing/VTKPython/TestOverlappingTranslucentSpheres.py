@@ -186,11 +186,14 @@ for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
 
 # 5. 24 concentric spheres: more overlapping at one point than the second pass holds (15): the
 # third (32 segments) resolves them exactly, against the reference; 80 are more than it holds: a
-# warning, a sane image
+# warning, a sane image. At 64 x 64: the pass costs up to 17 ms per pixel on Mesa 25's llvmpipe
+# (Documentation/Limitations.md)
+DEEP_SIZE = 64
 onion = np.zeros((24, 3)) + rng.normal(scale=0.01, size=(24, 3))
 onion_rgb = rng.integers(30, 255, size=(24, 3))
 for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
-    deep = scene(onion, onion_rgb, opacity=0.2, model=model, mode=M.EXACT_OVERLAP)
+    deep = scene(onion, onion_rgb, opacity=0.2, model=model, mode=M.EXACT_OVERLAP,
+                 size=DEEP_SIZE)
     gpu, ref = render(*deep[:4])
     lists = deep[0].GetFragmentLists()
     e = error(gpu, ref)
@@ -204,14 +207,15 @@ for model in (M.CONSTANT_DENSITY, M.SQUARED_DISTANCE_DENSITY):
           "24 at a point, model %d: complete, no warning" % model)
     check(e.max() <= 2, "24 at a point, model %d: within 2/255 of the reference" % model)
 many = np.zeros((80, 3)) + rng.normal(scale=0.01, size=(80, 3))
-deeper = scene(many, rng.integers(30, 255, size=(80, 3)), opacity=0.05, mode=M.EXACT_OVERLAP)
+deeper = scene(many, rng.integers(30, 255, size=(80, 3)), opacity=0.05, mode=M.EXACT_OVERLAP,
+               size=DEEP_SIZE)
 deeper[3].Render()
 image = grab_image(deeper[3])[:, :3]
 incomplete = deeper[0].GetFragmentLists().GetLastNumberOfIncompletePixels()
 print("80 concentric spheres: %d incomplete pixels, warnings %s" % (incomplete, deeper[4].warnings))
 check(incomplete > 0 and any("more than 31" in w for w in deeper[4].warnings),
       "too many overlaps at a point are reported")
-check((image != 26).any(axis=1).sum() > 1000, "too many overlaps: the spheres are still drawn")
+check((image != 26).any(axis=1).sum() > 500, "too many overlaps: the spheres are still drawn")
 check(np.isfinite(image).all(), "too many overlaps: a finite image")
 
 sys.exit(finish())
