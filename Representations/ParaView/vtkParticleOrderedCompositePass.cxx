@@ -1,0 +1,240 @@
+#include "vtkParticleOrderedCompositePass.h"
+
+#include "vtkBoundingBox.h"
+#include "vtkCamera.h"
+#include "vtkMultiProcessController.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkOrderedCompositingHelper.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkParticleOrderedCompositePass);
+
+//------------------------------------------------------------------------------
+vtkParticleOrderedCompositePass::vtkParticleOrderedCompositePass()
+  : Helper(vtkSmartPointer<vtkOrderedCompositingHelper>::New())
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticleOrderedCompositePass::~vtkParticleOrderedCompositePass() = default;
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Controller != controller)
+  {
+    this->Controller = controller;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMultiProcessController* vtkParticleOrderedCompositePass::GetController()
+{
+  return this->Controller;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::SetBoundingBoxes(const std::vector<vtkBoundingBox>& boxes)
+{
+  this->Helper->SetBoundingBoxes(boxes);
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> vtkParticleOrderedCompositePass::ComputeOrder(vtkCamera* camera)
+{
+  const int processes = this->Controller ? this->Controller->GetNumberOfProcesses() : 1;
+  if (camera == nullptr || static_cast<int>(this->Helper->GetBoundingBoxes().size()) != processes)
+  {
+    return {};
+  }
+  return this->Helper->ComputeSortOrder(camera);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::BlendInOrder(const unsigned char* images, int processes,
+  vtkIdType pixels, const std::vector<int>& order, unsigned char* result)
+{
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        // front to back, premultiplied: C += (1 - A) c, A += (1 - A) a
+        double accumulated[4] = { 0.0, 0.0, 0.0, 0.0 };
+        for (int process : order)
+        {
+          if (process < 0 || process >= processes)
+          {
+            continue;
+          }
+          const unsigned char* pixel = images + (static_cast<vtkIdType>(process) * pixels + i) * 4;
+          const double remaining = 1.0 - accumulated[3];
+          for (int c = 0; c < 4; ++c)
+          {
+            accumulated[c] += remaining * (pixel[c] / 255.0);
+          }
+        }
+        for (int c = 0; c < 4; ++c)
+        {
+          const double value = std::round(accumulated[c] * 255.0);
+          result[i * 4 + c] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, value)));
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->LastBlended = false;
+  if (this->DelegatePass == nullptr)
+  {
+    vtkWarningMacro(<< "No delegate pass: nothing is drawn.");
+    return;
+  }
+  // 1. the process's own image
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+
+  const std::vector<int> order = this->ComputeOrder(s->GetRenderer()->GetActiveCamera());
+  if (order.size() < 2)
+  {
+    return;
+  }
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  if (context == nullptr)
+  {
+    return;
+  }
+  const int* size = context->GetActualSize();
+  const int width = size[0];
+  const int height = size[1];
+
+  // 2. every process's image, blended front to back; 3. the result on the first process
+  if (!this->ReadImage(width, height) || !this->GatherImages(width, height))
+  {
+    return;
+  }
+  const int processes = this->Controller->GetNumberOfProcesses();
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->Blended.resize(static_cast<size_t>(pixels) * 4);
+  vtkParticleOrderedCompositePass::BlendInOrder(
+    this->Gathered.data(), processes, pixels, order, this->Blended.data());
+  this->WriteImage(s, width, height, this->Controller->GetLocalProcessId() == order.front());
+  this->LastBlended = true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
+{
+  // the processes agree on the size first, or none blends (the gather needs equal lengths)
+  int sizes[2] = { width, -width };
+  int agreed[2] = { 0, 0 };
+  this->Controller->AllReduce(sizes, agreed, 2, vtkCommunicator::MIN_OP);
+  int heights[2] = { height, -height };
+  int agreedHeights[2] = { 0, 0 };
+  this->Controller->AllReduce(heights, agreedHeights, 2, vtkCommunicator::MIN_OP);
+  if (agreed[0] != -agreed[1] || agreedHeights[0] != -agreedHeights[1] || width <= 0 || height <= 0)
+  {
+    vtkWarningMacro(<< "The processes' windows differ in size (or are empty): their images are "
+                       "composited by IceT alone.");
+    return false;
+  }
+  this->Local.resize(static_cast<size_t>(width) * height * 4);
+  // the image IceT would read, from the same framebuffer
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, this->Local.data());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOrderedCompositePass::GatherImages(int width, int height)
+{
+  const vtkIdType bytes = static_cast<vtkIdType>(width) * height * 4;
+  this->Gathered.resize(static_cast<size_t>(bytes) * this->Controller->GetNumberOfProcesses());
+  return this->Controller->AllGather(this->Local.data(), this->Gathered.data(), bytes) != 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::WriteImage(
+  const vtkRenderState* s, int width, int height, bool first)
+{
+  // the blend on the first process, transparent black on the others, over the colour the
+  // delegate drew (the depth stays)
+  auto* context = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* ostate = context->GetState();
+  if (!first)
+  {
+    std::fill(this->Blended.begin(), this->Blended.end(), static_cast<unsigned char>(0));
+  }
+  if (this->Texture == nullptr)
+  {
+    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  }
+  this->Texture->SetContext(context);
+  if (static_cast<int>(this->Texture->GetWidth()) != width ||
+    static_cast<int>(this->Texture->GetHeight()) != height || this->Texture->GetHandle() == 0)
+  {
+    this->Texture->ReleaseGraphicsResources(context);
+    this->Texture->SetInternalFormat(GL_RGBA8);
+    this->Texture->SetFormat(GL_RGBA);
+    this->Texture->SetDataType(GL_UNSIGNED_BYTE);
+    this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Texture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+  }
+  this->Texture->Activate();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, this->Blended.data());
+  this->Texture->Deactivate();
+
+  this->Framebuffer->SetContext(context);
+  ostate->PushReadFramebufferBinding();
+  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->Framebuffer->AddColorAttachment(0, this->Texture);
+  this->Framebuffer->ActivateReadBuffer(0);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglColorMask mask(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  ostate->PopReadFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(w);
+  }
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller.GetPointer() << "\n";
+  os << indent << "Boxes: " << this->Helper->GetBoundingBoxes().size() << "\n";
+  os << indent << "LastBlended: " << this->LastBlended << "\n";
+}
