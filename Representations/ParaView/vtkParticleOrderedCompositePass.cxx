@@ -4,6 +4,7 @@
 #include "vtkCamera.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h" // the OpenGL loader of this VTK
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -12,7 +13,6 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
