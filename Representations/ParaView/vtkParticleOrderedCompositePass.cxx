@@ -122,31 +122,33 @@ void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
   const int width = size[0];
   const int height = size[1];
 
-  // 2. every process's image, blended front to back; 3. the result on the first process
-  if (!this->ReadImage(width, height) || !this->GatherImages(width, height))
+  // 2. every process's image on the first process in the order, which blends them front to
+  // back; 3. the result there, transparent black elsewhere
+  const bool first = this->Controller->GetLocalProcessId() == order.front();
+  if (!this->ReadImage(width, height) || !this->GatherImages(width, height, order.front()))
   {
     return;
   }
-  const int processes = this->Controller->GetNumberOfProcesses();
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-  this->Blended.resize(static_cast<size_t>(pixels) * 4);
-  vtkParticleOrderedCompositePass::BlendInOrder(
-    this->Gathered.data(), processes, pixels, order, this->Blended.data());
-  this->WriteImage(s, width, height, this->Controller->GetLocalProcessId() == order.front());
+  this->Blended.assign(static_cast<size_t>(pixels) * 4, 0);
+  if (first)
+  {
+    vtkParticleOrderedCompositePass::BlendInOrder(this->Gathered.data(),
+      this->Controller->GetNumberOfProcesses(), pixels, order, this->Blended.data());
+  }
+  this->WriteImage(s, width, height);
   this->LastBlended = true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
 {
-  // the processes agree on the size first, or none blends (the gather needs equal lengths)
-  int sizes[2] = { width, -width };
-  int agreed[2] = { 0, 0 };
-  this->Controller->AllReduce(sizes, agreed, 2, vtkCommunicator::MIN_OP);
-  int heights[2] = { height, -height };
-  int agreedHeights[2] = { 0, 0 };
-  this->Controller->AllReduce(heights, agreedHeights, 2, vtkCommunicator::MIN_OP);
-  if (agreed[0] != -agreed[1] || agreedHeights[0] != -agreedHeights[1] || width <= 0 || height <= 0)
+  // the processes agree on the size first, or none blends (the gather needs equal lengths):
+  // the minima of the sizes and of their negatives are opposite only when all are equal
+  int sizes[4] = { width, -width, height, -height };
+  int agreed[4] = { 0, 0, 0, 0 };
+  this->Controller->AllReduce(sizes, agreed, 4, vtkCommunicator::MIN_OP);
+  if (agreed[0] != -agreed[1] || agreed[2] != -agreed[3] || width <= 0 || height <= 0)
   {
     vtkWarningMacro(<< "The processes' windows differ in size (or are empty): their images are "
                        "composited by IceT alone.");
@@ -161,25 +163,23 @@ bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleOrderedCompositePass::GatherImages(int width, int height)
+bool vtkParticleOrderedCompositePass::GatherImages(int width, int height, int destination)
 {
   const vtkIdType bytes = static_cast<vtkIdType>(width) * height * 4;
-  this->Gathered.resize(static_cast<size_t>(bytes) * this->Controller->GetNumberOfProcesses());
-  return this->Controller->AllGather(this->Local.data(), this->Gathered.data(), bytes) != 0;
+  const bool receives = this->Controller->GetLocalProcessId() == destination;
+  this->Gathered.resize(
+    receives ? static_cast<size_t>(bytes) * this->Controller->GetNumberOfProcesses() : 0);
+  return this->Controller->Gather(
+           this->Local.data(), receives ? this->Gathered.data() : nullptr, bytes, destination) != 0;
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleOrderedCompositePass::WriteImage(
-  const vtkRenderState* s, int width, int height, bool first)
+void vtkParticleOrderedCompositePass::WriteImage(const vtkRenderState* s, int width, int height)
 {
-  // the blend on the first process, transparent black on the others, over the colour the
-  // delegate drew (the depth stays)
+  // Blended (the blend on the first process, transparent black on the others) over the colour
+  // the delegate drew (the depth stays)
   auto* context = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
   vtkOpenGLState* ostate = context->GetState();
-  if (!first)
-  {
-    std::fill(this->Blended.begin(), this->Blended.end(), static_cast<unsigned char>(0));
-  }
   if (this->Texture == nullptr)
   {
     this->Texture = vtkSmartPointer<vtkTextureObject>::New();

@@ -10,7 +10,8 @@
  * This pass runs inside IceT's draw callback, outermost in the particle pass chain
  * (vtkParticleRenderView inserts it while ordered compositing is on). It lets its delegate draw
  * the process's image, reads it back (premultiplied RGBA, 8 bits), gathers every process's image
- * (vtkMultiProcessController::AllGather, 4 bytes per pixel and process), blends them front to back
+ * on the process that comes first in the visibility order (vtkMultiProcessController::Gather, 4
+ * bytes per pixel and process), which blends them front to back
  * in double precision in the order of the partition boxes seen from the camera
  * (vtkOrderedCompositingHelper::ComputeSortOrder, the order ParaView gives IceT), rounds once, and
  * leaves the result on the process that comes first in that order and transparent black on all
@@ -95,8 +96,8 @@ protected:
 
   // the stages of Render()
   bool ReadImage(int width, int height);
-  bool GatherImages(int width, int height);
-  void WriteImage(const vtkRenderState* s, int width, int height, bool first);
+  bool GatherImages(int width, int height, int destination);
+  void WriteImage(const vtkRenderState* s, int width, int height);
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
   vtkSmartPointer<vtkOrderedCompositingHelper> Helper;
