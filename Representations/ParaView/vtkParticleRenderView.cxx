@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVProgressHandler.h"
+#include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkParticlePassChain.h"
@@ -300,6 +301,22 @@ vtkSNDFRenderPass* vtkParticleRenderView::GetSNDFRenderPass()
 }
 
 //------------------------------------------------------------------------------
+vtkParticleOrderedCompositePass* vtkParticleRenderView::GetOrderedCompositePass()
+{
+  return this->OrderedComposite;
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetImagesBlendedBeforeIceT()
+{
+  // (out of the chain its flag is the one of the last render it took part in)
+  return this->ParticlePassChain->HasPass(this->OrderedComposite) &&
+      this->OrderedComposite->GetLastBlended()
+    ? 1
+    : 0;
+}
+
+//------------------------------------------------------------------------------
 vtkParticlePassChain* vtkParticleRenderView::GetParticlePassChain()
 {
   return this->ParticlePassChain;
@@ -332,7 +349,7 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
       pass->GetFrameBudget()->SetChooseByTime(!vtkParticleProcessReduction::Distributed());
     }
   }
-  this->UpdateDistributedPointAO(interactive);
+  this->UpdateDistributedCompositing(interactive);
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
 }
 
@@ -344,30 +361,55 @@ void vtkParticleRenderView::Render(bool interactive, bool skip_rendering)
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleRenderView::UpdateDistributedPointAO(bool interactive)
+void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
 {
   // Every process renders this frame (distributed rendering, as ParaView decides it in Render)
-  // and IceT composites one tile: PointAO reads the G-buffer of all processes. IceT calls a
-  // process's draw callback only when its visible props' bounds project into the view, so
-  // CompositeBounds gives every process the view's geometry bounds over all processes (reduced
-  // by ParaView in Update): the same bounds everywhere, the same decision everywhere. Tile and
-  // CAVE displays draw several tiles per frame and keep each process's own G-buffer.
+  // and IceT composites one tile. IceT calls a process's draw callback only when its visible
+  // props' bounds project into the view, so while a pass composites across the processes inside
+  // that callback, CompositeBounds gives every process the view's geometry bounds over all
+  // processes (reduced by ParaView in Update): the same bounds everywhere, the same decision
+  // everywhere. Tile and CAVE displays draw several tiles per frame and keep each process's own
+  // images.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const bool lod = interactive && this->GetUseLODForInteractiveRender();
   const bool distributed = controller && controller->GetNumberOfProcesses() > 1 &&
     (lod ? this->GetUseDistributedRenderingForLODRender()
          : this->GetUseDistributedRenderingForRender()) &&
-    !this->InTileDisplayMode() && !this->InCaveDisplayMode();
-  const bool exchange =
-    distributed && this->AmbientOcclusion == POINT_AO && this->GeometryBounds.IsValid();
-  this->PointAOPass->SetController(exchange ? controller : nullptr);
-  if (exchange)
+    !this->InTileDisplayMode() && !this->InCaveDisplayMode() && this->GeometryBounds.IsValid();
+
+  // PointAO reads the G-buffer of all processes
+  const bool pointAO = distributed && this->AmbientOcclusion == POINT_AO;
+  this->PointAOPass->SetController(pointAO ? controller : nullptr);
+
+  // ordered compositing (set up by the superclass's Render before this): the processes' images
+  // blended in floating point in the order of ParaView's partition boxes
+  auto* delivery = vtkPVRenderViewDataDeliveryManager::SafeDownCast(this->GetDeliveryManager());
+  const bool ordered = distributed && this->GetUseOrderedCompositing() && delivery &&
+    static_cast<int>(delivery->GetCuts().size()) == controller->GetNumberOfProcesses();
+  if (ordered)
+  {
+    this->OrderedComposite->SetController(controller);
+    this->OrderedComposite->SetBoundingBoxes(delivery->GetCuts());
+    if (this->ParticlePassChain->GetNumberOfPasses() == 0 ||
+      this->ParticlePassChain->GetPass(0) != this->OrderedComposite.GetPointer())
+    {
+      this->ParticlePassChain->RemovePass(this->OrderedComposite);
+      this->ParticlePassChain->InsertPass(0, this->OrderedComposite);
+    }
+  }
+  else
+  {
+    this->OrderedComposite->SetController(nullptr);
+    this->TakeOutOfChain(this->OrderedComposite);
+  }
+
+  if (pointAO || ordered)
   {
     double bounds[6];
     this->GeometryBounds.GetBounds(bounds);
     this->CompositeBounds->SetBounds(bounds);
   }
-  this->CompositeBounds->SetVisibility(exchange);
+  this->CompositeBounds->SetVisibility(pointAO || ordered);
 }
 
 //------------------------------------------------------------------------------

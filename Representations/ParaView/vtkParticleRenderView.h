@@ -63,6 +63,7 @@
 #include "vtkNew.h" // for vtkNew
 #include "vtkPVRenderView.h"
 #include "vtkParticleBoundsProp.h"              // for vtkNew<vtkParticleBoundsProp>
+#include "vtkParticleOrderedCompositePass.h"    // for vtkNew<vtkParticleOrderedCompositePass>
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
 #include "vtkSmartPointer.h"                    // for vtkSmartPointer
 
@@ -210,14 +211,27 @@ public:
    */
   vtkAlgorithm* GetPassProgressReporter();
 
+  /**
+   * The pass that blends the processes' images in floating point before IceT under ordered
+   * compositing (in the chain, outermost, only during such renders; see
+   * vtkParticleOrderedCompositePass).
+   */
+  vtkParticleOrderedCompositePass* GetOrderedCompositePass();
+
+  /**
+   * 1 when the last render blended the processes' images before IceT (the pass's
+   * GetLastBlended()), else 0. For tests (the information property ImagesBlendedBeforeIceT).
+   */
+  int GetImagesBlendedBeforeIceT();
+
 protected:
   vtkParticleRenderView();
   ~vtkParticleRenderView() override;
 
   /**
    * Re-installs the chain if the render-pass slot was emptied, tells the S-NDF pass whether this
-   * render is to converge, sets up distributed PointAO (UpdateDistributedPointAO), then defers to
-   * the superclass.
+   * render is to converge, sets up what composites across processes while they draw
+   * (UpdateDistributedCompositing), then defers to the superclass.
    */
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
@@ -243,6 +257,7 @@ protected:
   unsigned long SNDFProgressTag = 0;
   vtkNew<vtkAlgorithm> PassProgress;
   vtkNew<vtkParticleBoundsProp> CompositeBounds;
+  vtkNew<vtkParticleOrderedCompositePass> OrderedComposite;
 
 private:
   vtkParticleRenderView(const vtkParticleRenderView&) = delete;
@@ -252,10 +267,12 @@ private:
   void ForwardPassProgress(vtkObject* caller, unsigned long, void* callData);
   // the pass of an AO method (nullptr for none)
   vtkImageProcessingPass* GetAmbientOcclusionPass(int method);
-  // Distributed renders with PointAO: the pass composites the processes' G-buffers while they
-  // draw (vtkPointAOPass::SetController), and CompositeBounds gives every process the view's
-  // bounds over all of them, so that IceT draws on every process or on none.
-  void UpdateDistributedPointAO(bool interactive);
+  // Distributed renders: with PointAO the pass composites the processes' G-buffers while they
+  // draw (vtkPointAOPass::SetController); with ordered compositing (translucency) the
+  // processes' images are blended in floating point before IceT (OrderedComposite, outermost in
+  // the chain). CompositeBounds then gives every process the view's bounds over all of them, so
+  // that IceT draws on every process or on none.
+  void UpdateDistributedCompositing(bool interactive);
   // takes a pass out of the chain and releases its graphics resources
   void TakeOutOfChain(vtkImageProcessingPass* pass);
   // a new pass object for an AO method, swapped into the chain when that method is on

@@ -104,6 +104,17 @@ def main():
         image = pr.capture(view, os.path.join(args.temp_dir, "%s_np%d.png" % (name, ranks)))
         per_rank = distribution()
         print("%s: per rank [input, owned, ghost, bytes sent] %s" % (case, per_rank))
+        if ranks > 1:
+            # translucency: the processes' images blended in floating point before IceT
+            # (vtkParticleOrderedCompositePass); opaque pictures composite by depth without it
+            view.SMProxy.UpdatePropertyInformation()
+            blended = view.GetPropertyValue("ImagesBlendedBeforeIceT") == 1
+            expected = CASES[case][0] < 1.0 and CASES[case][3] == "Spheres"
+            print("%s: images blended before IceT: %s" % (case, bool(blended)))
+            if bool(blended) != expected:
+                print("FAIL: %s: images blended before IceT: %s, expected %s"
+                      % (case, bool(blended), expected))
+                ok = False
         if len(per_rank) != ranks:
             print("FAIL: %s: distribution of %d ranks, not %d" % (case, len(per_rank), ranks))
             ok = False

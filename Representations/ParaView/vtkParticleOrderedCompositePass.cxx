@@ -1,0 +1,240 @@
+#include "vtkParticleOrderedCompositePass.h"
+
+#include "vtkBoundingBox.h"
+#include "vtkCamera.h"
+#include "vtkMultiProcessController.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h" // the OpenGL loader of this VTK
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkOrderedCompositingHelper.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkParticleOrderedCompositePass);
+
+//------------------------------------------------------------------------------
+vtkParticleOrderedCompositePass::vtkParticleOrderedCompositePass()
+  : Helper(vtkSmartPointer<vtkOrderedCompositingHelper>::New())
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticleOrderedCompositePass::~vtkParticleOrderedCompositePass() = default;
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Controller != controller)
+  {
+    this->Controller = controller;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMultiProcessController* vtkParticleOrderedCompositePass::GetController()
+{
+  return this->Controller;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::SetBoundingBoxes(const std::vector<vtkBoundingBox>& boxes)
+{
+  this->Helper->SetBoundingBoxes(boxes);
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> vtkParticleOrderedCompositePass::ComputeOrder(vtkCamera* camera)
+{
+  const int processes = this->Controller ? this->Controller->GetNumberOfProcesses() : 1;
+  if (camera == nullptr || static_cast<int>(this->Helper->GetBoundingBoxes().size()) != processes)
+  {
+    return {};
+  }
+  return this->Helper->ComputeSortOrder(camera);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::BlendInOrder(const unsigned char* images, int processes,
+  vtkIdType pixels, const std::vector<int>& order, unsigned char* result)
+{
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        // front to back, premultiplied: C += (1 - A) c, A += (1 - A) a
+        double accumulated[4] = { 0.0, 0.0, 0.0, 0.0 };
+        for (int process : order)
+        {
+          if (process < 0 || process >= processes)
+          {
+            continue;
+          }
+          const unsigned char* pixel = images + (static_cast<vtkIdType>(process) * pixels + i) * 4;
+          const double remaining = 1.0 - accumulated[3];
+          for (int c = 0; c < 4; ++c)
+          {
+            accumulated[c] += remaining * (pixel[c] / 255.0);
+          }
+        }
+        for (int c = 0; c < 4; ++c)
+        {
+          const double value = std::round(accumulated[c] * 255.0);
+          result[i * 4 + c] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, value)));
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->LastBlended = false;
+  if (this->DelegatePass == nullptr)
+  {
+    vtkWarningMacro(<< "No delegate pass: nothing is drawn.");
+    return;
+  }
+  // 1. the process's own image
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+
+  const std::vector<int> order = this->ComputeOrder(s->GetRenderer()->GetActiveCamera());
+  if (order.size() < 2)
+  {
+    return;
+  }
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  if (context == nullptr)
+  {
+    return;
+  }
+  const int* size = context->GetActualSize();
+  const int width = size[0];
+  const int height = size[1];
+
+  // 2. every process's image on the first process in the order, which blends them front to
+  // back; 3. the result there, transparent black elsewhere
+  const bool first = this->Controller->GetLocalProcessId() == order.front();
+  if (!this->ReadImage(width, height) || !this->GatherImages(width, height, order.front()))
+  {
+    return;
+  }
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->Blended.assign(static_cast<size_t>(pixels) * 4, 0);
+  if (first)
+  {
+    vtkParticleOrderedCompositePass::BlendInOrder(this->Gathered.data(),
+      this->Controller->GetNumberOfProcesses(), pixels, order, this->Blended.data());
+  }
+  this->WriteImage(s, width, height);
+  this->LastBlended = true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
+{
+  // the processes agree on the size first, or none blends (the gather needs equal lengths):
+  // the minima of the sizes and of their negatives are opposite only when all are equal
+  int sizes[4] = { width, -width, height, -height };
+  int agreed[4] = { 0, 0, 0, 0 };
+  this->Controller->AllReduce(sizes, agreed, 4, vtkCommunicator::MIN_OP);
+  if (agreed[0] != -agreed[1] || agreed[2] != -agreed[3] || width <= 0 || height <= 0)
+  {
+    vtkWarningMacro(<< "The processes' windows differ in size (or are empty): their images are "
+                       "composited by IceT alone.");
+    return false;
+  }
+  this->Local.resize(static_cast<size_t>(width) * height * 4);
+  // the image IceT would read, from the same framebuffer
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, this->Local.data());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOrderedCompositePass::GatherImages(int width, int height, int destination)
+{
+  const vtkIdType bytes = static_cast<vtkIdType>(width) * height * 4;
+  const bool receives = this->Controller->GetLocalProcessId() == destination;
+  this->Gathered.resize(
+    receives ? static_cast<size_t>(bytes) * this->Controller->GetNumberOfProcesses() : 0);
+  return this->Controller->Gather(
+           this->Local.data(), receives ? this->Gathered.data() : nullptr, bytes, destination) != 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::WriteImage(const vtkRenderState* s, int width, int height)
+{
+  // Blended (the blend on the first process, transparent black on the others) over the colour
+  // the delegate drew (the depth stays)
+  auto* context = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* ostate = context->GetState();
+  if (this->Texture == nullptr)
+  {
+    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  }
+  this->Texture->SetContext(context);
+  if (static_cast<int>(this->Texture->GetWidth()) != width ||
+    static_cast<int>(this->Texture->GetHeight()) != height || this->Texture->GetHandle() == 0)
+  {
+    this->Texture->ReleaseGraphicsResources(context);
+    this->Texture->SetInternalFormat(GL_RGBA8);
+    this->Texture->SetFormat(GL_RGBA);
+    this->Texture->SetDataType(GL_UNSIGNED_BYTE);
+    this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Texture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+  }
+  this->Texture->Activate();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, this->Blended.data());
+  this->Texture->Deactivate();
+
+  this->Framebuffer->SetContext(context);
+  ostate->PushReadFramebufferBinding();
+  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->Framebuffer->AddColorAttachment(0, this->Texture);
+  this->Framebuffer->ActivateReadBuffer(0);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglColorMask mask(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  ostate->PopReadFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(w);
+  }
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller.GetPointer() << "\n";
+  os << indent << "Boxes: " << this->Helper->GetBoundingBoxes().size() << "\n";
+  os << indent << "LastBlended: " << this->LastBlended << "\n";
+}

@@ -1,0 +1,116 @@
+/**
+ * @class   vtkParticleOrderedCompositePass
+ * @brief   blends the processes' images in floating point, in visibility order, before IceT
+ *
+ * With translucent geometry ParaView composites the processes' images in the visibility order of
+ * their partition boxes (ordered compositing). IceT blends those 8-bit images pairwise in
+ * integers, back * (255 - alpha) / 255 + front, truncating at every blend: with three processes a
+ * pixel can end 3/255 darker than the single-process picture, more with more processes.
+ *
+ * This pass runs inside IceT's draw callback, outermost in the particle pass chain
+ * (vtkParticleRenderView inserts it while ordered compositing is on). It lets its delegate draw
+ * the process's image, reads it back (premultiplied RGBA, 8 bits), gathers every process's image
+ * on the process that comes first in the visibility order (vtkMultiProcessController::Gather, 4
+ * bytes per pixel and process), which blends them front to back
+ * in double precision in the order of the partition boxes seen from the camera
+ * (vtkOrderedCompositingHelper::ComputeSortOrder, the order ParaView gives IceT), rounds once, and
+ * leaves the result on the process that comes first in that order and transparent black on all
+ * the others. IceT then blends one image with empty ones, which its integer blend does without
+ * loss (x + 0 = x and x * 255 / 255 = x), so the picture carries one rounding per process image
+ * and one for the blend instead of one truncation per blend.
+ *
+ * Every process must draw whenever one does (the gather is collective): the view shows its
+ * vtkParticleBoundsProp while this pass is on, as for distributed PointAO. Processes whose windows
+ * differ in size skip the blend together, with a warning. Without a controller, with one process
+ * or without one box per process the pass only renders its delegate.
+ *
+ * @sa vtkParticleRenderView vtkParticleBoundsProp vtkOrderedCompositingHelper
+ */
+#ifndef vtkParticleOrderedCompositePass_h
+#define vtkParticleOrderedCompositePass_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkParticleRenderingParaViewModule.h" // for export macro
+#include "vtkSmartPointer.h"                    // for vtkSmartPointer
+
+#include <vector> // for std::vector
+
+class vtkBoundingBox;
+class vtkCamera;
+class vtkMultiProcessController;
+class vtkOpenGLFramebufferObject;
+class vtkOrderedCompositingHelper;
+class vtkTextureObject;
+
+class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleOrderedCompositePass
+  : public vtkImageProcessingPass
+{
+public:
+  static vtkParticleOrderedCompositePass* New();
+  vtkTypeMacro(vtkParticleOrderedCompositePass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Draw the delegate, then blend the processes' images (see the class documentation).
+   */
+  void Render(const vtkRenderState* s) override;
+
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The processes that composite (ParaView's global controller on the render servers). Default
+   * none: the pass only renders its delegate.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController();
+  ///@}
+
+  /**
+   * The partition box of every process, indexed by process (ParaView's cuts for ordered
+   * compositing).
+   */
+  void SetBoundingBoxes(const std::vector<vtkBoundingBox>& boxes);
+
+  /**
+   * The processes front to back for this camera (from the boxes; empty without them).
+   */
+  std::vector<int> ComputeOrder(vtkCamera* camera);
+
+  /**
+   * Blend the gathered images front to back: `images` holds `processes` images of `pixels` RGBA
+   * pixels each, `order` the processes front to back; the result (rounded once) goes to `result`.
+   * Public for the tests.
+   */
+  static void BlendInOrder(const unsigned char* images, int processes, vtkIdType pixels,
+    const std::vector<int>& order, unsigned char* result);
+
+  /**
+   * Whether the last render blended the processes' images.
+   */
+  vtkGetMacro(LastBlended, bool);
+
+protected:
+  vtkParticleOrderedCompositePass();
+  ~vtkParticleOrderedCompositePass() override;
+
+  // the stages of Render()
+  bool ReadImage(int width, int height);
+  bool GatherImages(int width, int height, int destination);
+  void WriteImage(const vtkRenderState* s, int width, int height);
+
+  vtkSmartPointer<vtkMultiProcessController> Controller;
+  vtkSmartPointer<vtkOrderedCompositingHelper> Helper;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  std::vector<unsigned char> Local;
+  std::vector<unsigned char> Gathered;
+  std::vector<unsigned char> Blended;
+  bool LastBlended = false;
+
+private:
+  vtkParticleOrderedCompositePass(const vtkParticleOrderedCompositePass&) = delete;
+  void operator=(const vtkParticleOrderedCompositePass&) = delete;
+};
+
+#endif
