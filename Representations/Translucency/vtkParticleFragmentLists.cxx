@@ -41,9 +41,10 @@ const double InitialNodesPerPixel = 2.0;
 const int SegmentsHeldFirst = 16;
 const int SegmentsHeld = 16;
 // a band with pixels where more than SegmentsHeld - 1 segments overlap at one point resolves its
-// deferred pixels again holding this many (a program built when first needed). 64 gave wrong
-// colours with the squared-distance density on llvmpipe (up to 109/255 against the reference on
-// pixels that 16 and 32 composite within 1/255); 32 is exact there.
+// deferred pixels again holding this many (a program built when first needed). (64 gave wrong
+// colours with the squared-distance density on llvmpipe, up to 109/255 against the reference,
+// measured while the resolve's colour weights were a loop over the segments per quadrature node,
+// the form that also gave the long lists wrong opacities; not measured again since.)
 const int SegmentsHeldDeep = 32;
 }
 

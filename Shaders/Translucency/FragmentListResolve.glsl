@@ -15,8 +15,9 @@
 // and multiplies T by exp(-D), D = sum_j D_j the exact optical depths
 // (EmissionAbsorption.glsl). The weights are w_j = D_j / D for constant
 // densities (exact: the integrands are proportional) and
-// w_j = int sigma_j T / int sigma T by 4-point Gauss-Legendre quadrature on
-// pieces of optical depth <= 1 for squared-distance densities (normalised, so
+// w_j = int sigma_j T / int sigma T for squared-distance densities (sigma_j
+// quadratic along the interval: three moments of T by 4-point Gauss-Legendre
+// quadrature on pieces of optical depth <= 1) (normalised, so
 // the opacity stays exact and only the colour mix is approximated). Where
 // nothing overlaps this is the sorted compositing of the glyph path.
 //
@@ -146,6 +147,17 @@ float prDensityBetween(int j, float tau0, float tau1)
   return prPieceIntegral(lB2[j], tau0, tau1, tau1 - tau0);
 }
 
+// Segment j's extinction over [x0, x1] (no boundary inside) per unit of v, v = 0 at x0 and 1 at
+// x1: lambda_j delta_j (b2_j + (tau0_j + v delta_j)^2) with delta_j = tau_j(x1) - tau_j(x0), as
+// the coefficients of 1, v, v^2 (squared-distance density; its integral over v is the segment's
+// optical depth there)
+vec3 prExtinctionPolynomial(int j, float x0, float x1)
+{
+  float tau0 = prTauAt(j, x0);
+  float delta = prTauAt(j, x1) - tau0;
+  return (lLambda[j] * delta) * vec3(lB2[j] + tau0 * tau0, 2.0 * tau0 * delta, delta * delta);
+}
+
 // Composite the n segments held from `position` up to `limit` (no segment not held starts
 // before it), over the elementary intervals between their boundaries; position ends at the limit
 // or where nothing follows.
@@ -213,41 +225,42 @@ void prSweep(
       if (contributing > 1)
       {
 #if PR_DENSITY_MODEL == 1
-        // w_j ~ int lambda_j rho_j(tau_j(x)) / r_j exp(-S(x)) dx, S the optical depth from x0
+        // v in [0, 1] across the interval: segment j's extinction per unit v is the quadratic
+        // p_j(v) (prExtinctionPolynomial), the optical depth from x0 S(v) the integral of their
+        // sum p = a + b v + c v^2, and w_j = int p_j exp(-S) dv = p_j . (M0, M1, M2) with the
+        // moments M_k = int v^k exp(-S(v)) dv, by 4-point Gauss-Legendre quadrature on pieces of
+        // optical depth <= 1 (one loop over the segments before and one after, none per node)
+        vec3 sum = vec3(0.0);
+        for (int j = 0; j < n; ++j)
+        {
+          if (lDepth[j] > 0.0)
+          {
+            sum += prExtinctionPolynomial(j, x0, x1);
+          }
+        }
         int pieces = int(clamp(ceil(total), 1.0, 8.0));
-        const float gaussNode[2] = float[2](0.33998104, 0.86113631);
-        const float gaussWeight[2] = float[2](0.65214515, 0.34785485);
-        vec3 weighted = vec3(0.0);
-        float weightSum = 0.0;
-        float width = (x1 - x0) / float(pieces);
+        const float gaussNode[4] = float[4](-0.86113631, -0.33998104, 0.33998104, 0.86113631);
+        const float gaussWeight[4] = float[4](0.34785485, 0.65214515, 0.65214515, 0.34785485);
+        float width = 1.0 / float(pieces);
+        vec3 moments = vec3(0.0);
         for (int p = 0; p < pieces; ++p)
         {
-          float centre = x0 + (float(p) + 0.5) * width;
           for (int g = 0; g < 4; ++g)
           {
-            float x = centre + 0.5 * width * (g < 2 ? -gaussNode[g] : gaussNode[g - 2]);
-            float wg = 0.5 * width * gaussWeight[g < 2 ? g : g - 2];
-            float extinction = 0.0;
-            for (int j = 0; j < n; ++j)
-            {
-              if (lDepth[j] > 0.0)
-              {
-                float tau0 = prTauAt(j, x0);
-                float tau = (x - lKey[j]) / lRadius[j];
-                extinction += lLambda[j] * prPieceIntegral(lB2[j], tau0, tau, tau - tau0);
-              }
-            }
-            float attenuation = exp(-extinction);
-            for (int j = 0; j < n; ++j)
-            {
-              if (lDepth[j] > 0.0)
-              {
-                float tau = (x - lKey[j]) / lRadius[j];
-                float w = wg * lLambda[j] * (lB2[j] + tau * tau) / lRadius[j] * attenuation;
-                weighted += w * lRadiance[j];
-                weightSum += w;
-              }
-            }
+            float v = (float(p) + 0.5 + 0.5 * gaussNode[g]) * width;
+            float depth = v * (sum.x + v * (0.5 * sum.y + v * (sum.z / 3.0)));
+            moments += (0.5 * width * gaussWeight[g] * exp(-depth)) * vec3(1.0, v, v * v);
+          }
+        }
+        vec3 weighted = vec3(0.0);
+        float weightSum = 0.0;
+        for (int j = 0; j < n; ++j)
+        {
+          if (lDepth[j] > 0.0)
+          {
+            float w = max(dot(prExtinctionPolynomial(j, x0, x1), moments), 0.0);
+            weighted += w * lRadiance[j];
+            weightSum += w;
           }
         }
         if (weightSum > 0.0)
