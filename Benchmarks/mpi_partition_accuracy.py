@@ -12,6 +12,11 @@ Cases: <scene>:<settings>:<compositing>, settings from {speed (opacity array), s
 (Opacity 1), dvao / vcao / pointao (Density Volume / Voxel Cone Tracing / PointAO), metaballs,
 neighbours (metaballs' Maximum Neighbours 255, the largest: no neighbour list cut)}: the rows of the
 outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent with AO).
+Scene 'mixed' (one view, several representations; issue 42's "one partition per view"): the gas
+scene with settings surface (its particles translucent, squared density, opacity array, and a
+translucent sphere surface, Opacity 0.4, through the slab), opaque-surface (the particles opaque,
+the same surface), opaque-translucent (the slab atoms and the gas atoms as two Particles
+representations, the slab opaque, the gas translucent), two-translucent (both translucent).
 
 This pvbatch script renders one rank count; Benchmarks/run_mpi_partition_accuracy.sh runs
 np 1, 2, 3 and compares (mpi_partition_accuracy_compare.py).
@@ -37,7 +42,7 @@ from prVTKTesting import particles_from  # noqa: E402
 def write_scene(name, path):
     """Write the seeded scene `name` (points, radius, type, speed) to the .vtp file `path`."""
     rng = numpy.random.default_rng(20261127)
-    if name == "gas":
+    if name in ("gas", "mixed"):
         a = 1.5874  # fcc at number density 1
         cells = numpy.stack(numpy.meshgrid(numpy.arange(20), numpy.arange(20), numpy.arange(5),
                                            indexing="ij"), -1).reshape(-1, 1, 3)
@@ -55,17 +60,23 @@ def write_scene(name, path):
         speed = 0.2 + 0.8 * rng.random(6000)
         radius = 0.9 + 0.6 * rng.random(6000)
     f32 = numpy.float32
-    writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(particles_from(xyz.astype(f32), radius=radius.astype(f32),
-                                       type=kind.astype(f32), speed=speed.astype(f32)))
-    writer.Write()
+    parts = [("", numpy.ones(len(xyz), bool))]
+    if name == "mixed":  # also the slab (type 1) and the gas (type 2) alone
+        parts += [("_type%d" % t, kind == t) for t in (1, 2)]
+    for suffix, keep in parts:
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(path[:-len(".vtp")] + suffix + ".vtp")
+        writer.SetInputData(particles_from(xyz[keep].astype(f32), radius=radius[keep].astype(f32),
+                                           type=kind[keep].astype(f32),
+                                           speed=speed[keep].astype(f32)))
+        writer.Write()
 
 
 CAMERAS = {  # position, focal point: the slab obliquely; the deep block from the front
     "gas": ((80.0, -40.0, 30.0), (16.0, 16.0, 4.0)),
     "deep": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
 }
+CAMERAS["mixed"] = CAMERAS["gas"]
 
 CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:Automatic",
          "gas:opaque-pointao:Automatic", "deep:opaque-pointao:Automatic",
@@ -77,7 +88,47 @@ CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:A
          "gas:one:Sorted Spheres", "gas:one:Exact Overlap",
          "deep:speed-squared:Automatic", "deep:speed-squared:Exact Overlap",
          "deep:speed-hollow:Sorted Spheres", "deep:one-speed:Automatic",
-         "deep:one:Sorted Spheres", "deep:one:Exact Overlap"]
+         "deep:one:Sorted Spheres", "deep:one:Exact Overlap",
+         "mixed:surface:Automatic", "mixed:opaque-surface:Automatic",
+         "mixed:opaque-translucent:Automatic", "mixed:two-translucent:Automatic"]
+
+
+def split_source(path):
+    """The particles of the .vtp file `path`, particle i on rank i mod N."""
+    source = simple.ProgrammableSource()
+    source.OutputDataSetType = "vtkPolyData"
+    source.Script = prMPITesting.SPLIT_SCRIPT % {"path": path, "empty_rank": False, "keep": 0,
+                                                 "bad": False}
+    source.ScriptRequestInformation = prMPITesting.SPLIT_INFORMATION_SCRIPT
+    source.UpdatePipeline()
+    return source
+
+
+def show_mixed(settings, path, view):
+    """Scene 'mixed': the representations of `settings` in `view`; returns the proxies to
+    delete, displays first."""
+    def particles(source, opacity):
+        display = pr.show_particles(source, view)
+        display.DensityModel = 1
+        display.OpacityReference = 1
+        display.UseOpacityArray = 1 if opacity < 1.0 else 0
+        display.ParticleOpacityArray = ["POINTS", "speed"]
+        display.Opacity = opacity
+        return display
+    if settings.endswith("surface"):
+        source = split_source(path)
+        sphere = simple.Sphere(Center=[16.0, 16.0, 4.0], Radius=9.0, ThetaResolution=96,
+                               PhiResolution=48)
+        surface = simple.Show(sphere, view)
+        surface.ColorArrayName = ["POINTS", ""]
+        surface.DiffuseColor = [0.9, 0.9, 0.3]
+        surface.Opacity = 0.4
+        opacity = 1.0 if settings.startswith("opaque") else 0.7
+        return [particles(source, opacity), surface, sphere, source]
+    slab = split_source(path[:-len(".vtp")] + "_type1.vtp")
+    gas = split_source(path[:-len(".vtp")] + "_type2.vtp")
+    opacity = 1.0 if settings.startswith("opaque") else 0.5
+    return [particles(slab, opacity), particles(gas, 0.7), slab, gas]
 
 
 def main():
@@ -93,6 +144,23 @@ def main():
     for scene in sorted({case.split(":")[0] for case in args.cases.split(",")}):
         path = os.path.join(args.out, scene + ".vtp")
         write_scene(scene, path)  # (this script runs on the first rank; the pieces read it)
+        if scene == "mixed":
+            for case in args.cases.split(","):
+                case_scene, settings, compositing = case.split(":")
+                if case_scene != scene:
+                    continue
+                view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=args.size)
+                proxies = show_mixed(settings, path, view)
+                pr.set_camera(view, *CAMERAS[scene])
+                simple.Render(view)
+                name = "%s_%s_%s_np%d.png" % (scene, settings, compositing.split()[0].lower(),
+                                              ranks)
+                simple.SaveScreenshot(os.path.join(args.out, name), view,
+                                      ImageResolution=list(args.size))
+                for proxy in proxies:
+                    simple.Delete(proxy)
+                simple.Delete(view)
+            continue
         source = simple.ProgrammableSource()
         source.OutputDataSetType = "vtkPolyData"
         source.Script = prMPITesting.SPLIT_SCRIPT % {"path": path, "empty_rank": False, "keep": 0,
