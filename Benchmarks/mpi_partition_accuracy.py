@@ -161,12 +161,7 @@ def main():
                     simple.Delete(proxy)
                 simple.Delete(view)
             continue
-        source = simple.ProgrammableSource()
-        source.OutputDataSetType = "vtkPolyData"
-        source.Script = prMPITesting.SPLIT_SCRIPT % {"path": path, "empty_rank": False, "keep": 0,
-                                                     "bad": False}
-        source.ScriptRequestInformation = prMPITesting.SPLIT_INFORMATION_SCRIPT
-        source.UpdatePipeline()
+        source = split_source(path)
         view = pr.setup_view(simple.CreateView("ParticleRenderView"), size=args.size)
         display = pr.show_particles(source, view)
         pr.set_camera(view, *CAMERAS[scene])
