@@ -9,7 +9,8 @@ particle i on rank i mod N; the tests' view, colours and camera set-up):
   deep  6 000 spheres of radius 0.9-1.5 at mean spacing 0.9 (up to ~10 overlapping at a point)
 Cases: <scene>:<settings>:<compositing>, settings from {speed (opacity array), squared
 (Squared Distance density), hollow (HollowFraction 0.5), one (Opacity Of One Particle), opaque
-(Opacity 1), dvao / vcao / pointao (Density Volume / Voxel Cone Tracing / PointAO), metaballs,
+(Opacity 1), dvao / vcao / pointao (Density Volume / Voxel Cone Tracing / PointAO), sndf
+(Scale-Consistent Shading, converged), far (the camera 3x farther away), metaballs,
 neighbours (metaballs' Maximum Neighbours 255, the largest: no neighbour list cut)}: the rows of the
 outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent with AO).
 Scene 'mixed' (one view, several representations; issue 42's "one partition per view"): the gas
@@ -89,6 +90,8 @@ CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:A
          "deep:speed-squared:Automatic", "deep:speed-squared:Exact Overlap",
          "deep:speed-hollow:Sorted Spheres", "deep:one-speed:Automatic",
          "deep:one:Sorted Spheres", "deep:one:Exact Overlap",
+         "gas:opaque-sndf:Automatic", "gas:opaque-sndf-far:Automatic",
+         "deep:opaque-sndf:Automatic",
          "mixed:surface:Automatic", "mixed:opaque-surface:Automatic",
          "mixed:opaque-translucent:Automatic", "mixed:two-translucent:Automatic"]
 
@@ -182,6 +185,13 @@ def main():
                                              "Voxel Cone Tracing" if "vcao" in settings else
                                              "PointAO" if "pointao" in settings else "None")
             display.OverlapCompositing = compositing
+            sndf = 1 if "sndf" in settings else 0
+            view.ScaleConsistentShading = sndf
+            view.SNDFConvergeStillRenders = sndf  # (the screenshot converges)
+            position, focal = CAMERAS[scene]
+            if "far" in settings:  # spheres of a pixel or less: what S-NDF is for
+                position = [f + 3.0 * (p - f) for p, f in zip(position, focal)]
+            view.CameraPosition = list(position)
             simple.Render(view)
             name = "%s_%s_%s_np%d.png" % (scene, settings, compositing.split()[0].lower(), ranks)
             simple.SaveScreenshot(os.path.join(args.out, name), view,
