@@ -20,9 +20,10 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import check, check_repeatable, finish, offscreen_window, particles_from
+from prVTKTesting import check, check_repeatable, composite_over, finish, particles_from
+from prVTKTesting import transparent_view
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 SIZE = (300, 240)
@@ -44,16 +45,9 @@ def render(xyz, offset, opacity, model, box, drawn=None):
     if box is not None:
         mapper.SetClipBox([box[0] + offset[0], box[1] + offset[0], box[2] + offset[1],
                            box[3] + offset[1], box[4] + offset[2], box[5] + offset[2]])
-    actor = vtkActor()
-    actor.SetMapper(mapper)
+    actor, renderer, window = transparent_view(mapper, SIZE)
     actor.GetProperty().SetColor(0.85, 0.45, 0.2)
     actor.GetProperty().SetOpacity(opacity)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.0, 0.0, 0.0)
-    renderer.SetBackgroundAlpha(0.0)
-    window = offscreen_window(renderer, SIZE)
-    window.SetAlphaBitPlanes(1)
     camera = renderer.GetActiveCamera()
     camera.SetFocalPoint(offset[0], offset[1], offset[2])
     camera.SetPosition(offset[0] + 14.0, offset[1] - 18.0, offset[2] + 22.0)
@@ -70,16 +64,12 @@ def render(xyz, offset, opacity, model, box, drawn=None):
     return pixels
 
 
-def composite(front, back):
-    return front + (1.0 - front[:, 3:4] / 255.0) * back
-
-
 def run(label, offset, opacity, model, opaque):
     big = 1e3
     upper = (-big, big, -big, big, SPLIT, big)
     lower = (-big, big, -big, big, -big, SPLIT)
     full = render(XYZ, offset, opacity, model, None)
-    both = composite(render(XYZ, offset, opacity, model, upper),
+    both = composite_over(render(XYZ, offset, opacity, model, upper),
                      render(XYZ, offset, opacity, model, lower))
     error = np.abs(both - full).max(axis=1)
     over = int(np.count_nonzero(error > 2.0))
@@ -102,7 +92,7 @@ run("opaque", (0.0, 0.0, 0.0), 1.0, 0, True)
 # must fail: each box's particles (centre in it, plus the spheres reaching into it) drawn whole
 upper_set = XYZ[:, 2] + RADII >= SPLIT
 lower_set = XYZ[:, 2] - RADII < SPLIT
-unclipped = composite(render(XYZ, (0.0, 0.0, 0.0), 0.7, 0, None, upper_set),
+unclipped = composite_over(render(XYZ, (0.0, 0.0, 0.0), 0.7, 0, None, upper_set),
                       render(XYZ, (0.0, 0.0, 0.0), 0.7, 0, None, lower_set))
 wrong = np.abs(unclipped - full).max(axis=1).max()
 print("without the clip box (ghosts drawn whole): max %.0f/255" % wrong)

@@ -30,9 +30,10 @@ import numpy as np
 
 import particlerendering as pr
 from vtkmodules.vtkCommonCore import vtkSMPTools
-from prVTKTesting import check, check_repeatable, finish, offscreen_window, particles_from
+from prVTKTesting import check, check_repeatable, composite_over, finish, particles_from
+from prVTKTesting import transparent_view
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkActor, vtkColorTransferFunction, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -66,15 +67,8 @@ def scene(model, mode, reference_kind, opacity):
     mapper.SetScalarModeToUsePointFieldData()
     mapper.SelectColorArray("kind")
     mapper.ScalarVisibilityOn()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
+    actor, renderer, window = transparent_view(mapper, SIZE)
     actor.GetProperty().SetOpacity(opacity)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.0, 0.0, 0.0)
-    renderer.SetBackgroundAlpha(0.0)
-    window = offscreen_window(renderer, SIZE)
-    window.SetAlphaBitPlanes(1)
     camera = renderer.GetActiveCamera()
     camera.SetFocalPoint(3.0, 3.0, 10.0)
     camera.SetPosition(4.0, 3.5, 34.0)
@@ -102,10 +96,6 @@ def reference_image(renderer, actor):
     check(reference.Render(), "the reference renders")
     rgba = vtk_to_numpy(reference.GetColorImage().GetPointData().GetScalars())
     return np.round(np.clip(rgba, 0.0, 1.0) * 255.0)
-
-
-def over(front, back):
-    return front + (1.0 - front[:, 3:4] / 255.0) * back
 
 
 def check_against_reference(name, model, reference_kind, opacity):
@@ -144,7 +134,7 @@ def check_split(name, objects, whole):
         mapper.SetClipBox(box)
         images.append(gpu_image(window))
     mapper.SetClipBox([1.0, -1.0, 1.0, -1.0, 1.0, -1.0])  # off again
-    split = np.abs(over(images[0], images[1]) - whole).max(axis=1)
+    split = np.abs(composite_over(images[0], images[1]) - whole).max(axis=1)
     print("%s: two boxes composited: max %d/255 against the whole, %d pixels over 2/255"
           % (name, split.max(), np.count_nonzero(split > 2)))
     check(split.max() <= 2.0, "%s: the two boxes are %d/255 off the whole" % (name, split.max()))

@@ -231,6 +231,21 @@ def actor_view(mapper, size=(200, 200)):
     return actor, renderer, offscreen_window(renderer, size)
 
 
+def transparent_view(mapper, size):
+    """actor_view with a transparent black background and alpha bit planes, for images that are
+    composited "over" one another (composite_over): returns (actor, renderer, window)."""
+    actor, renderer, window = actor_view(mapper, size)
+    renderer.SetBackground(0.0, 0.0, 0.0)
+    renderer.SetBackgroundAlpha(0.0)
+    window.SetAlphaBitPlanes(1)
+    return actor, renderer, window
+
+
+def composite_over(front, back):
+    """Premultiplied 8-bit RGBA rows (numpy, N x 4) composited front "over" back, as IceT does."""
+    return front + (1.0 - front[:, 3:4] / 255.0) * back
+
+
 def fcc_lattice(cells, constant=1.0):
     """The atoms of an fcc lattice of cells = (nx, ny, nz) unit cells (4 atoms each, the cell
     at the origin first, z fastest) with the given lattice constant, as an (N, 3) float array."""
