@@ -201,4 +201,5 @@ def main():
         simple.Delete(source)
 
 
-main()
+if __name__ == "__main__":
+    main()

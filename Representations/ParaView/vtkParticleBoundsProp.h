@@ -4,12 +4,12 @@
  *
  * IceT (ParaView's distributed compositing) calls a process's draw callback only when the
  * bounds of the process's visible props project into the view. A pass that composites across
- * the processes while they draw (vtkPointAOPass with a controller) needs every process to draw
- * whenever one does. vtkParticleRenderView therefore adds this prop, with the view's bounds over
- * all processes (the same on each), while such a pass is on: every process then has the same
- * bounds, and IceT draws on all of them or on none. It is a vtkActor (without a mapper, so it
- * draws nothing) because passes treat props that are not actors as foreign geometry (PointAO then
- * ignores the G-buffer's normals).
+ * the processes while they draw (vtkPointAOPass, vtkSNDFRenderPass with a controller) needs every
+ * process to draw whenever one does. vtkParticleRenderView therefore adds this prop, with the
+ * view's bounds over all processes (the same on each), while such a pass is on: every process then
+ * has the same bounds, and IceT draws on all of them or on none. It is a vtkActor (without a
+ * mapper, so it draws nothing) because passes treat props that are not actors as foreign geometry
+ * (PointAO then ignores the G-buffer's normals).
  *
  * @sa vtkParticleRenderView vtkPointAOPass
  */

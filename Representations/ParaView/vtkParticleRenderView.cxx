@@ -381,6 +381,11 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
   const bool pointAO = distributed && this->AmbientOcclusion == POINT_AO;
   this->PointAOPass->SetController(pointAO ? controller : nullptr);
 
+  // S-NDF composites each sample pass's G-buffer over the processes: every process shades the
+  // whole picture's S-NDFs
+  const bool sndf = distributed && this->ScaleConsistentShading;
+  this->SNDFRenderPass->SetController(sndf ? controller : nullptr);
+
   // ordered compositing (set up by the superclass's Render before this): the processes' images
   // blended in floating point in the order of ParaView's partition boxes
   auto* delivery = vtkPVRenderViewDataDeliveryManager::SafeDownCast(this->GetDeliveryManager());
@@ -403,13 +408,13 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
     this->TakeOutOfChain(this->OrderedComposite);
   }
 
-  if (pointAO || ordered)
+  if (pointAO || sndf || ordered)
   {
     double bounds[6];
     this->GeometryBounds.GetBounds(bounds);
     this->CompositeBounds->SetBounds(bounds);
   }
-  this->CompositeBounds->SetVisibility(pointAO || ordered);
+  this->CompositeBounds->SetVisibility(pointAO || sndf || ordered);
 }
 
 //------------------------------------------------------------------------------

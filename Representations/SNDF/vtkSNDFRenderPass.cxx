@@ -22,6 +22,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkParticleAmbientLightPass.h"
 #include "vtkParticleComputeProgram.h"
+#include "vtkParticleGBufferExchange.h"
 #include "vtkParticleGBufferGuard.h"
 #include "vtkParticleShaderHooks.h"
 #include "vtkParticleShaders.h"
@@ -133,6 +134,11 @@ public:
   vtkParticleShaderHooks Hooks;
   vtkTimeStamp ShaderTime;
   vtkNew<vtkLightsPass> Lights;
+  // distributed rendering: the sample passes' G-buffers composited over the processes
+  vtkNew<vtkParticleGBufferExchange> Exchange;
+  vtkNew<vtkFloatArray> ExchangeDepths;
+  vtkNew<vtkFloatArray> ExchangePayload;
+  vtkNew<vtkProperty> NoParticleMaterial; // (the lighting table of a process without particles)
 
   // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
   // position, focal point and parallel scale in parallel projection), and its virtual plane
@@ -406,6 +412,7 @@ struct vtkSNDFRenderPass::vtkFrame
   double Specular[3] = { 0.0, 0.0, 0.0 };
   vtkTextureObject* Shown = nullptr; // the shaded picture the composite draws
   vtkTextureObject* ShownDepth = nullptr;
+  bool NothingDrawn = false; // distributed: no particle of this process in the view
 };
 
 //------------------------------------------------------------------------------
@@ -419,26 +426,46 @@ void vtkSNDFRenderPass::Render(const vtkRenderState* s)
   }
   // Each stage returns false when it has drawn the frame itself, without S-NDFs (a view the
   // pass cannot sample, the frame of a change, a failure), after saying why where that helps.
+  // Under distributed rendering (SetController) the processes decide together wherever a
+  // decision changes what is sampled: AgreeToSample after the stages that may fail, the restart
+  // and the frame of a change inside their stages.
   vtkFrame frame;
   frame.RenderState = s;
   this->CollectScene(frame);
-  if (!this->CheckSupport(frame) || !this->ChooseBins(frame))
+  if (!this->AgreeToSample(this->CheckSupport(frame) && this->ChooseBins(frame), frame))
   {
+    return;
+  }
+  if (this->AllProcesses(frame.NothingDrawn))
+  {
+    this->RenderWithoutParticles(frame);
     return;
   }
   this->DescribeView(frame);
   this->PrepareContext(frame);
-  if (!this->KeepOrRestartSamples(frame) || !this->ShowChangeFrame(frame) ||
-    !this->PrepareTargets(frame))
+  if (!this->KeepOrRestartSamples(frame) || !this->ShowChangeFrame(frame))
   {
     return;
   }
-  this->ChooseMaterial(frame);
-  if (!this->UpdateLightingTable(frame) || !this->MapTiles(frame))
+  bool ready = this->PrepareTargets(frame);
+  if (ready)
+  {
+    this->ChooseMaterial(frame);
+    ready = this->UpdateLightingTable(frame) && this->MapTiles(frame);
+  }
+  if (!this->AgreeToSample(ready, frame))
   {
     return;
   }
   this->TakeSamples(frame);
+  if (frame.Particles.empty())
+  {
+    // distributed, no particle actor on this process: the others shade and composite the whole
+    // picture; this one adds its own view, nothing nearer than theirs
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
   this->Shade(frame);
   this->Composite(frame);
 }
@@ -494,6 +521,10 @@ void vtkSNDFRenderPass::CollectScene(vtkFrame& frame)
     }
     vtkActor* actor = vtkActor::SafeDownCast(prop);
     vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+    if (actor && !mapper)
+    {
+      continue; // an actor without a mapper draws nothing (e.g. a bounds-only prop)
+    }
     state.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
     if (vtkParticleSphereMapper::SafeDownCast(mapper))
     {
@@ -616,7 +647,8 @@ bool vtkSNDFRenderPass::CheckSupport(vtkFrame& frame)
   int& height = frame.Height;
   int& x0 = frame.X0;
   int& y0 = frame.Y0;
-  if (particles.empty() || !ren || !context)
+  // (distributed, a process without particle actors samples with the others: Render)
+  if (!ren || !context || (particles.empty() && !internals.Exchange->IsDistributed()))
   {
     this->RenderPlain(s);
     return false;
@@ -640,17 +672,14 @@ bool vtkSNDFRenderPass::CheckSupport(vtkFrame& frame)
   {
     drawn = std::find(particles.begin(), particles.end(), s->GetPropArray()[i]) != particles.end();
   }
-  if (!drawn)
+  if (!drawn && !internals.Exchange->IsDistributed())
   {
-    // no particle in the view (panned off): the plain image is exact (converged); the S-MIP
-    // stays for the way back
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    this->NumberOfSamples = this->TargetSamples;
-    internals.Shown = false;
-    internals.Placed = false;
+    this->RenderWithoutParticles(frame);
     return false;
   }
+  // distributed: this process samples with the others, its G-buffer empty, unless no process
+  // has particles in the view (Render)
+  frame.NothingDrawn = !drawn;
   if (!unsupported.empty())
   {
     if (internals.FirstWarning(unsupported))
@@ -690,6 +719,19 @@ bool vtkSNDFRenderPass::CheckSupport(vtkFrame& frame)
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::RenderWithoutParticles(vtkFrame& frame)
+{
+  // no particle in the view (panned off): the plain image is exact (converged); the S-MIP stays
+  // for the way back
+  vtkInternals& internals = *this->Internals;
+  this->DelegatePass->Render(frame.RenderState);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->NumberOfSamples = this->TargetSamples;
+  internals.Shown = false;
+  internals.Placed = false;
 }
 
 //------------------------------------------------------------------------------
@@ -885,7 +927,9 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
   sameFrame = internals.FrameValid && state == internals.FixedState &&
     internals.Cache->GetNumberOfSlots() == slots && internals.Cache->GetBins() == bins &&
     internals.Cache->GetMoments() == moments &&
-    internals.View.Place(camera, width, height, slots, this->ZoomBetweenLevels, placement, between);
+    internals.View.Place(camera, width, height, slots,
+      this->ZoomBetweenLevels && !camera->GetUseExplicitProjectionTransformMatrix(), placement,
+      between);
   // a new colour map: the samples are recoloured where the new colours are a linear function of
   // the old ones, else taken again
   if (sameFrame && colourKey != internals.Recolouring.Key)
@@ -903,21 +947,36 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
       this->NumberOfRecolours += recoloured;
     }
   }
+  if (internals.Exchange->IsDistributed())
+  {
+    // every process restarts when one does, or when their samples differ (a frame that some
+    // drew alone, e.g. one not rendered distributed)
+    double counts[4] = { static_cast<double>(this->NumberOfSamples),
+      -static_cast<double>(this->NumberOfSamples), static_cast<double>(internals.Sequence),
+      -static_cast<double>(internals.Sequence) };
+    internals.Exchange->Minimum(counts, 4);
+    sameFrame = this->AllProcesses(sameFrame && counts[0] == -counts[1] && counts[2] == -counts[3]);
+  }
   if (!sameFrame)
   {
+    bool allocated = true;
     if (internals.Cache->GetNumberOfSlots() != slots || internals.Cache->GetBins() != bins ||
       internals.Cache->GetMoments() != moments)
     {
-      if (!internals.Cache->Allocate(context, bins, slots, moments))
+      allocated = internals.Cache->Allocate(context, bins, slots, moments);
+      if (!allocated)
       {
         vtkErrorMacro(<< "Could not allocate "
                       << slots * vtkSNDFTileCache::GetTileBytes(bins, moments) / 1048576.0
                       << " MB for the S-MIP cache: the view is rendered as without S-NDFs.");
-        internals.Targets.Release(context);
-        this->RenderPlain(s);
-        return false;
       }
       this->MemoryBytes = internals.Cache->GetBytes();
+    }
+    if (!this->AllProcesses(allocated))
+    {
+      internals.Targets.Release(context);
+      this->RenderPlain(s);
+      return false;
     }
     internals.Cache->Clear();
     internals.StartFrame(camera, width, height);
@@ -962,8 +1021,9 @@ bool vtkSNDFRenderPass::ShowChangeFrame(vtkFrame& frame)
   const bool changed = !sameFrame || !internals.Shown || !(placement == internals.ShownView);
   internals.ShownView = placement;
   internals.Shown = true;
-  if (changed && !this->ConvergeOnRender &&
-    internals.Cache->CountAvailable(placement, texelsX, texelsY) == 0)
+  const bool plain = changed && !this->ConvergeOnRender &&
+    internals.Cache->CountAvailable(placement, texelsX, texelsY) == 0;
+  if (!this->AllProcesses(!plain))
   {
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
@@ -1020,7 +1080,7 @@ void vtkSNDFRenderPass::ChooseMaterial(vtkFrame& frame)
   double(&specular)[3] = frame.Specular;
   // the lighting table (Eqs. 12-14) for the renderer's lights and the first particle actor's
   // specular power
-  material = particles[0]->GetProperty();
+  material = particles.empty() ? internals.NoParticleMaterial.Get() : particles[0]->GetProperty();
   for (vtkActor* actor : particles)
   {
     vtkProperty* p = actor->GetProperty();
@@ -1285,7 +1345,8 @@ void vtkSNDFRenderPass::CheckError(vtkFrame& frame)
     // mean over pixels and channels, in 1/255
     const double mean = total / (64.0 * 3.0 * texelsX * texelsY);
     this->EstimatedError = mean * std::sqrt(static_cast<double>(m) / (n - m));
-    this->ErrorTargetReached = this->EstimatedError <= this->ErrorTarget;
+    // (distributed: every process resolves the same S-NDFs; decided together all the same)
+    this->ErrorTargetReached = this->AllProcesses(this->EstimatedError <= this->ErrorTarget);
   }
   glCopyImageSubData(internals.Targets.Image->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0,
     internals.Targets.Checkpoint->GetHandle(), GL_TEXTURE_2D, 0, 0, 0, 0, texelsX, texelsY, 1);
@@ -1329,15 +1390,49 @@ void vtkSNDFRenderPass::TakeSamples(vtkFrame& frame)
     camera->SetExplicitAspectRatio(static_cast<double>(texelsX) / texelsY);
     camera->UseExplicitAspectRatioOn();
   }
+  // A camera with an explicit projection matrix (IceT's draw callback in ParaView sets one) does
+  // not move with the window centre: the jitter then moves that matrix's picture as the window
+  // centre would (vtkCamera: a window centre c shifts the picture by -c in normalised device
+  // coordinates); a view between levels is not zoomed then.
+  vtkSmartPointer<vtkMatrix4x4> explicitProjection =
+    camera->GetUseExplicitProjectionTransformMatrix()
+    ? camera->GetExplicitProjectionTransformMatrix()
+    : nullptr;
+  vtkNew<vtkMatrix4x4> jittered;
   for (int k = 0; k < samples; ++k)
   {
     double offset[2];
     JitterOffset(internals.Sequence++, offset);
-    camera->SetWindowCenter(
-      centre[0] + 2.0 * offset[0] / texelsX, centre[1] + 2.0 * offset[1] / texelsY);
+    const double shift[2] = { 2.0 * offset[0] / texelsX, 2.0 * offset[1] / texelsY };
+    if (explicitProjection)
+    {
+      jittered->DeepCopy(explicitProjection);
+      for (int row = 0; row < 2; ++row)
+      {
+        for (int column = 0; column < 4; ++column)
+        {
+          jittered->SetElement(row, column,
+            explicitProjection->GetElement(row, column) -
+              shift[row] * explicitProjection->GetElement(3, column));
+        }
+      }
+      camera->SetExplicitProjectionTransformMatrix(jittered);
+    }
+    else
+    {
+      camera->SetWindowCenter(centre[0] + shift[0], centre[1] + shift[1]);
+    }
 
     this->RenderSampleTargets(frame);
-    camera->SetWindowCenter(viewCentre[0], viewCentre[1]);
+    this->ExchangeSampleTargets(frame);
+    if (explicitProjection)
+    {
+      camera->SetExplicitProjectionTransformMatrix(explicitProjection);
+    }
+    else
+    {
+      camera->SetWindowCenter(viewCentre[0], viewCentre[1]);
+    }
     ++this->NumberOfSamplePasses;
 
     this->AccumulateSamples(frame);
@@ -1537,6 +1632,129 @@ void vtkSNDFRenderPass::Composite(vtkFrame& frame)
 }
 
 //------------------------------------------------------------------------------
+void vtkSNDFRenderPass::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Internals->Exchange->GetController() != controller)
+  {
+    this->Internals->Exchange->SetController(controller);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMultiProcessController* vtkSNDFRenderPass::GetController()
+{
+  return this->Internals->Exchange->GetController();
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::AllProcesses(bool local)
+{
+  double value = local ? 1.0 : 0.0;
+  this->Internals->Exchange->Minimum(&value, 1); // (nothing to do with one process)
+  return value > 0.5;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSNDFRenderPass::AgreeToSample(bool local, vtkFrame& frame)
+{
+  // a process that is not ready has drawn the plain frame already; the others draw it too
+  const bool all = this->AllProcesses(local);
+  if (local && !all)
+  {
+    this->RenderPlain(frame.RenderState);
+  }
+  return all;
+}
+
+//------------------------------------------------------------------------------
+void vtkSNDFRenderPass::ExchangeSampleTargets(vtkFrame& frame)
+{
+  // Distributed rendering: the sample pass's G-buffer of the whole picture -- per texel the
+  // nearest fragment of any process, with the colour, normal and diffuse values its process
+  // wrote -- in every process's targets before they enter the S-NDFs. The 8-bit colour travels
+  // as whole numbers 0-255 in floats and the 16-bit float targets as floats: both arrive
+  // exactly (vtkParticleGBufferExchange adds zeros to the owner's values).
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Exchange->IsDistributed())
+  {
+    return;
+  }
+  const int w = frame.TexelsX;
+  const int h = frame.TexelsY;
+  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  const int components = 4 * static_cast<int>(NumberOfAttachments);
+  internals.ExchangeDepths->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  internals.ExchangePayload->SetNumberOfComponents(components);
+  internals.ExchangePayload->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  float* depths = internals.ExchangeDepths->GetPointer(0);
+  float* payload = internals.ExchangePayload->GetPointer(0);
+  std::vector<unsigned char> colours(4 * n);
+  std::vector<float> values(4 * n);
+  vtkOpenGLState* ostate = frame.Context->GetState();
+  glFinish(); // every draw into the targets finished before they are read (vtkPointAOPass)
+  ostate->PushReadFramebufferBinding();
+  internals.Targets.Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+  {
+    internals.Targets.Framebuffer->ActivateReadBuffer(a);
+    if (a == 0)
+    {
+      glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, colours.data());
+      for (size_t i = 0; i < n; ++i)
+      {
+        std::copy(colours.begin() + 4 * i, colours.begin() + 4 * i + 4, payload + components * i);
+      }
+    }
+    else
+    {
+      glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, values.data());
+      for (size_t i = 0; i < n; ++i)
+      {
+        std::copy(
+          values.begin() + 4 * i, values.begin() + 4 * i + 4, payload + components * i + 4 * a);
+      }
+    }
+  }
+  ostate->PopReadFramebufferBinding();
+  internals.Exchange->CompositeNearest(internals.ExchangeDepths, internals.ExchangePayload);
+  auto upload = [&](vtkTextureObject* texture, GLenum format, GLenum type, const void* data)
+  {
+    texture->Activate(); // (its own texture unit, bound)
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, format, type, data);
+    texture->Deactivate();
+  };
+  for (unsigned int a = 0; a < NumberOfAttachments; ++a)
+  {
+    for (size_t i = 0; i < n; ++i)
+    {
+      const float* p = payload + components * i + 4 * a;
+      if (a == 0)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          colours[4 * i + c] = static_cast<unsigned char>(std::lround(p[c]));
+        }
+      }
+      else
+      {
+        std::copy(p, p + 4, values.begin() + 4 * i);
+      }
+    }
+    if (a == 0)
+    {
+      upload(internals.Targets.Attachments[a], GL_RGBA, GL_UNSIGNED_BYTE, colours.data());
+    }
+    else
+    {
+      upload(internals.Targets.Attachments[a], GL_RGBA, GL_FLOAT, values.data());
+    }
+  }
+  upload(internals.Targets.Depth, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+}
+
+//------------------------------------------------------------------------------
 bool vtkSNDFRenderPass::GetLightingTable(vtkFloatArray* table)
 {
   return this->Internals->LightingTable.Read(table);
@@ -1586,6 +1804,7 @@ void vtkSNDFRenderPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ActiveBinsPerAxis: " << this->ActiveBinsPerAxis << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";
   os << indent << "ConvergeOnRender: " << this->ConvergeOnRender << "\n";
+  os << indent << "Controller: " << this->GetController() << "\n";
   os << indent << "ZoomBetweenLevels: " << this->ZoomBetweenLevels << "\n";
   os << indent << "ErrorTarget: " << this->ErrorTarget << "\n";
   os << indent << "EstimatedError: " << this->EstimatedError << "\n";

@@ -15,6 +15,12 @@
  * It is a vtkImageProcessingPass: its delegate renders the scene (in ParaView the Particle Render
  * View's chain, in VTK e.g. a vtkRenderStepsPass inside a vtkCameraPass).
  *
+ * Distributed rendering (SetController): the sample passes' G-buffers are composited over the
+ * processes by depth before they enter the S-NDFs, so every process shades the S-NDFs of the
+ * whole picture, the single process's. Where the camera carries an explicit projection matrix
+ * (IceT's draw callback sets one) the jitter shifts that matrix as the window centre would, and
+ * a view between levels is not zoomed.
+ *
  * Sampling (progressive, paper Sec. 6.3). The frame of a change (every frame of an interaction)
  * is the delegate's plain image, as fast as without the pass. While the view then holds still,
  * each Render() draws the delegate SamplesPerFrame times, each time with the camera's window centre
@@ -212,6 +218,7 @@
 #include <vector> // for std::vector
 
 class vtkFloatArray;
+class vtkMultiProcessController;
 class vtkSNDFTileCache;
 
 class VTKPARTICLERENDERINGSNDF_EXPORT vtkSNDFRenderPass : public vtkImageProcessingPass
@@ -244,6 +251,23 @@ public:
   vtkSetMacro(ConvergeOnRender, bool);
   vtkGetMacro(ConvergeOnRender, bool);
   vtkBooleanMacro(ConvergeOnRender, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Distributed rendering: the processes whose pictures are composited by depth into one (e.g.
+   * IceT under ParaView's pvbatch or pvserver; nullptr or one process, the default: this process
+   * draws the whole picture). With more than one, every sample pass's G-buffer is composited
+   * over the processes before it enters the S-NDFs -- per pixel the nearest fragment of any
+   * process, with the normal, colour and diffuse values its process wrote
+   * (vtkParticleGBufferExchange) -- so every process gathers, shades and composites the S-NDFs
+   * of the whole picture, the single process's. Collective: every process renders every frame
+   * and the decisions that change what is sampled (restart, the frame of a change, sampling at
+   * all) are taken together; a process without particles in view takes part with an empty
+   * G-buffer. In ParaView the Particle Render View sets it.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController();
   ///@}
 
   ///@{
@@ -448,6 +472,7 @@ private:
   void RenderPlain(const vtkRenderState* s);
   void CollectScene(vtkFrame& frame);
   bool CheckSupport(vtkFrame& frame);
+  void RenderWithoutParticles(vtkFrame& frame);
   bool ChooseBins(vtkFrame& frame);
   void DescribeView(vtkFrame& frame);
   void PrepareContext(vtkFrame& frame);
@@ -465,6 +490,18 @@ private:
   void CheckError(vtkFrame& frame);
   void Shade(vtkFrame& frame);
   void Composite(vtkFrame& frame);
+  ///@}
+
+  ///@{
+  /**
+   * Distributed rendering (SetController): AllProcesses is the logical AND of `local` over the
+   * processes (`local` with one process); AgreeToSample draws the plain frame on a process that
+   * was ready when another was not, and returns whether all were; ExchangeSampleTargets
+   * composites the sample pass's G-buffer over the processes by depth. Collective.
+   */
+  bool AllProcesses(bool local);
+  bool AgreeToSample(bool local, vtkFrame& frame);
+  void ExchangeSampleTargets(vtkFrame& frame);
   ///@}
 
   class vtkInternals;

@@ -21,6 +21,9 @@ Cases (Particle Render View, 400x300, coloured by type, radii from 'radius'):
                       radius, the surface clipped to each rank's box)
   metaballs-opacity   the same with opacity 0.7, which metaballs do not apply (opaque: the
                       baseline is the metaballs picture)
+  sndf                opacity 1, Scale-Consistent Shading converged on the still render
+                      (prMPITesting.SNDF_SAMPLES per pixel; every sample pass's G-buffer composited
+                      over the processes: each gathers the whole picture's S-NDFs)
 With N = 1 each image is compared with its baseline (Testing/Data/Baseline/TestParticlesMPI_*,
 the GPU's own picture on this platform) and written to <temp-dir>/TestParticlesMPI_<case>_np1.png;
 with N > 1 each image must equal that single-process image within --tolerance per pixel (8-bit
@@ -41,8 +44,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import prParaViewTesting as pr  # noqa: E402
-from prMPITesting import (CASES, apply_case, compare_with_single_process, make_film_pieces, rgb,
-                          show_film)  # noqa: E402
+from prMPITesting import (CASES, SNDF_SAMPLES, apply_case, compare_with_single_process,
+                          make_film_pieces, rgb, show_film)  # noqa: E402
 import numpy  # noqa: E402
 from paraview import servermanager, simple  # noqa: E402
 
@@ -114,6 +117,13 @@ def main():
             if bool(blended) != expected:
                 print("FAIL: %s: images blended before IceT: %s, expected %s"
                       % (case, bool(blended), expected))
+                ok = False
+        if case.startswith("sndf"):
+            view.SMProxy.UpdatePropertyInformation()
+            samples = view.GetPropertyValue("SNDFNumberOfSamples")
+            print("%s: %d S-NDF samples per pixel" % (case, samples))
+            if samples != SNDF_SAMPLES:
+                print("FAIL: %s: %d S-NDF samples, not %d (converged)" % (case, samples, SNDF_SAMPLES))
                 ok = False
         if len(per_rank) != ranks:
             print("FAIL: %s: distribution of %d ranks, not %d" % (case, len(per_rank), ranks))

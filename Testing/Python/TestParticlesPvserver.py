@@ -30,9 +30,9 @@ from prMPITesting import (apply_case, compare_with_single_process,  # noqa: E402
                           make_film_pieces, show_film)
 from paraview import simple  # noqa: E402
 
-# translucent with the summed AO volume, and opaque with PointAO (the ranks' G-buffers are
-# composited inside IceT's draw: every rank must draw)
-CASES = ("ao-translucent", "pointao")
+# translucent with the summed AO volume, opaque with PointAO and converged S-NDF shading (the
+# ranks' G-buffers are composited inside IceT's draw: every rank must draw)
+CASES = ("ao-translucent", "pointao", "sndf")
 
 
 def parse_extra():

@@ -25,7 +25,13 @@ CASES = {
     # Opacity is not applied to metaballs (opaque; its baseline is the metaballs picture): a
     # partial alpha blended the surface with what each process had drawn before it
     "metaballs-opacity": (0.7, 0, "None", "Metaballs"),
+    # Scale-Consistent Shading, converged (SNDF_SAMPLES per pixel): each sample pass's G-buffer
+    # is composited over the processes before it enters the S-NDFs
+    "sndf": (1.0, 0, "None", "Spheres"),
 }
+
+# S-NDF samples per pixel of the sndf case (a converged, antialiased picture; 256 is the default)
+SNDF_SAMPLES = 64
 
 # share of the pixels that may be one 8-bit step over the tolerance (per-process rounding)
 OVER_TOLERANCE_SHARE = 1e-4
@@ -145,3 +151,7 @@ def apply_case(view, display, case):
     display.Opacity = opacity
     display.DensityModel = model
     view.ParticleAmbientOcclusion = ao
+    sndf = 1 if case.startswith("sndf") else 0
+    view.ScaleConsistentShading = sndf
+    view.SNDFConvergeStillRenders = sndf
+    view.SNDFTargetSamples = SNDF_SAMPLES

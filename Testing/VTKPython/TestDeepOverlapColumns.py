@@ -18,9 +18,10 @@ reads. The weights are now three moments of the transmittance (FragmentListResol
 
 Criteria (8-bit, each image rounded once): RGB and alpha within 2/255 of the reference on every
 pixel; the two boxes composited "over" within 2/255 of the whole; the lists' second and third
-passes ran, nothing incomplete; the frame repeats bit for bit. Must fail: the sorted spheres on
-the particle-opacity scene are more than 10/255 off the reference (measured 29/255: the test
-tells the two apart).
+passes ran, nothing incomplete; the frame repeats bit for bit (once: the squared-distance density
+with the column opacity, where the frames differed; a frame costs 5-7 s on Mesa 25 and 26). Must
+fail: the sorted spheres on the particle-opacity scene are more than 10/255 off the reference
+(measured 29/255: the test tells the two apart).
 
 usage: python3 TestDeepOverlapColumns.py   (PYTHONPATH: the build's python3/dist-packages)
 """
@@ -98,11 +99,13 @@ def reference_image(renderer, actor):
     return np.round(np.clip(rgba, 0.0, 1.0) * 255.0)
 
 
-def check_against_reference(name, model, reference_kind, opacity):
-    """The exact lists against the reference; returns the scene and the reference image."""
+def check_against_reference(name, model, reference_kind, opacity, repeat=False):
+    """The exact lists against the reference (and, with `repeat`, the frame drawn twice);
+    returns the scene and the reference image."""
     mapper, actor, renderer, window = scene(model, M.EXACT_OVERLAP, reference_kind, opacity)
     whole = gpu_image(window)
-    check_repeatable(window, name)
+    if repeat:
+        check_repeatable(window, name)
     lists = mapper.GetFragmentLists()
     reference = reference_image(renderer, actor)
     error = np.abs(whole - reference).max(axis=1)
@@ -143,7 +146,8 @@ def check_split(name, objects, whole):
 # the column opacity (the back of every list counts): both models, whole and in two boxes
 for model, name in ((M.SQUARED_DISTANCE_DENSITY, "squared"), (M.CONSTANT_DENSITY, "constant")):
     label = "%s density, column opacity" % name
-    objects, whole, _ = check_against_reference(label, model, M.COLUMN_OPACITY, COLUMN_THETA)
+    objects, whole, _ = check_against_reference(label, model, M.COLUMN_OPACITY, COLUMN_THETA,
+                                                repeat=model == M.SQUARED_DISTANCE_DENSITY)
     check_split(label, objects, whole)
 
 # Theta of one particle (denser spheres: the order matters), and the sorted spheres rejected

@@ -27,13 +27,13 @@
 #define vtkParticleGBufferExchange_h
 
 #include "vtkObject.h"
-#include "vtkParticleRenderingAmbientOcclusionModule.h" // for export macro
-#include "vtkSmartPointer.h"                            // for vtkSmartPointer
+#include "vtkParticleRenderingCoreModule.h" // for export macro
+#include "vtkSmartPointer.h"                // for vtkSmartPointer
 
 class vtkFloatArray;
 class vtkMultiProcessController;
 
-class VTKPARTICLERENDERINGAMBIENTOCCLUSION_EXPORT vtkParticleGBufferExchange : public vtkObject
+class VTKPARTICLERENDERINGCORE_EXPORT vtkParticleGBufferExchange : public vtkObject
 {
 public:
   static vtkParticleGBufferExchange* New();
