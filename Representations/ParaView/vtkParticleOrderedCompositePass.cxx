@@ -129,14 +129,18 @@ void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
   {
     return;
   }
-  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-  this->Blended.assign(static_cast<size_t>(pixels) * 4, 0);
   if (first)
   {
+    const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+    this->Blended.assign(static_cast<size_t>(pixels) * 4, 0);
     vtkParticleOrderedCompositePass::BlendInOrder(this->Gathered.data(),
       this->Controller->GetNumberOfProcesses(), pixels, order, this->Blended.data());
+    this->WriteImage(s, width, height);
   }
-  this->WriteImage(s, width, height);
+  else
+  {
+    this->ClearImage(s);
+  }
   this->LastBlended = true;
 }
 
@@ -176,7 +180,7 @@ bool vtkParticleOrderedCompositePass::GatherImages(int width, int height, int de
 //------------------------------------------------------------------------------
 void vtkParticleOrderedCompositePass::WriteImage(const vtkRenderState* s, int width, int height)
 {
-  // Blended (the blend on the first process, transparent black on the others) over the colour
+  // Blended (the blend, on the first process) over the colour
   // the delegate drew (the depth stays)
   auto* context = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
   vtkOpenGLState* ostate = context->GetState();
@@ -214,6 +218,21 @@ void vtkParticleOrderedCompositePass::WriteImage(const vtkRenderState* s, int wi
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   ostate->PopReadFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::ClearImage(const vtkRenderState* s)
+{
+  // transparent black over the colour the delegate drew (the depth stays), as a cleared colour
+  // buffer: nothing to upload
+  auto* context = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* ostate = context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglColorMask mask(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const GLfloat transparent[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  glClearBufferfv(GL_COLOR, 0, transparent);
 }
 
 //------------------------------------------------------------------------------

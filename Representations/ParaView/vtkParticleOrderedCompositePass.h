@@ -98,6 +98,7 @@ protected:
   bool ReadImage(int width, int height);
   bool GatherImages(int width, int height, int destination);
   void WriteImage(const vtkRenderState* s, int width, int height);
+  void ClearImage(const vtkRenderState* s);
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
   vtkSmartPointer<vtkOrderedCompositingHelper> Helper;

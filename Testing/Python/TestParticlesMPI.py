@@ -167,6 +167,39 @@ def main():
     if ranks > 1:
         print("largest difference from the single-process images: %.0f/255" % worst_overall)
         ok = check_interactive_levels(view, display) and ok
+        ok = check_sndf_progressive(view, display) and ok
+    return ok
+
+
+def check_sndf_progressive(view, display):
+    """S-NDF refinement under MPI, frame by frame (no convergence on still renders): the frame of
+    a change is the plain one, each later still render adds SNDFSamplesPerFrame on every process
+    (the processes restart and sample together; a disagreement would hang or reset the count),
+    an interactive render restarts, and a still render with convergence on reaches the target."""
+    ok = True
+    apply_case(view, display, "sndf")
+    view.SNDFConvergeStillRenders = 0
+    per_frame = view.SNDFSamplesPerFrame
+    view.CameraPosition = [c * 1.001 for c in view.CameraPosition]  # a change
+    counts = []
+    for _ in range(4):
+        simple.Render(view)
+        view.SMProxy.UpdatePropertyInformation()
+        counts.append(view.GetPropertyValue("SNDFNumberOfSamples"))
+    view.CameraPosition = [c / 1.001 for c in view.CameraPosition]
+    view.SMProxy.InteractiveRender()
+    view.SMProxy.UpdatePropertyInformation()
+    counts.append(view.GetPropertyValue("SNDFNumberOfSamples"))
+    view.SNDFConvergeStillRenders = 1
+    simple.Render(view)
+    view.SMProxy.UpdatePropertyInformation()
+    counts.append(view.GetPropertyValue("SNDFNumberOfSamples"))
+    expected = [0, per_frame, 2 * per_frame, 3 * per_frame, 0, SNDF_SAMPLES]
+    print("sndf progressive under MPI: samples after each render %s (expected %s)"
+          % (counts, expected))
+    if counts != expected:
+        print("FAIL: sndf progressive under MPI: samples %s, not %s" % (counts, expected))
+        ok = False
     return ok
 
 
