@@ -11,7 +11,8 @@ Cases: <scene>:<settings>:<compositing>, settings from {speed (opacity array), s
 (Squared Distance density), hollow (HollowFraction 0.5), one (Opacity Of One Particle), opaque
 (Opacity 1), dvao / vcao / pointao (Density Volume / Voxel Cone Tracing / PointAO), sndf
 (Scale-Consistent Shading, converged), far (the camera 3x farther away), metaballs,
-neighbours (metaballs' Maximum Neighbours 255, the largest: no neighbour list cut)}: the rows of the
+neighbours (metaballs' Maximum Neighbours 255, the largest: no neighbour list cut), rotated (the
+actor turned 35 degrees about z and 20 about x: the boxes are cut in data coordinates)}: the rows of the
 outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent with AO).
 Scene 'mixed' (one view, several representations; issue 42's "one partition per view"): the gas
 scene with settings surface (its particles translucent, squared density, opacity array, and a
@@ -29,54 +30,16 @@ import argparse
 import os
 import sys
 
-import numpy
 from paraview import servermanager, simple
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path[:0] = [os.path.join(TOP, "Testing", "Python"), os.path.join(TOP, "Testing", "VTKPython")]
 import prMPITesting  # noqa: E402  (the split of TestParticlesMPI: particle i on rank i mod N)
 import prParaViewTesting as pr  # noqa: E402  (the tests' view, display and camera set-up)
-from prVTKTesting import particles_from  # noqa: E402
+from prMPITesting import write_scene  # noqa: E402  (the seeded gas, deep and mixed scenes)
 
 
-def write_scene(name, path):
-    """Write the seeded scene `name` (points, radius, type, speed) to the .vtp file `path`."""
-    rng = numpy.random.default_rng(20261127)
-    if name in ("gas", "mixed"):
-        a = 1.5874  # fcc at number density 1
-        cells = numpy.stack(numpy.meshgrid(numpy.arange(20), numpy.arange(20), numpy.arange(5),
-                                           indexing="ij"), -1).reshape(-1, 1, 3)
-        basis = numpy.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
-        slab = ((cells + basis[None]).reshape(-1, 3)) * a
-        gas = rng.random((16000, 3)) * [20 * a, 20 * a, 5 * a + 16.0] - [0.0, 0.0, 8.0]
-        xyz = numpy.vstack([slab, gas])
-        kind = numpy.r_[numpy.ones(len(slab)), numpy.full(len(gas), 2.0)]
-        speed = numpy.where(kind == 2, 0.3 + 0.7 * rng.random(len(xyz)),
-                            0.05 + 0.1 * rng.random(len(xyz)))
-        radius = numpy.full(len(xyz), 0.5)
-    else:
-        xyz = rng.random((6000, 3)) * [24.0, 24.0, 10.0]
-        kind = 1.0 + (rng.random(6000) < 0.3)
-        speed = 0.2 + 0.8 * rng.random(6000)
-        radius = 0.9 + 0.6 * rng.random(6000)
-    f32 = numpy.float32
-    parts = [("", numpy.ones(len(xyz), bool))]
-    if name == "mixed":  # also the slab (type 1) and the gas (type 2) alone
-        parts += [("_type%d" % t, kind == t) for t in (1, 2)]
-    for suffix, keep in parts:
-        writer = vtkXMLPolyDataWriter()
-        writer.SetFileName(path[:-len(".vtp")] + suffix + ".vtp")
-        writer.SetInputData(particles_from(xyz[keep].astype(f32), radius=radius[keep].astype(f32),
-                                           type=kind[keep].astype(f32),
-                                           speed=speed[keep].astype(f32)))
-        writer.Write()
-
-
-CAMERAS = {  # position, focal point: the slab obliquely; the deep block from the front
-    "gas": ((80.0, -40.0, 30.0), (16.0, 16.0, 4.0)),
-    "deep": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
-}
+CAMERAS = dict(prMPITesting.SCENE_CAMERAS)  # position, focal point
 CAMERAS["mixed"] = CAMERAS["gas"]
 
 CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:Automatic",
@@ -92,6 +55,7 @@ CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:A
          "deep:one:Sorted Spheres", "deep:one:Exact Overlap",
          "gas:opaque-sndf:Automatic", "gas:opaque-sndf-far:Automatic",
          "deep:opaque-sndf:Automatic",
+         "gas:speed-squared-rotated:Automatic", "deep:speed-squared-rotated:Automatic",
          "mixed:surface:Automatic", "mixed:opaque-surface:Automatic",
          "mixed:opaque-translucent:Automatic", "mixed:two-translucent:Automatic"]
 
@@ -185,6 +149,8 @@ def main():
                                              "Voxel Cone Tracing" if "vcao" in settings else
                                              "PointAO" if "pointao" in settings else "None")
             display.OverlapCompositing = compositing
+            display.Orientation = [20.0, 0.0, 35.0] if "rotated" in settings else [0.0, 0.0, 0.0]
+            display.Origin = list(CAMERAS[scene][1])  # (turned about the view's focal point)
             sndf = 1 if "sndf" in settings else 0
             view.ScaleConsistentShading = sndf
             view.SNDFConvergeStillRenders = sndf  # (the screenshot converges)

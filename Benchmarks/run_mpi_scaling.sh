@@ -4,7 +4,9 @@
 # all ranks. The machine has 2 cores: 4 ranks oversubscribe it. Appends to
 # Benchmarks/results/mpi_scaling.csv and draws mpi_scaling.png.
 # usage: Benchmarks/run_mpi_scaling.sh [BUILD_DIR]
-# env: RESULTS_DIR (default Benchmarks/results), BUILD_DIR (when no argument; default build)
+# env: RESULTS_DIR (default Benchmarks/results), BUILD_DIR (when no argument; default build),
+#      REPEATS (the film's repeats, default "2 7"; 23: 10 240 640 atoms, about 10^7),
+#      FRAMES (frames per mean, default 5)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-${BUILD_DIR:-$top/build}}
@@ -12,12 +14,12 @@ results=${RESULTS_DIR:-$top/Benchmarks/results}
 mkdir -p "$results"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export PYTHONPATH="$build/lib/python3/dist-packages"
-for repeat in 2 7; do
+for repeat in ${REPEATS:-2 7}; do
   for np in 1 2 4; do
     "$top/Scripts/with_xvfb.sh" mpiexec -np "$np" --oversubscribe -x DISPLAY -x PYTHONPATH \
       pvbatch "$top/Benchmarks/mpi_scaling.py" \
       --plugin "$build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so" \
-      --data "$top/Testing/Data" --repeat "$repeat" --csv "$results/mpi_scaling.csv"
+      --data "$top/Testing/Data" --repeat "$repeat" --frames "${FRAMES:-5}" --csv "$results/mpi_scaling.csv"
   done
 done
 /usr/bin/python3 "$top/Benchmarks/plot_mpi_scaling.py" "$results/mpi_scaling.csv" "$results/mpi_scaling.png"

@@ -4,6 +4,8 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
@@ -12,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkProp.h"
 #include "vtkTransparentSphereMapper.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -134,6 +137,41 @@ vtkPolyData* vtkParticleDistributedPartition::PieceToDeliver(
   // this process's box: IceT orders the processes' images by these boxes
   this->Partition->GetBox(bounds);
   return this->Partition->GetOutput();
+}
+
+//------------------------------------------------------------------------------
+vtkInformationKeyMacro(vtkParticleDistributedPartition, BOXES, DoubleVector);
+
+//------------------------------------------------------------------------------
+void vtkParticleDistributedPartition::MarkProp(vtkProp* prop, bool shown)
+{
+  if (!prop)
+  {
+    return;
+  }
+  const std::vector<double> boxes = shown ? this->GetBoxes() : std::vector<double>();
+  vtkInformation* keys = prop->GetPropertyKeys();
+  if (boxes.empty())
+  {
+    if (keys && keys->Has(BOXES()))
+    {
+      keys->Remove(BOXES());
+    }
+    return;
+  }
+  if (!keys)
+  {
+    vtkNew<vtkInformation> created;
+    prop->SetPropertyKeys(created);
+    keys = created;
+  }
+  keys->Set(BOXES(), boxes.data(), static_cast<int>(boxes.size()));
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkParticleDistributedPartition::GetBoxes()
+{
+  return this->Partitioned ? this->Partition->GetBoxes() : std::vector<double>();
 }
 
 //------------------------------------------------------------------------------

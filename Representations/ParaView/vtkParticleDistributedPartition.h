@@ -35,9 +35,12 @@
 #include "vtkSmartPointer.h"                    // for vtkSmartPointer
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkDataObject;
 class vtkDoubleArray;
+class vtkInformationDoubleVectorKey;
+class vtkProp;
 class vtkParticlePartition;
 class vtkDataArray;
 class vtkPolyData;
@@ -81,6 +84,20 @@ public:
    * `bounds` unchanged.
    */
   vtkPolyData* PieceToDeliver(vtkPolyData* particles, double bounds[6]);
+
+  /**
+   * Every process's box, 6 values each in process order, in the particles' (data) coordinates;
+   * empty when not partitioned.
+   */
+  std::vector<double> GetBoxes();
+
+  /**
+   * Puts the boxes (GetBoxes) on `prop` under BOXES() in its property keys, for the view's
+   * compositing order (vtkParticleRenderView); removes them when not partitioned or `shown` is
+   * false.
+   */
+  void MarkProp(vtkProp* prop, bool shown);
+  static vtkInformationDoubleVectorKey* BOXES();
 
   /**
    * The particles to draw of the `delivered` piece and the box to clip them to (`clipBox`

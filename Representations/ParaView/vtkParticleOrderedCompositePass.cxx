@@ -2,7 +2,9 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h" // the OpenGL loader of this VTK
 #include "vtkOpenGLFramebufferObject.h"
@@ -48,6 +50,19 @@ vtkMultiProcessController* vtkParticleOrderedCompositePass::GetController()
 void vtkParticleOrderedCompositePass::SetBoundingBoxes(const std::vector<vtkBoundingBox>& boxes)
 {
   this->Helper->SetBoundingBoxes(boxes);
+  this->WorldToModel = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::SetBoundingBoxes(
+  const std::vector<vtkBoundingBox>& boxes, vtkMatrix4x4* modelToWorld)
+{
+  this->SetBoundingBoxes(boxes);
+  if (modelToWorld && !modelToWorld->IsIdentity())
+  {
+    this->WorldToModel = vtkSmartPointer<vtkMatrix4x4>::New();
+    vtkMatrix4x4::Invert(modelToWorld, this->WorldToModel);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -58,7 +73,32 @@ std::vector<int> vtkParticleOrderedCompositePass::ComputeOrder(vtkCamera* camera
   {
     return {};
   }
-  return this->Helper->ComputeSortOrder(camera);
+  if (!this->WorldToModel)
+  {
+    return this->Helper->ComputeSortOrder(camera);
+  }
+  // the camera in the boxes' model coordinates: the order of a partition by planes depends on
+  // the side of each plane the eye (or, in parallel projection, the direction of projection)
+  // lies on, which an affine map keeps
+  auto toModel = [this](const double world[3], double model[3])
+  {
+    const double in[4] = { world[0], world[1], world[2], 1.0 };
+    double out[4];
+    this->WorldToModel->MultiplyPoint(in, out);
+    for (int c = 0; c < 3; ++c)
+    {
+      model[c] = out[3] != 0.0 ? out[c] / out[3] : out[c];
+    }
+  };
+  double position[3];
+  double focal[3];
+  toModel(camera->GetPosition(), position);
+  toModel(camera->GetFocalPoint(), focal);
+  vtkNew<vtkCamera> model;
+  model->SetParallelProjection(camera->GetParallelProjection());
+  model->SetPosition(position);
+  model->SetFocalPoint(focal);
+  return this->Helper->ComputeSortOrder(model);
 }
 
 //------------------------------------------------------------------------------

@@ -37,6 +37,7 @@
 
 class vtkBoundingBox;
 class vtkCamera;
+class vtkMatrix4x4;
 class vtkMultiProcessController;
 class vtkOpenGLFramebufferObject;
 class vtkOrderedCompositingHelper;
@@ -68,9 +69,13 @@ public:
 
   /**
    * The partition box of every process, indexed by process (ParaView's cuts for ordered
-   * compositing).
+   * compositing), in world coordinates; or in the model coordinates of `modelToWorld` (the
+   * partition of particles whose actor is transformed: a turned box's world bounds overlap its
+   * neighbours', so they would give no order; the camera is taken into model coordinates instead,
+   * where the boxes still partition space).
    */
   void SetBoundingBoxes(const std::vector<vtkBoundingBox>& boxes);
+  void SetBoundingBoxes(const std::vector<vtkBoundingBox>& boxes, vtkMatrix4x4* modelToWorld);
 
   /**
    * The processes front to back for this camera (from the boxes; empty without them).
@@ -102,6 +107,7 @@ protected:
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
   vtkSmartPointer<vtkOrderedCompositingHelper> Helper;
+  vtkSmartPointer<vtkMatrix4x4> WorldToModel; // (null: the boxes are in world coordinates)
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   std::vector<unsigned char> Local;

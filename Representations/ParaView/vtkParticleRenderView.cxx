@@ -1,21 +1,28 @@
 #include "vtkParticleRenderView.h"
 
+#include "vtkActor.h"
 #include "vtkAlgorithm.h"
+#include "vtkBoundingBox.h"
 #include "vtkCameraPass.h"
 #include "vtkCommand.h"
 #include "vtkDensityVolumeAOPass.h"
 #include "vtkImageProcessingPass.h"
+#include "vtkInformation.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVProgressHandler.h"
 #include "vtkPVRenderViewDataDeliveryManager.h"
 #include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkParticleDistributedPartition.h"
 #include "vtkParticlePassChain.h"
 #include "vtkParticleProcessReduction.h"
 #include "vtkPointAOPass.h"
 #include "vtkProcessModule.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSNDFRenderPass.h"
@@ -395,6 +402,7 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
   {
     this->OrderedComposite->SetController(controller);
     this->OrderedComposite->SetBoundingBoxes(delivery->GetCuts());
+    this->OrderWithTransformedPartition(controller->GetNumberOfProcesses());
     if (this->ParticlePassChain->GetNumberOfPasses() == 0 ||
       this->ParticlePassChain->GetPass(0) != this->OrderedComposite.GetPointer())
     {
@@ -415,6 +423,47 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
     this->CompositeBounds->SetBounds(bounds);
   }
   this->CompositeBounds->SetVisibility(pointAO || sndf || ordered);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::OrderWithTransformedPartition(int processes)
+{
+  // ParaView's cuts are the world bounds of the processes' partition boxes. With the particles'
+  // actor turned (or sheared) those bounds overlap and give no visibility order: with one
+  // partitioned Particles representation the order then comes from its boxes in data
+  // coordinates, seen by the camera taken into them.
+  // (the representation puts its boxes on its actor, vtkParticleDistributedPartition::MarkProp;
+  // an actor hidden on a process without particles counts all the same)
+  std::vector<double> boxes;
+  vtkNew<vtkMatrix4x4> matrix;
+  int partitioned = 0;
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = this->GetRenderer()->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    vtkInformation* keys = prop->GetPropertyKeys();
+    auto* actor = vtkActor::SafeDownCast(prop);
+    if (actor && keys && keys->Has(vtkParticleDistributedPartition::BOXES()))
+    {
+      ++partitioned;
+      const int n = keys->Length(vtkParticleDistributedPartition::BOXES());
+      const double* values = keys->Get(vtkParticleDistributedPartition::BOXES());
+      boxes.assign(values, values + n);
+      actor->GetMatrix(matrix);
+    }
+  }
+  if (partitioned != 1 || matrix->IsIdentity() ||
+    boxes.size() != 6 * static_cast<size_t>(processes))
+  {
+    return;
+  }
+  std::vector<vtkBoundingBox> model;
+  for (int p = 0; p < processes; ++p)
+  {
+    model.emplace_back(boxes.data() + 6 * p);
+  }
+  this->OrderedComposite->SetBoundingBoxes(model, matrix);
 }
 
 //------------------------------------------------------------------------------

@@ -273,6 +273,9 @@ private:
   // the chain). CompositeBounds then gives every process the view's bounds over all of them, so
   // that IceT draws on every process or on none.
   void UpdateDistributedCompositing(bool interactive);
+  // ordered compositing of one partitioned Particles representation whose actor is transformed:
+  // the order from its boxes in data coordinates
+  void OrderWithTransformedPartition(int processes);
   // takes a pass out of the chain and releases its graphics resources
   void TakeOutOfChain(vtkImageProcessingPass* pass);
   // a new pass object for an AO method, swapped into the chain when that method is on

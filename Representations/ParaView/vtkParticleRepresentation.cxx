@@ -554,6 +554,7 @@ int vtkParticleRepresentation::ProcessViewRequest(
     double clipBox[6];
     particles = this->DistributedPartition->PieceToDraw(particles, clipBox);
     this->Mapper->SetClipBox(clipBox);
+    this->DistributedPartition->MarkProp(this->Actor, true); // (the view's compositing order)
     this->Mapper->SetInputDataObject(particles);
     this->DistributedVolumes->Update(inInfo, this->Technique == SPHERES, this->Actor, this->Mapper,
       this->ProcessedData, this->EffectiveRadiusArray(this->ProcessedData));
@@ -631,6 +632,10 @@ void vtkParticleRepresentation::SetVisibility(bool val)
 {
   // an empty local piece stays hidden (see ProcessViewRequest)
   this->Actor->SetVisibility(val && this->HasLocalParticles);
+  if (!val)
+  {
+    this->DistributedPartition->MarkProp(this->Actor, false);
+  }
   this->Superclass::SetVisibility(val);
 }
 

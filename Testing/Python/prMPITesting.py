@@ -6,6 +6,7 @@ builtin session and replaces globals there (e.g. `split`, `max`, `sum` from
 numpy_interface.algorithms): the test scripts keep their work inside functions.
 """
 import os
+import sys
 
 from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -28,6 +29,9 @@ CASES = {
     # Scale-Consistent Shading, converged (SNDF_SAMPLES per pixel): each sample pass's G-buffer
     # is composited over the processes before it enters the S-NDFs
     "sndf": (1.0, 0, "None", "Spheres"),
+    # translucent with the actor turned (35 degrees about z, 20 about x, about the film's centre):
+    # the boxes are cut in data coordinates, the compositing order comes from them
+    "translucent-turned": (0.7, 1, "None", "Spheres"),
 }
 
 # S-NDF samples per pixel of the sndf case (a converged, antialiased picture; 256 is the default)
@@ -123,13 +127,64 @@ self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
 
 
 
-def make_film_pieces(args, empty_rank=False, keep=0, bad_points=False):
-    """A ProgrammableSource that reads Testing/Data/lj_film.vtp (19360 atoms) on every rank and
-    keeps particle i on rank i mod N (with empty_rank: the last rank's go to rank 0; keep > 0:
-    only the first `keep` particles; bad_points: 2 non-finite points more on the last rank)."""
+SCENE_CAMERAS = {  # position, focal point: the slab obliquely; the deep block from the front
+    "gas": ((80.0, -40.0, 30.0), (16.0, 16.0, 4.0)),
+    "deep": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
+}
+
+
+def write_scene(name, path):
+    """Write the seeded scene `name` (points, radius, type, speed) to the .vtp file `path`:
+    gas (a dense fcc slab of 8 000 atoms, radius 0.5, in 16 000 atoms of hot gas), deep (6 000
+    spheres of radius 0.9-1.5 at mean spacing 0.9), mixed (gas, and also its slab and its gas
+    alone in <path>_type1.vtp and <path>_type2.vtp). Benchmarks/mpi_partition_accuracy.py and
+    TestParticlesMPI --deep."""
+    import numpy
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    vtk_python = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                              "VTKPython")
+    if vtk_python not in sys.path:
+        sys.path.append(vtk_python)
+    from prVTKTesting import particles_from
+    rng = numpy.random.default_rng(20261127)
+    if name in ("gas", "mixed"):
+        a = 1.5874  # fcc at number density 1
+        cells = numpy.stack(numpy.meshgrid(numpy.arange(20), numpy.arange(20), numpy.arange(5),
+                                           indexing="ij"), -1).reshape(-1, 1, 3)
+        basis = numpy.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+        slab = ((cells + basis[None]).reshape(-1, 3)) * a
+        gas = rng.random((16000, 3)) * [20 * a, 20 * a, 5 * a + 16.0] - [0.0, 0.0, 8.0]
+        xyz = numpy.vstack([slab, gas])
+        kind = numpy.r_[numpy.ones(len(slab)), numpy.full(len(gas), 2.0)]
+        speed = numpy.where(kind == 2, 0.3 + 0.7 * rng.random(len(xyz)),
+                            0.05 + 0.1 * rng.random(len(xyz)))
+        radius = numpy.full(len(xyz), 0.5)
+    else:
+        xyz = rng.random((6000, 3)) * [24.0, 24.0, 10.0]
+        kind = 1.0 + (rng.random(6000) < 0.3)
+        speed = 0.2 + 0.8 * rng.random(6000)
+        radius = 0.9 + 0.6 * rng.random(6000)
+    f32 = numpy.float32
+    parts = [("", numpy.ones(len(xyz), bool))]
+    if name == "mixed":  # also the slab (type 1) and the gas (type 2) alone
+        parts += [("_type%d" % t, kind == t) for t in (1, 2)]
+    for suffix, keep in parts:
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(path[:-len(".vtp")] + suffix + ".vtp")
+        writer.SetInputData(particles_from(xyz[keep].astype(f32), radius=radius[keep].astype(f32),
+                                           type=kind[keep].astype(f32),
+                                           speed=speed[keep].astype(f32)))
+        writer.Write()
+
+
+def make_film_pieces(args, empty_rank=False, keep=0, bad_points=False, path=None):
+    """A ProgrammableSource that reads Testing/Data/lj_film.vtp (19360 atoms; or the .vtp file
+    `path`) on every rank and keeps particle i on rank i mod N (with empty_rank: the last rank's
+    go to rank 0; keep > 0: only the first `keep` particles; bad_points: 2 non-finite points more
+    on the last rank)."""
     source = simple.ProgrammableSource()
     source.OutputDataSetType = "vtkPolyData"
-    source.Script = SPLIT_SCRIPT % {"path": os.path.join(args.data, "lj_film.vtp"),
+    source.Script = SPLIT_SCRIPT % {"path": path or os.path.join(args.data, "lj_film.vtp"),
                                     "empty_rank": empty_rank, "keep": keep, "bad": bad_points}
     source.ScriptRequestInformation = SPLIT_INFORMATION_SCRIPT
     source.UpdatePipeline()
@@ -151,6 +206,12 @@ def apply_case(view, display, case):
     display.Opacity = opacity
     display.DensityModel = model
     view.ParticleAmbientOcclusion = ao
+    if case.endswith("turned"):
+        bounds = display.Input.GetDataInformation().GetBounds()
+        display.Origin = [0.5 * (bounds[2 * a] + bounds[2 * a + 1]) for a in range(3)]
+        display.Orientation = [20.0, 0.0, 35.0]
+    else:
+        display.Orientation = [0.0, 0.0, 0.0]
     sndf = 1 if case.startswith("sndf") else 0
     view.ScaleConsistentShading = sndf
     view.SNDFConvergeStillRenders = sndf
