@@ -103,8 +103,6 @@ public:
   // composite writes this process's own depth)
   vtkNew<vtkTextureObject> ExchangedDepth;
   vtkNew<vtkParticleGBufferExchange> Exchange;
-  vtkNew<vtkFloatArray> ExchangeDepths;
-  vtkNew<vtkFloatArray> ExchangePayload; // normal (4) and stamp per pixel
   vtkNew<vtkOpenGLFramebufferObject> Work;
   vtkNew<vtkTextureObject> Occlusion;
   vtkNew<vtkTextureObject> Blurred;
@@ -604,65 +602,15 @@ void vtkPointAOPass::ExchangeGBuffer()
   {
     return;
   }
-  const int w = internals.Width;
-  const int h = internals.Height;
-  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
-  internals.ExchangeDepths->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  internals.ExchangePayload->SetNumberOfComponents(5);
-  internals.ExchangePayload->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  float* depths = internals.ExchangeDepths->GetPointer(0);
-  float* payload = internals.ExchangePayload->GetPointer(0);
-  vtkOpenGLState* ostate = internals.Context->GetState();
-  // Every draw into the G-buffer finished before it is read: on llvmpipe, reading the targets
-  // right after the delegate's draws returned stale 128 x 128 blocks in about every second run
-  // at np 3 (TestParticlesMPI pointao: the same frame drawn twice differed by up to 244/255);
-  // with glFinish none in 12 runs. The readback stalls for the GPU anyway.
-  glFinish();
-  ostate->PushReadFramebufferBinding();
-  internals.GBuffer->Bind(GL_READ_FRAMEBUFFER);
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
-  std::vector<float> normals;
-  std::vector<float> stamps;
-  if (internals.StoredNormals)
-  {
-    normals.resize(4 * n);
-    stamps.resize(n);
-    internals.GBuffer->ActivateReadBuffer(1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, normals.data());
-    internals.GBuffer->ActivateReadBuffer(2);
-    glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, stamps.data());
-  }
-  ostate->PopReadFramebufferBinding();
-  // a process whose normal targets were not drawn gives no stamp: the depth's normal there
-  for (size_t i = 0; i < n; ++i)
-  {
-    float* p = payload + 5 * i;
-    for (int c = 0; c < 4; ++c)
-    {
-      p[c] = internals.StoredNormals ? normals[4 * i + c] : 0.0f;
-    }
-    p[4] = internals.StoredNormals ? stamps[i] : -1.0f;
-  }
-  internals.Exchange->CompositeNearest(internals.ExchangeDepths, internals.ExchangePayload);
-  normals.resize(4 * n);
-  stamps.resize(n);
-  for (size_t i = 0; i < n; ++i)
-  {
-    const float* p = payload + 5 * i;
-    std::copy(p, p + 4, normals.begin() + 4 * i);
-    stamps[i] = p[4];
-  }
-  // the whole picture's buffers (the normal targets hold stamps now, also where this process
-  // drew none)
-  auto upload = [&](vtkTextureObject* texture, GLenum format, const float* data)
-  {
-    texture->Activate(); // (its own texture unit, bound)
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, format, GL_FLOAT, data);
-    texture->Deactivate();
+  // the normal and its stamp; a process whose normal targets were not drawn gives no stamp (the
+  // depth's normal there). Afterwards the normal targets hold stamps, also where this process
+  // drew none.
+  const std::vector<vtkParticleGBufferExchange::vtkTarget> targets = {
+    { internals.StoredNormals ? 1 : -1, 4, false, 0.0f, internals.Normal },
+    { internals.StoredNormals ? 2 : -1, 1, false, -1.0f, internals.NormalDepth }
   };
-  upload(internals.ExchangedDepth, GL_RED, depths);
-  upload(internals.Normal, GL_RGBA, normals.data());
-  upload(internals.NormalDepth, GL_RED, stamps.data());
+  internals.Exchange->CompositeFramebuffer(internals.Context, internals.GBuffer, internals.Width,
+    internals.Height, targets, internals.ExchangedDepth, false);
   internals.StoredNormals = true;
   internals.OcclusionDepth = internals.ExchangedDepth;
 }

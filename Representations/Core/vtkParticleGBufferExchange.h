@@ -12,6 +12,8 @@
  * How: two all-reduces over the controller. First the minimum of a 64-bit key per pixel, the
  * depth's bits (non-negative floats order as their bit patterns) above the process id: it gives
  * the nearest depth and its process (at equal depth the lowest id, so every process agrees).
+ * CompositeFramebuffer does the whole round trip for a framebuffer's depth and colour targets
+ * (vtkPointAOPass: normal and stamp; vtkSNDFRenderPass: each sample pass's four targets).
  * Then the sum of the payloads, each process contributing zeros where it is not the owner: the
  * owner's values arrive unchanged (x + 0 = x exactly). No user-defined MPI operation is needed,
  * so MPI may split the buffers wherever it likes. The picture each process composites afterwards
@@ -28,10 +30,16 @@
 
 #include "vtkObject.h"
 #include "vtkParticleRenderingCoreModule.h" // for export macro
+#include "vtkNew.h"                         // for vtkNew
 #include "vtkSmartPointer.h"                // for vtkSmartPointer
+
+#include <vector> // for std::vector
 
 class vtkFloatArray;
 class vtkMultiProcessController;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
 
 class VTKPARTICLERENDERINGCORE_EXPORT vtkParticleGBufferExchange : public vtkObject
 {
@@ -64,6 +72,16 @@ public:
    */
   void Minimum(double* values, int n);
 
+  ///@{
+  /**
+   * True when every process holds the same values[0..n) (collective; true with one process): the
+   * minima of the values and of their negatives are opposite only when all are equal. The
+   * static form takes any controller (nullptr: true).
+   */
+  bool AllEqual(const double* values, int n);
+  static bool AllEqual(vtkMultiProcessController* controller, const double* values, int n);
+  ///@}
+
   /**
    * depth: the window depth per pixel (one component; values outside [0, 1] are clamped, NaN is
    * taken as 1, the background); payload: as many tuples, written by the process's nearest
@@ -74,11 +92,41 @@ public:
    */
   bool CompositeNearest(vtkFloatArray* depth, vtkFloatArray* payload);
 
+#if !defined(__VTK_WRAP__)
+  /**
+   * One target of CompositeFramebuffer: the colour attachment read back (Attachment; -1: not
+   * drawn, every value Fill), its Components per pixel (4: RGBA, 1: RED), Bytes for an 8-bit
+   * target (sent as whole numbers 0-255 in floats, exact), and the texture that receives the
+   * whole picture's values (Result, Components and Bytes as read).
+   */
+  struct vtkTarget
+  {
+    int Attachment;
+    int Components;
+    bool Bytes;
+    float Fill;
+    vtkTextureObject* Result;
+  };
+
+  /**
+   * A screen-space pass's G-buffer over the processes: reads back the depth and the targets of
+   * `framebuffer` (width x height, after glFinish: every draw into it finished), composites them
+   * by nearest depth (CompositeNearest) and uploads the whole picture's values, the depth to
+   * `depthResult` (a depth texture, or with depthTexture false a one-component float texture)
+   * and each target to its Result. Collective; false, changing nothing, for a bad size.
+   */
+  bool CompositeFramebuffer(vtkOpenGLRenderWindow* context,
+    vtkOpenGLFramebufferObject* framebuffer, int width, int height,
+    const std::vector<vtkTarget>& targets, vtkTextureObject* depthResult, bool depthTexture);
+#endif
+
 protected:
   vtkParticleGBufferExchange();
   ~vtkParticleGBufferExchange() override;
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
+  vtkNew<vtkFloatArray> Depths;  // CompositeFramebuffer's depth per pixel
+  vtkNew<vtkFloatArray> Payload; // and its targets' values
 
 private:
   vtkParticleGBufferExchange(const vtkParticleGBufferExchange&) = delete;

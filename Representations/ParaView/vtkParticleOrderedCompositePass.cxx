@@ -6,6 +6,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkParticleGBufferExchange.h"
 #include "vtkOpenGLError.h" // the OpenGL loader of this VTK
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -187,12 +188,10 @@ void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
 {
-  // the processes agree on the size first, or none blends (the gather needs equal lengths):
-  // the minima of the sizes and of their negatives are opposite only when all are equal
-  int sizes[4] = { width, -width, height, -height };
-  int agreed[4] = { 0, 0, 0, 0 };
-  this->Controller->AllReduce(sizes, agreed, 4, vtkCommunicator::MIN_OP);
-  if (agreed[0] != -agreed[1] || agreed[2] != -agreed[3] || width <= 0 || height <= 0)
+  // the processes agree on the size first, or none blends (the gather needs equal lengths)
+  const double sizes[2] = { static_cast<double>(width), static_cast<double>(height) };
+  if (!vtkParticleGBufferExchange::AllEqual(this->Controller, sizes, 2) || width <= 0 ||
+    height <= 0)
   {
     vtkWarningMacro(<< "The processes' windows differ in size (or are empty): their images are "
                        "composited by IceT alone.");

@@ -136,8 +136,6 @@ public:
   vtkNew<vtkLightsPass> Lights;
   // distributed rendering: the sample passes' G-buffers composited over the processes
   vtkNew<vtkParticleGBufferExchange> Exchange;
-  vtkNew<vtkFloatArray> ExchangeDepths;
-  vtkNew<vtkFloatArray> ExchangePayload;
   vtkNew<vtkProperty> NoParticleMaterial; // (the lighting table of a process without particles)
 
   // The S-MIP's frame: the state that every view of its levels shares (all but the camera's
@@ -951,11 +949,10 @@ bool vtkSNDFRenderPass::KeepOrRestartSamples(vtkFrame& frame)
   {
     // every process restarts when one does, or when their samples differ (a frame that some
     // drew alone, e.g. one not rendered distributed)
-    double counts[4] = { static_cast<double>(this->NumberOfSamples),
-      -static_cast<double>(this->NumberOfSamples), static_cast<double>(internals.Sequence),
-      -static_cast<double>(internals.Sequence) };
-    internals.Exchange->Minimum(counts, 4);
-    sameFrame = this->AllProcesses(sameFrame && counts[0] == -counts[1] && counts[2] == -counts[3]);
+    const double counts[2] = { static_cast<double>(this->NumberOfSamples),
+      static_cast<double>(internals.Sequence) };
+    const bool equal = internals.Exchange->AllEqual(counts, 2);
+    sameFrame = this->AllProcesses(sameFrame && equal);
   }
   if (!sameFrame)
   {
@@ -1680,78 +1677,14 @@ void vtkSNDFRenderPass::ExchangeSampleTargets(vtkFrame& frame)
   {
     return;
   }
-  const int w = frame.TexelsX;
-  const int h = frame.TexelsY;
-  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
-  const int components = 4 * static_cast<int>(NumberOfAttachments);
-  internals.ExchangeDepths->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  internals.ExchangePayload->SetNumberOfComponents(components);
-  internals.ExchangePayload->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  float* depths = internals.ExchangeDepths->GetPointer(0);
-  float* payload = internals.ExchangePayload->GetPointer(0);
-  std::vector<unsigned char> colours(4 * n);
-  std::vector<float> values(4 * n);
-  vtkOpenGLState* ostate = frame.Context->GetState();
-  glFinish(); // every draw into the targets finished before they are read (vtkPointAOPass)
-  ostate->PushReadFramebufferBinding();
-  internals.Targets.Framebuffer->Bind(GL_READ_FRAMEBUFFER);
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  std::vector<vtkParticleGBufferExchange::vtkTarget> targets;
   for (unsigned int a = 0; a < NumberOfAttachments; ++a)
   {
-    internals.Targets.Framebuffer->ActivateReadBuffer(a);
-    if (a == 0)
-    {
-      glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, colours.data());
-      for (size_t i = 0; i < n; ++i)
-      {
-        std::copy(colours.begin() + 4 * i, colours.begin() + 4 * i + 4, payload + components * i);
-      }
-    }
-    else
-    {
-      glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, values.data());
-      for (size_t i = 0; i < n; ++i)
-      {
-        std::copy(
-          values.begin() + 4 * i, values.begin() + 4 * i + 4, payload + components * i + 4 * a);
-      }
-    }
+    targets.push_back(
+      { static_cast<int>(a), 4, a == 0, 0.0f, internals.Targets.Attachments[a] });
   }
-  ostate->PopReadFramebufferBinding();
-  internals.Exchange->CompositeNearest(internals.ExchangeDepths, internals.ExchangePayload);
-  auto upload = [&](vtkTextureObject* texture, GLenum format, GLenum type, const void* data)
-  {
-    texture->Activate(); // (its own texture unit, bound)
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, format, type, data);
-    texture->Deactivate();
-  };
-  for (unsigned int a = 0; a < NumberOfAttachments; ++a)
-  {
-    for (size_t i = 0; i < n; ++i)
-    {
-      const float* p = payload + components * i + 4 * a;
-      if (a == 0)
-      {
-        for (int c = 0; c < 4; ++c)
-        {
-          colours[4 * i + c] = static_cast<unsigned char>(std::lround(p[c]));
-        }
-      }
-      else
-      {
-        std::copy(p, p + 4, values.begin() + 4 * i);
-      }
-    }
-    if (a == 0)
-    {
-      upload(internals.Targets.Attachments[a], GL_RGBA, GL_UNSIGNED_BYTE, colours.data());
-    }
-    else
-    {
-      upload(internals.Targets.Attachments[a], GL_RGBA, GL_FLOAT, values.data());
-    }
-  }
-  upload(internals.Targets.Depth, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  internals.Exchange->CompositeFramebuffer(frame.Context, internals.Targets.Framebuffer,
+    frame.TexelsX, frame.TexelsY, targets, internals.Targets.Depth, true);
 }
 
 //------------------------------------------------------------------------------
