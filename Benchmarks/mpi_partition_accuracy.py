@@ -18,7 +18,13 @@ Scene 'mixed' (one view, several representations; issue 42's "one partition per 
 scene with settings surface (its particles translucent, squared density, opacity array, and a
 translucent sphere surface, Opacity 0.4, through the slab), opaque-surface (the particles opaque,
 the same surface), opaque-translucent (the slab atoms and the gas atoms as two Particles
-representations, the slab opaque, the gas translucent), two-translucent (both translucent).
+representations, the slab opaque, the gas translucent), two-translucent (both translucent, the
+slab at Opacity 0.5, the gas at 0.7), two-same (both translucent with the same settings, Opacity
+0.7), merged (one Particles representation of all the atoms with those settings: the exact
+reference of two-same, which the comparison also gets; mpi_partition_accuracy_compare.py),
+two-opaque-dvao / two-opaque-vcao (both opaque, with Density Volume / Voxel Cone Tracing AO:
+the AO volume of several Particles representations) and merged-opaque-dvao / -vcao (one
+representation of all the atoms, their exact reference).
 
 This pvbatch script renders one rank count; Benchmarks/run_mpi_partition_accuracy.sh runs
 np 1, 2, 3 and compares (mpi_partition_accuracy_compare.py).
@@ -57,7 +63,10 @@ CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:A
          "deep:opaque-sndf:Automatic",
          "gas:speed-squared-rotated:Automatic", "deep:speed-squared-rotated:Automatic",
          "mixed:surface:Automatic", "mixed:opaque-surface:Automatic",
-         "mixed:opaque-translucent:Automatic", "mixed:two-translucent:Automatic"]
+         "mixed:opaque-translucent:Automatic", "mixed:two-translucent:Automatic",
+         "mixed:two-same:Automatic", "mixed:merged:Automatic",
+         "mixed:two-opaque-dvao:Automatic", "mixed:merged-opaque-dvao:Automatic",
+         "mixed:two-opaque-vcao:Automatic", "mixed:merged-opaque-vcao:Automatic"]
 
 
 def split_source(path):
@@ -92,9 +101,16 @@ def show_mixed(settings, path, view):
         surface.Opacity = 0.4
         opacity = 1.0 if settings.startswith("opaque") else 0.7
         return [particles(source, opacity), surface, sphere, source]
+    view.ParticleAmbientOcclusion = ("Density Volume" if "dvao" in settings else
+                                     "Voxel Cone Tracing" if "vcao" in settings else "None")
+    if settings.startswith("merged"):
+        source = split_source(path)
+        return [particles(source, 1.0 if "opaque" in settings else 0.7), source]
     slab = split_source(path[:-len(".vtp")] + "_type1.vtp")
     gas = split_source(path[:-len(".vtp")] + "_type2.vtp")
-    opacity = 1.0 if settings.startswith("opaque") else 0.5
+    opacity = {"opaque-translucent": 1.0, "two-same": 0.7}.get(settings, 0.5)
+    if settings.startswith("two-opaque"):  # both opaque, with ambient occlusion
+        return [particles(slab, 1.0), particles(gas, 1.0), slab, gas]
     return [particles(slab, opacity), particles(gas, 0.7), slab, gas]
 
 

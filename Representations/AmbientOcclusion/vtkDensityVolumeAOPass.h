@@ -62,12 +62,12 @@ public:
 
   ///@{
   /**
-   * Distributed rendering: a density volume of a prop's spheres together with those of every
-   * other process (vtkParticleRepresentation builds it over the global bounds and sums it over
-   * the processes in the pipeline), carried in the prop's property keys under
-   * DISTRIBUTED_VOLUME(). With exactly one particle prop that carries one, the pass uses it
-   * instead of voxelising the particles this process holds, so that occlusion does not stop at
-   * the processes' boundaries. nullptr (the default) removes it: the pass voxelises.
+   * Distributed rendering: a density volume of the particle props' spheres together with those
+   * of every other process (ParaView's Particle Render View builds it over the global bounds and
+   * sums it over the processes, vtkParticleDistributedVolumes), carried in the props' property
+   * keys under DISTRIBUTED_VOLUME(). When every particle prop carries the same one, the pass uses
+   * it instead of voxelising the particles this process holds, so that occlusion does not stop
+   * at the processes' boundaries. nullptr (the default) removes it: the pass voxelises.
    */
   static vtkInformationObjectBaseKey* DISTRIBUTED_VOLUME();
   static void SetDistributedVolume(vtkProp* prop, vtkParticleDensityVolume* volume);

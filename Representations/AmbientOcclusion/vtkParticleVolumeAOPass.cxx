@@ -60,7 +60,14 @@ vtkObject* vtkParticleVolumeAOPass::FindDistributedVolume(
   const ParticleProps& props, vtkInformationObjectBaseKey* key, std::vector<double>& state)
 {
   vtkObject* distributed =
-    props.size() == 1 ? vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key) : nullptr;
+    props.empty() ? nullptr : vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key);
+  for (const auto& prop : props)
+  {
+    if (vtkParticleVolumeAOPass::GetPropVolume(prop.first, key) != distributed)
+    {
+      distributed = nullptr; // not one volume of all the props
+    }
+  }
   state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
   state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
   return distributed;
@@ -80,7 +87,15 @@ bool vtkParticleVolumeAOPass::CheckParticleProps(const ParticleProps& props,
     }
     return false;
   }
-  if (props.size() > 1 && vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key))
+  bool some = false;
+  bool shared = true;
+  for (const auto& prop : props)
+  {
+    vtkObject* volume = vtkParticleVolumeAOPass::GetPropVolume(prop.first, key);
+    some = some || volume;
+    shared = shared && volume == vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key);
+  }
+  if (some && !shared)
   {
     vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
                     << volumeName << " holds only its own particles.");

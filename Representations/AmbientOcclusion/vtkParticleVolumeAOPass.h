@@ -122,17 +122,18 @@ protected:
   void ForgetBuild() { this->Attempted = false; }
 
   /**
-   * Distributed rendering: the volume of all processes' particles that the only particle prop
-   * carries under `key` (nullptr without one, or with several props), its address and
-   * modification time appended to `state`.
+   * Distributed rendering: the volume of all processes' particles that every particle prop
+   * carries under `key` (one volume of all of them; nullptr when a prop carries none or they
+   * carry different ones), its address and modification time appended to `state`.
    */
   vtkObject* FindDistributedVolume(
     const ParticleProps& props, vtkInformationObjectBaseKey* key, std::vector<double>& state);
 
   /**
    * False, with a warning (WarnWithoutParticles) ending in `without`, when there is no particle
-   * prop; with several props of which the first carries a volume under `key`, warns that each
-   * process's `volumeName` holds only its own particles.
+   * prop; when some props carry a volume under `key` but not all the same one (several particle
+   * props of which not all carry the view's volume), warns that each process's `volumeName`
+   * holds only its own particles.
    */
   bool CheckParticleProps(const ParticleProps& props, vtkInformationObjectBaseKey* key,
     const char* without, const char* volumeName);

@@ -73,9 +73,10 @@ public:
   ///@{
   /**
    * Distributed rendering: an ambient volume whose level 0 holds the spheres of every process
-   * (summed by vtkParticleRepresentation), carried in a prop's property keys under
-   * DISTRIBUTED_VOLUME(). With exactly one particle prop that carries one, the pass builds its
-   * mips from it instead of voxelising the local particles. nullptr (the default) removes it.
+   * and every particle prop (summed by ParaView's Particle Render View,
+   * vtkParticleDistributedVolumes), carried in the props' property keys under
+   * DISTRIBUTED_VOLUME(). When every particle prop carries the same one, the pass builds its mips
+   * from it instead of voxelising the local particles. nullptr (the default) removes it.
    */
   static vtkInformationObjectBaseKey* DISTRIBUTED_VOLUME();
   static void SetDistributedVolume(vtkProp* prop, vtkParticleAmbientVolume* volume);

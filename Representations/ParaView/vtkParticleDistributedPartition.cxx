@@ -37,16 +37,70 @@ void vtkParticleDistributedPartition::Update(vtkPolyData* particles, vtkDataObje
   bool needed, const std::string& radiusArray, double radius, double radiusScale, double reach,
   const double sphereBounds[6])
 {
-  this->Partitioned = this->PartitionParticles(
-    particles, input, needed, radiusArray, radius, radiusScale, reach, sphereBounds);
-  this->UpdateColumnLayers(particles, radiusArray, radius, sphereBounds);
+  this->Particles = particles;
+  this->Needed = needed;
+  this->RadiusArray = radiusArray;
+  this->Radius = radius;
+  this->RadiusScale = radiusScale;
+  this->Reach = reach;
+  std::copy(sphereBounds, sphereBounds + 6, this->SphereBounds);
+  std::ostringstream key;
+  key.precision(17);
+  key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
+      << ";" << radius << ";" << radiusScale << ";" << reach;
+  this->InputKey = key.str();
+  if (!this->PartitionedByView)
+  {
+    this->PartitionAlone();
+  }
+  this->UpdateColumnLayers();
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleDistributedPartition::PartitionParticles(vtkPolyData* particles,
-  vtkDataObject* input, bool needed, const std::string& radiusArray, double radius,
-  double radiusScale, double reach, const double sphereBounds[6])
+void vtkParticleDistributedPartition::PartitionAlone()
 {
+  this->Partitioned = this->PartitionParticles();
+  this->MarkProp();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDistributedPartition::PartitionTogether(
+  const std::vector<vtkParticleDistributedPartition*>& partitions)
+{
+  std::vector<vtkParticlePartition*> parts;
+  std::vector<vtkParticlePartition::vtkParticleSet> sets;
+  for (vtkParticleDistributedPartition* p : partitions)
+  {
+    parts.push_back(p->Partition);
+    sets.push_back({ p->Particles, p->RadiusArray.empty() ? nullptr : p->RadiusArray.c_str(),
+      p->Radius, p->RadiusScale, p->Reach, p->SphereBounds });
+  }
+  const bool partitioned = vtkParticlePartition::PartitionTogether(parts, sets);
+  for (vtkParticleDistributedPartition* p : partitions)
+  {
+    p->Partitioned = partitioned;
+    // (on its own again, it partitions anew)
+    p->PartitionKey.clear();
+    const std::vector<double>& distribution = p->Partition->GetDistribution();
+    p->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
+    std::copy(distribution.begin(), distribution.end(), p->Distribution->GetPointer(0));
+    p->MarkProp();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDistributedPartition::TakeRedelivery()
+{
+  const bool redelivery = this->Redelivery;
+  this->Redelivery = false;
+  return redelivery;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleDistributedPartition::PartitionParticles()
+{
+  vtkPolyData* particles = this->Particles;
+  const bool needed = this->Needed;
   auto controller = vtkMultiProcessController::GetGlobalController();
   const int size = controller ? controller->GetNumberOfProcesses() : 1;
   const vtkIdType localCount = particles ? particles->GetNumberOfPoints() : 0;
@@ -57,11 +111,7 @@ bool vtkParticleDistributedPartition::PartitionParticles(vtkPolyData* particles,
     std::copy(values, values + 5, this->Distribution->GetPointer(0));
     return false;
   }
-  std::ostringstream key;
-  key.precision(17);
-  key << needed << ";" << input << ";" << (input ? input->GetMTime() : 0) << ";" << radiusArray
-      << ";" << radius << ";" << radiusScale << ";" << reach;
-  if (!vtkParticleProcessReduction::StaleOnAnyProcess(key.str(), this->PartitionKey))
+  if (!vtkParticleProcessReduction::StaleOnAnyProcess(this->InputKey, this->PartitionKey))
   {
     return needed && this->Partitioned;
   }
@@ -74,7 +124,8 @@ bool vtkParticleDistributedPartition::PartitionParticles(vtkPolyData* particles,
     return false;
   }
   const bool partitioned = this->Partition->Partition(particles,
-    radiusArray.empty() ? nullptr : radiusArray.c_str(), radius, radiusScale, reach, sphereBounds);
+    this->RadiusArray.empty() ? nullptr : this->RadiusArray.c_str(), this->Radius,
+    this->RadiusScale, this->Reach, this->SphereBounds);
   const std::vector<double>& distribution = this->Partition->GetDistribution();
   this->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
   std::copy(distribution.begin(), distribution.end(), this->Distribution->GetPointer(0));
@@ -82,9 +133,12 @@ bool vtkParticleDistributedPartition::PartitionParticles(vtkPolyData* particles,
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleDistributedPartition::UpdateColumnLayers(vtkPolyData* particles,
-  const std::string& radiusArray, double radius, const double sphereBounds[6])
+void vtkParticleDistributedPartition::UpdateColumnLayers()
 {
+  vtkPolyData* particles = this->Particles;
+  const std::string& radiusArray = this->RadiusArray;
+  const double radius = this->Radius;
+  const double* sphereBounds = this->SphereBounds;
   auto controller = vtkMultiProcessController::GetGlobalController();
   if (!controller || controller->GetNumberOfProcesses() <= 1)
   {
@@ -143,14 +197,31 @@ vtkPolyData* vtkParticleDistributedPartition::PieceToDeliver(
 vtkInformationKeyMacro(vtkParticleDistributedPartition, BOXES, DoubleVector);
 
 //------------------------------------------------------------------------------
-void vtkParticleDistributedPartition::MarkProp(vtkProp* prop, bool shown)
+void vtkParticleDistributedPartition::SetProp(vtkProp* prop)
 {
-  if (!prop)
+  this->Prop = prop;
+  this->MarkProp();
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDistributedPartition::SetPropShown(bool shown)
+{
+  if (shown != this->PropShown)
+  {
+    this->PropShown = shown;
+    this->MarkProp();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDistributedPartition::MarkProp()
+{
+  if (!this->Prop)
   {
     return;
   }
-  const std::vector<double> boxes = shown ? this->GetBoxes() : std::vector<double>();
-  vtkInformation* keys = prop->GetPropertyKeys();
+  const std::vector<double> boxes = this->PropShown ? this->GetBoxes() : std::vector<double>();
+  vtkInformation* keys = this->Prop->GetPropertyKeys();
   if (boxes.empty())
   {
     if (keys && keys->Has(BOXES()))
@@ -162,7 +233,7 @@ void vtkParticleDistributedPartition::MarkProp(vtkProp* prop, bool shown)
   if (!keys)
   {
     vtkNew<vtkInformation> created;
-    prop->SetPropertyKeys(created);
+    this->Prop->SetPropertyKeys(created);
     keys = created;
   }
   keys->Set(BOXES(), boxes.data(), static_cast<int>(boxes.size()));
@@ -229,6 +300,7 @@ void vtkParticleDistributedPartition::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Partitioned: " << this->Partitioned << "\n";
+  os << indent << "PartitionedByView: " << this->PartitionedByView << "\n";
   os << indent << "ColumnLayers: " << this->ColumnLayers << "\n";
   os << indent << "Partition:\n";
   this->Partition->PrintSelf(os, indent.GetNextIndent());

@@ -12,6 +12,10 @@
  *   per process, ghost copies of the spheres reaching into other boxes), again only when the
  *   data, the radius array, the radii or the reach changed on some process. Otherwise the data
  *   stays where it is.
+ * - Partition by the view (vtkParticleViewPartition): while the view composites in order, it
+ *   partitions all its Particles representations into one set of boxes (PartitionTogether, after
+ *   the representations' RequestData; opaque ones too). Update then only records what it was
+ *   given, and the representation delivers its piece again (TakeRedelivery).
  * - Distribution: 5 values per process (see vtkParticlePartition::GetDistribution); without a
  *   partition every process owns its piece.
  * - Column layers: the column-opacity layer estimate of all processes' particles (what
@@ -63,6 +67,49 @@ public:
     const std::string& radiusArray, double radius, double radiusScale, double reach,
     const double sphereBounds[6]);
 
+  ///@{
+  /**
+   * The view partitions these particles together with its other Particles representations
+   * (vtkParticleViewPartition): Update records its arguments and the column layers only.
+   */
+  vtkSetMacro(PartitionedByView, bool);
+  vtkGetMacro(PartitionedByView, bool);
+  ///@}
+
+  /**
+   * What the last Update was given (the input and its time, the radius settings, the reach,
+   * whether the technique needs the partition), as text: the view's key for a new partition.
+   */
+  const std::string& GetInputKey() const { return this->InputKey; }
+
+  /**
+   * Partition the particles of the last Update as Update does on its own (collective): when the
+   * view stops partitioning them.
+   */
+  void PartitionAlone();
+
+#if !defined(__VTK_WRAP__)
+  /**
+   * Partition the particles of every partition's last Update into one set of boxes
+   * (vtkParticlePartition::PartitionTogether; collective, the same partitions in the same order
+   * on every process). Each then delivers its part with the common boxes, opaque ones included.
+   */
+  static void PartitionTogether(const std::vector<vtkParticleDistributedPartition*>& partitions);
+#endif
+
+  ///@{
+  /**
+   * Set by the view when the partition changed after the representation delivered its piece;
+   * TakeRedelivery returns it once and clears it (the representation's RequestData then only
+   * delivers again).
+   */
+  void SetRedelivery(bool on)
+  {
+    this->Redelivery = on;
+  }
+  bool TakeRedelivery();
+  ///@}
+
   /**
    * Whether the partition's output and box are in use (after Update).
    */
@@ -91,13 +138,17 @@ public:
    */
   std::vector<double> GetBoxes();
 
+  ///@{
   /**
-   * Puts the boxes (GetBoxes) on `prop` under BOXES() in its property keys, for the view's
-   * compositing order (vtkParticleRenderView); removes them when not partitioned or `shown` is
-   * false.
+   * The prop that carries the boxes (GetBoxes) under BOXES() in its property keys, for the
+   * view's compositing order (vtkParticleRenderView), while it is shown and partitioned; they
+   * are set or removed whenever the partition or `shown` changes. Not referenced: the
+   * representation owns both.
    */
-  void MarkProp(vtkProp* prop, bool shown);
+  void SetProp(vtkProp* prop);
+  void SetPropShown(bool shown);
   static vtkInformationDoubleVectorKey* BOXES();
+  ///@}
 
   /**
    * The particles to draw of the `delivered` piece and the box to clip them to (`clipBox`
@@ -117,12 +168,26 @@ protected:
   vtkParticleDistributedPartition();
   ~vtkParticleDistributedPartition() override;
 
-  // partition when needed; true when the partition's output and box are in use
-  bool PartitionParticles(vtkPolyData* particles, vtkDataObject* input, bool needed,
-    const std::string& radiusArray, double radius, double radiusScale, double reach,
-    const double sphereBounds[6]);
-  void UpdateColumnLayers(vtkPolyData* particles, const std::string& radiusArray, double radius,
-    const double sphereBounds[6]);
+  // partition the recorded particles when needed; true when the partition's output and box are
+  // in use
+  bool PartitionParticles();
+  void UpdateColumnLayers();
+  void MarkProp();
+
+  // what the last Update was given
+  vtkSmartPointer<vtkPolyData> Particles;
+  bool Needed = false;
+  std::string RadiusArray;
+  double Radius = 1.0;
+  double RadiusScale = 1.0;
+  double Reach = 1.0;
+  double SphereBounds[6] = { 0, -1, 0, -1, 0, -1 };
+  std::string InputKey;
+
+  bool PartitionedByView = false;
+  bool Redelivery = false;
+  vtkProp* Prop = nullptr;
+  bool PropShown = false;
 
   vtkNew<vtkParticlePartition> Partition;
   vtkNew<vtkDoubleArray> Distribution;

@@ -239,19 +239,58 @@ struct vtkParticlePartition::vtkRun
 bool vtkParticlePartition::Partition(vtkPolyData* particles, const char* radiusArray, double radius,
   double radiusScale, double reach, const double sphereBounds[6])
 {
+  const vtkParticleSet set = { particles, radiusArray, radius, radiusScale, reach, sphereBounds };
+  return vtkParticlePartition::PartitionTogether({ this }, { set });
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticlePartition::PartitionTogether(
+  const std::vector<vtkParticlePartition*>& partitions, const std::vector<vtkParticleSet>& sets)
+{
+  if (partitions.empty() || partitions.size() != sets.size())
+  {
+    return false;
+  }
   const double start = vtkTimerLog::GetUniversalTime();
-  vtkRun run;
-  this->BeginRun(run, particles, radiusArray);
-  this->FindRootBox(run, sphereBounds);
-  if (!this->SplitIntoBoxes(run))
+  // one tree for all sets: the root box over all their spheres, the splits over all their centres
+  std::vector<vtkRun> runs(partitions.size());
+  vtkBoundingBox bounds;
+  for (size_t i = 0; i < partitions.size(); ++i)
+  {
+    partitions[i]->BeginRun(runs[i], sets[i].Particles, sets[i].RadiusArray);
+    if (sets[i].SphereBounds && vtkMath::AreBoundsInitialized(sets[i].SphereBounds))
+    {
+      bounds.AddBounds(sets[i].SphereBounds);
+    }
+  }
+  double sphereBounds[6];
+  vtkMath::UninitializeBounds(sphereBounds);
+  if (bounds.IsValid())
+  {
+    bounds.GetBounds(sphereBounds);
+  }
+  vtkParticlePartition* first = partitions[0];
+  first->FindRootBox(runs[0], sphereBounds);
+  const bool split = first->SplitIntoBoxes(runs);
+  for (size_t i = 1; i < partitions.size(); ++i)
+  {
+    std::copy(runs[0].Root, runs[0].Root + 6, runs[i].Root);
+    runs[i].Nodes = runs[0].Nodes;
+    partitions[i]->Boxes = first->Boxes;
+  }
+  if (!split)
   {
     return false; // no process has a particle
   }
-  this->AgreeOnArrays(run);
-  this->AssignParticles(run, radius, radiusScale, reach);
-  this->ExchangeParticles(run);
-  this->AssembleOutput(run);
-  this->GatherDistribution(run, start);
+  for (size_t i = 0; i < partitions.size(); ++i)
+  {
+    vtkParticlePartition* partition = partitions[i];
+    partition->AgreeOnArrays(runs[i]);
+    partition->AssignParticles(runs[i], sets[i].Radius, sets[i].RadiusScale, sets[i].Reach);
+    partition->ExchangeParticles(runs[i]);
+    partition->AssembleOutput(runs[i]);
+    partition->GatherDistribution(runs[i], start);
+  }
   return true;
 }
 
@@ -323,39 +362,50 @@ void vtkParticlePartition::FindRootBox(vtkRun& run, const double sphereBounds[6]
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticlePartition::SplitIntoBoxes(vtkRun& run)
+bool vtkParticlePartition::SplitIntoBoxes(std::vector<vtkRun>& runs)
 {
+  vtkRun& run = runs[0];
   vtkMultiProcessController* controller = run.Controller;
   const int size = run.Size;
-  const vtkIdType localCount = run.LocalCount;
-  vtkDataArray* points = run.Points;
-  vtkUnsignedCharArray* upstreamGhosts = run.UpstreamGhosts;
   double(&root)[6] = run.Root;
-  std::vector<vtkIdType>& finite = run.Finite;
   std::vector<KdNode>& nodes = run.Nodes;
-  // the samples of the splits: finite centres, strided, weighted by the local count
-  finite.reserve(localCount);
-  for (vtkIdType i = 0; i < localCount; ++i)
+  // the samples of the splits: finite centres of all sets, strided over their concatenation,
+  // weighted by the local count
+  vtkIdType finiteTotal = 0;
+  for (vtkRun& r : runs)
   {
-    if (upstreamGhosts && (upstreamGhosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT))
+    r.Finite.reserve(r.LocalCount);
+    for (vtkIdType i = 0; i < r.LocalCount; ++i)
     {
-      continue;
+      if (r.UpstreamGhosts &&
+        (r.UpstreamGhosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT))
+      {
+        continue;
+      }
+      double x[3];
+      r.Points->GetTuple(i, x);
+      if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+      {
+        r.Finite.push_back(i);
+      }
     }
-    double x[3];
-    points->GetTuple(i, x);
-    if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
-    {
-      finite.push_back(i);
-    }
+    finiteTotal += static_cast<vtkIdType>(r.Finite.size());
   }
   const vtkIdType perProcess = std::max<vtkIdType>(1, this->MaximumSamples / size);
-  const vtkIdType sampleCount = std::min<vtkIdType>(perProcess, finite.size());
+  const vtkIdType sampleCount = std::min<vtkIdType>(perProcess, finiteTotal);
   std::vector<double> localSamples(4 * sampleCount);
+  size_t set = 0;
+  vtkIdType setStart = 0; // the index of runs[set].Finite[0] in the concatenation
   for (vtkIdType s = 0; s < sampleCount; ++s)
   {
-    const vtkIdType i = finite[s * static_cast<vtkIdType>(finite.size()) / sampleCount];
-    points->GetTuple(i, localSamples.data() + 4 * s);
-    localSamples[4 * s + 3] = static_cast<double>(finite.size()) / sampleCount;
+    const vtkIdType k = s * finiteTotal / sampleCount;
+    while (k >= setStart + static_cast<vtkIdType>(runs[set].Finite.size()))
+    {
+      setStart += static_cast<vtkIdType>(runs[set].Finite.size());
+      ++set;
+    }
+    runs[set].Points->GetTuple(runs[set].Finite[k - setStart], localSamples.data() + 4 * s);
+    localSamples[4 * s + 3] = static_cast<double>(finiteTotal) / sampleCount;
   }
   std::vector<vtkIdType> lengths(size, 4 * sampleCount);
   std::vector<double> samples = localSamples;

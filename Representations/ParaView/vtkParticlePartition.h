@@ -76,6 +76,31 @@ public:
   bool Partition(vtkPolyData* particles, const char* radiusArray, double radius, double radiusScale,
     double reach, const double sphereBounds[6]);
 
+#if !defined(__VTK_WRAP__)
+  /**
+   * One set of particles for PartitionTogether: the arguments of Partition().
+   */
+  struct vtkParticleSet
+  {
+    vtkPolyData* Particles;
+    const char* RadiusArray;
+    double Radius;
+    double RadiusScale;
+    double Reach;
+    const double* SphereBounds;
+  };
+
+  /**
+   * Partition several sets of particles (the Particles representations of one view) into one set
+   * of boxes, each set into its partition: the root box is the union of all sets' sphere bounds,
+   * the splits weigh all their centres alike, and each set gets its own ghosts (its own reach).
+   * With one set this is Partition(). Collective; every process passes the same number of sets
+   * in the same order. Returns false when no process has a particle in any set.
+   */
+  static bool PartitionTogether(
+    const std::vector<vtkParticlePartition*>& partitions, const std::vector<vtkParticleSet>& sets);
+#endif
+
   /**
    * The particles of this process after Partition(): owned ones and ghost copies.
    */
@@ -85,14 +110,20 @@ public:
    * This process's box, and every process's (6 doubles each, in process order).
    */
   void GetBox(double box[6]) const;
-  const std::vector<double>& GetBoxes() const { return this->Boxes; }
+  const std::vector<double>& GetBoxes() const
+  {
+    return this->Boxes;
+  }
 
   /**
    * Per process, 5 values: particles given to Partition(), owned and ghost particles after it,
    * bytes sent to other processes, seconds the partition took there (the same on every
    * process).
    */
-  const std::vector<double>& GetDistribution() const { return this->Distribution; }
+  const std::vector<double>& GetDistribution() const
+  {
+    return this->Distribution;
+  }
 
 protected:
   vtkParticlePartition();
@@ -108,12 +139,13 @@ private:
   ///@{
   /**
    * The stages of Partition(), in order, each collective, and what they share. SplitIntoBoxes
-   * returns false when no process has a particle (every box uninitialised).
+   * samples the centres of every run and returns false when no process has a particle (every
+   * box uninitialised).
    */
   struct vtkRun;
   void BeginRun(vtkRun& run, vtkPolyData* particles, const char* radiusArray);
   void FindRootBox(vtkRun& run, const double sphereBounds[6]);
-  bool SplitIntoBoxes(vtkRun& run);
+  bool SplitIntoBoxes(std::vector<vtkRun>& runs);
   void AgreeOnArrays(vtkRun& run);
   void AssignParticles(vtkRun& run, double radius, double radiusScale, double reach);
   void ExchangeParticles(vtkRun& run);

@@ -5,6 +5,7 @@
 #include "vtkBoundingBox.h"
 #include "vtkCameraPass.h"
 #include "vtkCommand.h"
+#include "vtkCommunicator.h"
 #include "vtkDensityVolumeAOPass.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkInformation.h"
@@ -27,6 +28,8 @@
 #include "vtkRenderer.h"
 #include "vtkSNDFRenderPass.h"
 #include "vtkVoxelConeAOPass.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkParticleRenderView);
 
@@ -324,6 +327,41 @@ int vtkParticleRenderView::GetImagesBlendedBeforeIceT()
 }
 
 //------------------------------------------------------------------------------
+vtkParticleViewPartition* vtkParticleRenderView::GetViewPartition()
+{
+  return this->ViewPartition;
+}
+
+//------------------------------------------------------------------------------
+vtkParticleDistributedVolumes* vtkParticleRenderView::GetParticleVolumes()
+{
+  return this->ParticleVolumes;
+}
+
+//------------------------------------------------------------------------------
+int vtkParticleRenderView::GetParticlesPartitionedTogether()
+{
+  return this->ViewPartition->GetShared() ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRenderView::Update()
+{
+  this->Superclass::Update();
+  // the partition is collective over the data processes; whether to update again over all the
+  // view's processes (a client too: the update exchanges messages with it)
+  const vtkTypeUInt64 changed = this->ViewPartition->Update(this->NeedsOrderedCompositing) ? 1 : 0;
+  vtkTypeUInt64 anyChanged = changed;
+  this->AllReduce(changed, anyChanged, vtkCommunicator::MAX_OP);
+  if (anyChanged)
+  {
+    this->ViewPartition->Redeliver();
+    this->Superclass::Update();
+    this->ViewPartition->FinishRedelivery();
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkParticlePassChain* vtkParticleRenderView::GetParticlePassChain()
 {
   return this->ParticlePassChain;
@@ -357,6 +395,7 @@ void vtkParticleRenderView::AboutToRenderOnLocalProcess(bool interactive)
     }
   }
   this->UpdateDistributedCompositing(interactive);
+  this->UpdateDistributedVolumes(interactive);
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
 }
 
@@ -426,17 +465,34 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleRenderView::UpdateDistributedVolumes(bool interactive)
+{
+  // Every process renders this frame (after every representation's REQUEST_RENDER, on every
+  // process): the AO volume of all processes' particles, of all the Particles representations
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool lod = interactive && this->GetUseLODForInteractiveRender();
+  const bool distributed = controller && controller->GetNumberOfProcesses() > 1 &&
+    (lod ? this->GetUseDistributedRenderingForLODRender()
+         : this->GetUseDistributedRenderingForRender());
+  this->ParticleVolumes->Update(distributed,
+    this->AmbientOcclusion == DENSITY_VOLUME ? this->DensityVolumeAOPass.Get() : nullptr,
+    this->AmbientOcclusion == VOXEL_CONE_TRACING ? this->VoxelConeAOPass.Get() : nullptr);
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRenderView::OrderWithTransformedPartition(int processes)
 {
   // ParaView's cuts are the world bounds of the processes' partition boxes. With the particles'
-  // actor turned (or sheared) those bounds overlap and give no visibility order: with one
-  // partitioned Particles representation the order then comes from its boxes in data
-  // coordinates, seen by the camera taken into them.
+  // actor turned (or sheared) those bounds overlap and give no visibility order: when the
+  // partitioned Particles representations share their boxes and their transform, the order then
+  // comes from the boxes in data coordinates, seen by the camera taken into them.
   // (the representation puts its boxes on its actor, vtkParticleDistributedPartition::MarkProp;
   // an actor hidden on a process without particles counts all the same)
   std::vector<double> boxes;
   vtkNew<vtkMatrix4x4> matrix;
+  vtkNew<vtkMatrix4x4> other;
   int partitioned = 0;
+  bool same = true;
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = this->GetRenderer()->GetViewProps();
   props->InitTraversal(it);
@@ -446,14 +502,20 @@ void vtkParticleRenderView::OrderWithTransformedPartition(int processes)
     auto* actor = vtkActor::SafeDownCast(prop);
     if (actor && keys && keys->Has(vtkParticleDistributedPartition::BOXES()))
     {
-      ++partitioned;
       const int n = keys->Length(vtkParticleDistributedPartition::BOXES());
       const double* values = keys->Get(vtkParticleDistributedPartition::BOXES());
+      actor->GetMatrix(partitioned == 0 ? matrix.GetPointer() : other.GetPointer());
+      if (partitioned > 0)
+      {
+        // (representations partitioned together carry the same boxes)
+        same = same && std::equal(boxes.begin(), boxes.end(), values, values + n) &&
+          std::equal(matrix->GetData(), matrix->GetData() + 16, other->GetData());
+      }
       boxes.assign(values, values + n);
-      actor->GetMatrix(matrix);
+      ++partitioned;
     }
   }
-  if (partitioned != 1 || matrix->IsIdentity() ||
+  if (partitioned == 0 || !same || matrix->IsIdentity() ||
     boxes.size() != 6 * static_cast<size_t>(processes))
   {
     return;
@@ -525,6 +587,8 @@ void vtkParticleRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveQuality: " << this->InteractiveQuality << "\n";
   os << indent << "InteractiveFrameBudget: " << this->InteractiveFrameBudget << "\n";
   os << indent << "CompositeBounds visible: " << this->CompositeBounds->GetVisibility() << "\n";
+  os << indent << "ParticlesPartitionedTogether: " << this->GetParticlesPartitionedTogether()
+     << "\n";
   os << indent << "ParticlePassChain:\n";
   this->ParticlePassChain->PrintSelf(os, indent.GetNextIndent());
 }

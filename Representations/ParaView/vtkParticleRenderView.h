@@ -54,6 +54,11 @@
  * controller (vtkPointAOPass::SetController: the ranks' G-buffers are composited while they draw)
  * and shows a vtkParticleBoundsProp with its geometry bounds over all ranks, so that IceT, which
  * skips the draw of a rank whose props lie outside the view, draws on every rank or on none.
+ * Under ordered compositing the view also owns the partition of its Particles representations
+ * (vtkParticleViewPartition, in Update): one set of k-d boxes for all of them, so that ParaView's
+ * cuts do not overlap and opaque particles keep their depth in the colour-only blend. With
+ * density-volume or voxel-cone AO it builds, before each distributed render, one AO volume of all
+ * processes' particles of all its Particles representations (vtkParticleDistributedVolumes).
  *
  * @sa vtkParticlePassChain vtkParticleRepresentation vtkPVRenderViewWithEDL
  */
@@ -63,8 +68,10 @@
 #include "vtkNew.h" // for vtkNew
 #include "vtkPVRenderView.h"
 #include "vtkParticleBoundsProp.h"              // for vtkNew<vtkParticleBoundsProp>
+#include "vtkParticleDistributedVolumes.h"      // for vtkNew<vtkParticleDistributedVolumes>
 #include "vtkParticleOrderedCompositePass.h"    // for vtkNew<vtkParticleOrderedCompositePass>
 #include "vtkParticleRenderingParaViewModule.h" // for export macro
+#include "vtkParticleViewPartition.h"           // for vtkNew<vtkParticleViewPartition>
 #include "vtkSmartPointer.h"                    // for vtkSmartPointer
 
 #include <string> // for std::string
@@ -224,6 +231,33 @@ public:
    */
   int GetImagesBlendedBeforeIceT();
 
+  /**
+   * The view's one partition of its Particles representations under ordered compositing
+   * (vtkParticleViewPartition); the representations add themselves to it.
+   */
+  vtkParticleViewPartition* GetViewPartition();
+
+  /**
+   * The ambient-occlusion volumes of all the view's Particles representations under distributed
+   * rendering (vtkParticleDistributedVolumes): the representations tell it what they draw, the
+   * view builds it before each local render.
+   */
+  vtkParticleDistributedVolumes* GetParticleVolumes();
+
+  /**
+   * 1 when the shown Particles representations share one partition (the last Update), else 0.
+   * For tests (the information property ParticlesPartitionedTogether).
+   */
+  int GetParticlesPartitionedTogether();
+
+  /**
+   * The superclass's update, then the view's partition (vtkParticleViewPartition::Update, which
+   * needs every representation's data and whether the view composites in order); when it
+   * changed a piece on any process, the superclass's update again on all of them (the shown
+   * Particles representations only deliver their pieces again).
+   */
+  void Update() override;
+
 protected:
   vtkParticleRenderView();
   ~vtkParticleRenderView() override;
@@ -258,6 +292,8 @@ protected:
   vtkNew<vtkAlgorithm> PassProgress;
   vtkNew<vtkParticleBoundsProp> CompositeBounds;
   vtkNew<vtkParticleOrderedCompositePass> OrderedComposite;
+  vtkNew<vtkParticleViewPartition> ViewPartition;
+  vtkNew<vtkParticleDistributedVolumes> ParticleVolumes;
 
 private:
   vtkParticleRenderView(const vtkParticleRenderView&) = delete;
@@ -273,8 +309,11 @@ private:
   // the chain). CompositeBounds then gives every process the view's bounds over all of them, so
   // that IceT draws on every process or on none.
   void UpdateDistributedCompositing(bool interactive);
-  // ordered compositing of one partitioned Particles representation whose actor is transformed:
-  // the order from its boxes in data coordinates
+  // the AO volume of all processes' and all Particles representations' particles, when every
+  // process renders (vtkParticleDistributedVolumes)
+  void UpdateDistributedVolumes(bool interactive);
+  // ordered compositing of partitioned Particles representations whose actors carry the same
+  // transform (and the same boxes): the order from those boxes in data coordinates
   void OrderWithTransformedPartition(int processes);
   // takes a pass out of the chain and releases its graphics resources
   void TakeOutOfChain(vtkImageProcessingPass* pass);

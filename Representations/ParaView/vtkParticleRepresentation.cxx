@@ -61,6 +61,9 @@ vtkParticleRepresentation::vtkParticleRepresentation()
     this->OpacityReference = transparent->GetOpacityReference();
   }
   this->Actor->SetMapper(this->Mapper);
+  // (the partition's boxes travel on the actor to the view's compositing order)
+  this->DistributedPartition->SetProp(this->Actor);
+  this->DistributedPartition->SetPropShown(true);
   // Colours come from the lookup table's range (set by ParaView), as for every representation.
   this->Mapper->SetUseLookupTableScalarRange(1);
   this->Mapper->SetScalarVisibility(0);
@@ -355,6 +358,12 @@ int vtkParticleRepresentation::RequestData(
 {
   // No vertex cells: ParaView never redistributes these particles (the representation
   // partitions them itself, see vtkParticleDistributedPartition), and the mapper ignores cells.
+  if (this->DistributedPartition->TakeRedelivery())
+  {
+    // the view partitioned these particles with its other Particles representations after they
+    // were delivered: deliver again, nothing else changed (vtkParticleViewPartition)
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   this->ProcessedData = MakeParticles(input, false);
   // Distributed rendering: translucent spheres are partitioned here, in the pipeline, which
@@ -554,10 +563,13 @@ int vtkParticleRepresentation::ProcessViewRequest(
     double clipBox[6];
     particles = this->DistributedPartition->PieceToDraw(particles, clipBox);
     this->Mapper->SetClipBox(clipBox);
-    this->DistributedPartition->MarkProp(this->Actor, true); // (the view's compositing order)
     this->Mapper->SetInputDataObject(particles);
-    this->DistributedVolumes->Update(inInfo, this->Technique == SPHERES, this->Actor, this->Mapper,
-      this->ProcessedData, this->EffectiveRadiusArray(this->ProcessedData));
+    if (auto particleView = vtkParticleRenderView::SafeDownCast(this->GetView()))
+    {
+      // (the view builds the AO volume of all its Particles representations before the frame)
+      particleView->GetParticleVolumes()->SetSource(this, this->Technique == SPHERES, this->Actor,
+        this->Mapper, this->ProcessedData, this->EffectiveRadiusArray(this->ProcessedData));
+    }
     this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
     // an empty filter output): draw nothing, without the mapper's "no points" warning.
@@ -610,6 +622,10 @@ bool vtkParticleRepresentation::AddToView(vtkView* view)
   {
     rview->GetRenderer()->AddActor(this->Actor);
     rview->RegisterPropForHardwareSelection(this, this->Actor);
+    if (auto particleView = vtkParticleRenderView::SafeDownCast(view))
+    {
+      particleView->GetViewPartition()->AddRepresentation(this, this->DistributedPartition);
+    }
     return this->Superclass::AddToView(view);
   }
   return false;
@@ -622,6 +638,11 @@ bool vtkParticleRepresentation::RemoveFromView(vtkView* view)
   {
     rview->GetRenderer()->RemoveActor(this->Actor);
     rview->UnRegisterPropForHardwareSelection(this, this->Actor);
+    if (auto particleView = vtkParticleRenderView::SafeDownCast(view))
+    {
+      particleView->GetViewPartition()->RemoveRepresentation(this);
+      particleView->GetParticleVolumes()->RemoveSource(this);
+    }
     return this->Superclass::RemoveFromView(view);
   }
   return false;
@@ -632,10 +653,7 @@ void vtkParticleRepresentation::SetVisibility(bool val)
 {
   // an empty local piece stays hidden (see ProcessViewRequest)
   this->Actor->SetVisibility(val && this->HasLocalParticles);
-  if (!val)
-  {
-    this->DistributedPartition->MarkProp(this->Actor, false);
-  }
+  this->DistributedPartition->SetPropShown(val);
   this->Superclass::SetVisibility(val);
 }
 

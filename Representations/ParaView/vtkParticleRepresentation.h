@@ -24,12 +24,18 @@
  * breaks in VTK 9.2), and the mapper clips its drawing to the box
  * (vtkParticleSphereMapper::SetClipBox), so the processes' images composite to the single-process
  * picture. The column-opacity layer estimate is taken over all processes. With the Particle Render
- * View's density-volume or voxel-cone AO, REQUEST_RENDER (when every process renders) builds the AO
- * volume of all processes' particles and puts it on the actor (vtkParticleDistributedVolumes).
- * Opaque spheres stay where they are. Every process (one included) gives the mapper the bounds of
- * all processes' centres (vtkParticleSphereMapper::SetPositionBounds), so that the positions
- * round to float as in one process. Metaballs are opaque: Opacity and the opacity array apply to
- * spheres only (the actor's opacity is 1 for metaballs, with a warning).
+ * View's density-volume or voxel-cone AO, REQUEST_RENDER tells the view what the representation
+ * draws, and the view (when every process renders) builds the AO volume of all processes'
+ * particles of all its Particles representations and puts it on their actors
+ * (vtkParticleDistributedVolumes).
+ * Opaque spheres stay where they are, but in a Particle Render View that composites in order
+ * (some representation is translucent) the view partitions all its Particles representations,
+ * opaque ones too, into one set of boxes (vtkParticleViewPartition; the representation adds
+ * itself in AddToView) and they deliver again (RequestData then only delivers). Every process (one
+ * included) gives the mapper the bounds of all processes' centres
+ * (vtkParticleSphereMapper::SetPositionBounds), so that the positions round to float as in one
+ * process. Metaballs are opaque: Opacity and the opacity array apply to spheres only (the actor's
+ * opacity is 1 for metaballs, with a warning).
  *
  * View protocol (like vtkPointGaussianRepresentation): REQUEST_UPDATE hands the particle
  * polydata to the view (vtkPVView::SetPiece), reports the bounds of the spheres (the points'
@@ -66,7 +72,6 @@ class vtkDataArray;
 class vtkDataObject;
 class vtkDoubleArray;
 class vtkParticleDistributedPartition;
-class vtkParticleDistributedVolumes;
 class vtkParticleSphereMapper;
 class vtkTransparentSphereMapper;
 class vtkPolyData;
@@ -293,7 +298,6 @@ protected:
   // of all processes (RequestData), the pieces to deliver and draw
   vtkNew<vtkParticleDistributedPartition> DistributedPartition;
   // the AO volumes of all processes' particles (distributed rendering, REQUEST_RENDER)
-  vtkNew<vtkParticleDistributedVolumes> DistributedVolumes;
   void UpdateMapperRadiusArray();
   // The radius array the mode selects for these particles ("" = the constant radius).
   std::string EffectiveRadiusArray(vtkPolyData* particles) const;
