@@ -89,8 +89,8 @@ def plot(rows, path):
     ax.set_xscale("log")
     ax.set_yticks([i + 0.4 - width / 2 for i in range(len(cases))])
     ax.set_yticklabels(cases, fontsize=8)
-    ax.set_xlabel("pixels over 2/255 against the single-process picture (of %d; 0 drawn at 0.5)"
-                  % rows[0]["pixels"])
+    ax.set_xlabel("pixels over 2/255 against the single-process picture ('A vs B': against B's; "
+                  "of %d; 0 drawn at 0.5)" % rows[0]["pixels"])
     ax.set_title("Distributed rendering vs one process (Benchmarks/run_mpi_partition_accuracy.sh)")
     ax.legend(fontsize=8)
     fig.tight_layout()
