@@ -209,8 +209,8 @@ bool vtkParticleGBufferExchange::CompositeFramebuffer(vtkOpenGLRenderWindow* con
     }
     for (size_t i = 0; i < n; ++i)
     {
-      std::copy(values.begin() + c * i, values.begin() + c * (i + 1),
-        payload + components * i + offset);
+      std::copy(
+        values.begin() + c * i, values.begin() + c * (i + 1), payload + components * i + offset);
     }
     offset += target.Components;
   }

@@ -28,9 +28,9 @@
 #ifndef vtkParticleGBufferExchange_h
 #define vtkParticleGBufferExchange_h
 
+#include "vtkNew.h" // for vtkNew
 #include "vtkObject.h"
 #include "vtkParticleRenderingCoreModule.h" // for export macro
-#include "vtkNew.h"                         // for vtkNew
 #include "vtkSmartPointer.h"                // for vtkSmartPointer
 
 #include <vector> // for std::vector
@@ -115,9 +115,9 @@ public:
    * `depthResult` (a depth texture, or with depthTexture false a one-component float texture)
    * and each target to its Result. Collective; false, changing nothing, for a bad size.
    */
-  bool CompositeFramebuffer(vtkOpenGLRenderWindow* context,
-    vtkOpenGLFramebufferObject* framebuffer, int width, int height,
-    const std::vector<vtkTarget>& targets, vtkTextureObject* depthResult, bool depthTexture);
+  bool CompositeFramebuffer(vtkOpenGLRenderWindow* context, vtkOpenGLFramebufferObject* framebuffer,
+    int width, int height, const std::vector<vtkTarget>& targets, vtkTextureObject* depthResult,
+    bool depthTexture);
 #endif
 
 protected:

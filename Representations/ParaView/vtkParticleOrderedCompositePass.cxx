@@ -6,12 +6,12 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkParticleGBufferExchange.h"
 #include "vtkOpenGLError.h" // the OpenGL loader of this VTK
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOrderedCompositingHelper.h"
+#include "vtkParticleGBufferExchange.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"

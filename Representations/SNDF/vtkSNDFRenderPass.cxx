@@ -1680,8 +1680,7 @@ void vtkSNDFRenderPass::ExchangeSampleTargets(vtkFrame& frame)
   std::vector<vtkParticleGBufferExchange::vtkTarget> targets;
   for (unsigned int a = 0; a < NumberOfAttachments; ++a)
   {
-    targets.push_back(
-      { static_cast<int>(a), 4, a == 0, 0.0f, internals.Targets.Attachments[a] });
+    targets.push_back({ static_cast<int>(a), 4, a == 0, 0.0f, internals.Targets.Attachments[a] });
   }
   internals.Exchange->CompositeFramebuffer(frame.Context, internals.Targets.Framebuffer,
     frame.TexelsX, frame.TexelsY, targets, internals.Targets.Depth, true);
