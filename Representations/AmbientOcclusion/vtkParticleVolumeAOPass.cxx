@@ -59,18 +59,33 @@ void vtkParticleVolumeAOPass::GatherParticleProps(
 vtkObject* vtkParticleVolumeAOPass::FindDistributedVolume(
   const ParticleProps& props, vtkInformationObjectBaseKey* key, std::vector<double>& state)
 {
-  vtkObject* distributed =
-    props.empty() ? nullptr : vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key);
-  for (const auto& prop : props)
-  {
-    if (vtkParticleVolumeAOPass::GetPropVolume(prop.first, key) != distributed)
-    {
-      distributed = nullptr; // not one volume of all the props
-    }
-  }
+  vtkObject* distributed = vtkParticleVolumeAOPass::SharedPropVolume(props, key, nullptr);
   state.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(distributed)));
   state.push_back(distributed ? static_cast<double>(distributed->GetMTime()) : 0.0);
   return distributed;
+}
+
+//------------------------------------------------------------------------------
+vtkObject* vtkParticleVolumeAOPass::SharedPropVolume(
+  const ParticleProps& props, vtkInformationObjectBaseKey* key, bool* some)
+{
+  vtkObject* shared =
+    props.empty() ? nullptr : vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key);
+  bool any = false;
+  for (const auto& prop : props)
+  {
+    vtkObject* volume = vtkParticleVolumeAOPass::GetPropVolume(prop.first, key);
+    any = any || volume != nullptr;
+    if (volume != shared)
+    {
+      shared = nullptr; // not one volume of all the props
+    }
+  }
+  if (some)
+  {
+    *some = any;
+  }
+  return shared;
 }
 
 //------------------------------------------------------------------------------
@@ -88,14 +103,7 @@ bool vtkParticleVolumeAOPass::CheckParticleProps(const ParticleProps& props,
     return false;
   }
   bool some = false;
-  bool shared = true;
-  for (const auto& prop : props)
-  {
-    vtkObject* volume = vtkParticleVolumeAOPass::GetPropVolume(prop.first, key);
-    some = some || volume;
-    shared = shared && volume == vtkParticleVolumeAOPass::GetPropVolume(props.front().first, key);
-  }
-  if (some && !shared)
+  if (!vtkParticleVolumeAOPass::SharedPropVolume(props, key, &some) && some)
   {
     vtkWarningMacro(<< "Several particle props under distributed rendering: each process's "
                     << volumeName << " holds only its own particles.");

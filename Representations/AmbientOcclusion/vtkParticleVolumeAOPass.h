@@ -130,6 +130,13 @@ protected:
     const ParticleProps& props, vtkInformationObjectBaseKey* key, std::vector<double>& state);
 
   /**
+   * The volume that every prop of `props` carries under `key` (nullptr when they carry different
+   * ones or some carry none); `some` (may be null): whether any of them carries one.
+   */
+  static vtkObject* SharedPropVolume(
+    const ParticleProps& props, vtkInformationObjectBaseKey* key, bool* some);
+
+  /**
    * False, with a warning (WarnWithoutParticles) ending in `without`, when there is no particle
    * prop; when some props carry a volume under `key` but not all the same one (several particle
    * props of which not all carry the view's volume), warns that each process's `volumeName`

@@ -81,11 +81,17 @@ void vtkParticleDistributedPartition::PartitionTogether(
     p->Partitioned = partitioned;
     // (on its own again, it partitions anew)
     p->PartitionKey.clear();
-    const std::vector<double>& distribution = p->Partition->GetDistribution();
-    p->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
-    std::copy(distribution.begin(), distribution.end(), p->Distribution->GetPointer(0));
+    p->CopyDistribution();
     p->MarkProp();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleDistributedPartition::CopyDistribution()
+{
+  const std::vector<double>& distribution = this->Partition->GetDistribution();
+  this->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
+  std::copy(distribution.begin(), distribution.end(), this->Distribution->GetPointer(0));
 }
 
 //------------------------------------------------------------------------------
@@ -126,9 +132,7 @@ bool vtkParticleDistributedPartition::PartitionParticles()
   const bool partitioned = this->Partition->Partition(particles,
     this->RadiusArray.empty() ? nullptr : this->RadiusArray.c_str(), this->Radius,
     this->RadiusScale, this->Reach, this->SphereBounds);
-  const std::vector<double>& distribution = this->Partition->GetDistribution();
-  this->Distribution->SetNumberOfValues(static_cast<vtkIdType>(distribution.size()));
-  std::copy(distribution.begin(), distribution.end(), this->Distribution->GetPointer(0));
+  this->CopyDistribution();
   return partitioned;
 }
 

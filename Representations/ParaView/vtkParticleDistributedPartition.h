@@ -173,6 +173,8 @@ protected:
   bool PartitionParticles();
   void UpdateColumnLayers();
   void MarkProp();
+  // the partition's statistics into Distribution
+  void CopyDistribution();
 
   // what the last Update was given
   vtkSmartPointer<vtkPolyData> Particles;

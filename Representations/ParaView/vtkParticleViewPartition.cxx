@@ -71,7 +71,7 @@ bool vtkParticleViewPartition::Update(bool orderedCompositing)
   {
     return false;
   }
-  std::vector<vtkParticleDistributedPartition*> changed;
+  bool changed = false;
   this->Shared = ordered && !shown.empty();
   if (this->Shared)
   {
@@ -80,7 +80,7 @@ bool vtkParticleViewPartition::Update(bool orderedCompositing)
       partition->SetPartitionedByView(true);
     }
     vtkParticleDistributedPartition::PartitionTogether(shown);
-    changed = shown;
+    changed = true;
   }
   else
   {
@@ -90,11 +90,11 @@ bool vtkParticleViewPartition::Update(bool orderedCompositing)
       {
         partition->SetPartitionedByView(false);
         partition->PartitionAlone();
-        changed.push_back(partition);
+        changed = true;
       }
     }
   }
-  return !changed.empty();
+  return changed;
 }
 
 //------------------------------------------------------------------------------
