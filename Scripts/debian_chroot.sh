@@ -57,6 +57,20 @@ if [ ! -e "$dir/.particlerendering-ready" ]; then
 fi
 cp /etc/resolv.conf "$dir/etc/resolv.conf" 2>/dev/null || true
 
+# Holding the lock, every mount under the chroot is left over from a run that was killed before
+# it could unmount (SIGKILL skips the EXIT trap). Mounting again over them fails ("already
+# mounted"), so take them down first, deepest first.
+stale() { awk -v d="$dir" '$2 == d || index($2, d "/") == 1 { print $2 }' /proc/self/mounts | sort -r; }
+for m in $(stale); do
+  echo "debian_chroot: unmounting $m, left over from an earlier run"
+  umount "$m" 2>/dev/null || umount -l "$m" || true
+done
+if [ -n "$(stale)" ]; then
+  echo "debian_chroot: cannot unmount what an earlier run left under $dir:" >&2
+  stale >&2
+  exit 1
+fi
+
 mounted=()
 cleanup() {
   local i

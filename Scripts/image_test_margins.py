@@ -17,6 +17,7 @@ whether every must-fail picture was rejected, and the smallest ratio with its te
 """
 import argparse
 import csv
+import os
 import re
 import sys
 
@@ -33,6 +34,9 @@ def main():
     args = parser.parse_args()
     real = {}
     wrong = {}
+    if not os.path.exists(args.log):
+        print(f"margins {args.summary or ''}: no CTest log at {args.log} (the tests did not run)")
+        return 1
     with open(args.log, errors="replace") as log:
         for line in log:
             line = line.strip()
