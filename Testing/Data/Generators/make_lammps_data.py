@@ -11,10 +11,17 @@ scene              output files
 ``lj_droplets``    ``lj_droplets.vtp`` (last frame) and the time series
                    ``lj_droplets_t0.vtp`` ... ``lj_droplets_t4.vtp``
                    (``lj_droplets_t4.vtp`` is identical to
-                   ``lj_droplets.vtp``)
+                   ``lj_droplets.vtp``); the five frames as one LAMMPS
+                   dump, ``lj_droplets.lammpstrj.gz``
 ``lj_film``        ``lj_film.vtp``
-``fcc_block``      ``fcc_block.vtp``
+``fcc_block``      ``fcc_block.vtp``; the same as a LAMMPS data file,
+                   ``fcc_block.data.gz``
 =================  =====================================================
+
+The LAMMPS-format files (write_lammps_dump, write_lammps_data) hold the
+rounded values of the ``.vtp`` files, without radii (the readers' Type
+Radii give them); the samples command opens them through the plugin's
+readers. ``--lammps-files-only`` rewrites them from the ``.vtp`` files.
 
 Every ``.vtp`` file holds one vertex cell per point and these point arrays:
 
@@ -69,6 +76,8 @@ needed; LAMMPS scratch files go to a temporary directory.
 
 import argparse
 import glob
+import gzip
+import io
 import os
 import re
 import shutil
@@ -273,7 +282,99 @@ def write_vtp(pd, path):
         raise RuntimeError("writing %s failed" % path)
 
 
+def _exact(values):
+    """Shortest decimal strings that read back to exactly these values (the rounded positions
+    and velocities are multiples of 2^-10 and 2^-8: a few digits each)."""
+    return [np.format_float_positional(v, trim="-") for v in values]
+
+
+def _polydata_columns(pd):
+    pdata = pd.GetPointData()
+    pos = numpy_support.vtk_to_numpy(pd.GetPoints().GetData()).astype(np.float64)
+    vel = numpy_support.vtk_to_numpy(pdata.GetArray("velocity")).astype(np.float64)
+    ids = numpy_support.vtk_to_numpy(pdata.GetArray("id"))
+    types = numpy_support.vtk_to_numpy(pdata.GetArray("type"))
+    box = numpy_support.vtk_to_numpy(pd.GetFieldData().GetArray("BoxBounds")).reshape(6)
+    time_value = pd.GetFieldData().GetArray("TimeValue").GetValue(0)
+    return ids, types, pos, vel, box, int(round(time_value / TIMESTEP))
+
+
+def _gzip_text(path):
+    """A text file written gzip-compressed (level 9) without a time stamp or name in the gzip
+    header, so that the same content gives the same bytes."""
+    raw = open(path, "wb")
+    return io.TextIOWrapper(gzip.GzipFile(filename="", mode="wb", compresslevel=9, fileobj=raw,
+                                          mtime=0), encoding="ascii", newline="\n")
+
+
+def write_lammps_dump(frames, path):
+    """The frames (vtkPolyData of dump_to_polydata) as one gzipped LAMMPS text dump in the
+    layout of ``dump custom ... id type x y z vx vy vz`` (periodic box "pp pp pp"), one snapshot
+    per frame: what a user's trajectory file looks like, for vtkLAMMPSDumpReader (the radius comes
+    from the reader's Type Radii, like for a user's atoms)."""
+    with _gzip_text(path) as f:
+        for pd in frames:
+            ids, types, pos, vel, box, step = _polydata_columns(pd)
+            f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n" % (step, len(ids)))
+            f.write("ITEM: BOX BOUNDS pp pp pp\n")
+            for k in range(3):
+                f.write("%s %s\n" % tuple(_exact(box[2 * k:2 * k + 2])))
+            f.write("ITEM: ATOMS id type x y z vx vy vz\n")
+            columns = [_exact(pos[:, k]) for k in range(3)] + [_exact(vel[:, k]) for k in range(3)]
+            for i in range(len(ids)):
+                f.write("%d %d %s\n" % (ids[i], types[i], " ".join(c[i] for c in columns)))
+
+
+def write_lammps_data(pd, path):
+    """One frame as a gzipped LAMMPS data file in the layout of ``write_data`` (atom style
+    atomic: Masses, Atoms with image flags 0, Velocities), for vtkLAMMPSDataReader."""
+    ids, types, pos, vel, box, step = _polydata_columns(pd)
+    with _gzip_text(path) as f:
+        f.write("LAMMPS data file via make_lammps_data.py, timestep = %d, units = lj\n\n" % step)
+        f.write("%d atoms\n%d atom types\n\n" % (len(ids), int(types.max())))
+        for k, axis in enumerate("xyz"):
+            f.write("%s %s %slo %shi\n" % (*_exact(box[2 * k:2 * k + 2]), axis, axis))
+        f.write("\nMasses\n\n")
+        for t in range(1, int(types.max()) + 1):
+            f.write("%d 1\n" % t)
+        f.write("\nAtoms # atomic\n\n")
+        columns = [_exact(pos[:, k]) for k in range(3)]
+        for i in range(len(ids)):
+            f.write("%d %d %s 0 0 0\n" % (ids[i], types[i], " ".join(c[i] for c in columns)))
+        f.write("\nVelocities\n\n")
+        columns = [_exact(vel[:, k]) for k in range(3)]
+        for i in range(len(ids)):
+            f.write("%d %s\n" % (ids[i], " ".join(c[i] for c in columns)))
+
+
+#: scene -> the LAMMPS-format file written beside its .vtp files (see write_lammps_files)
+LAMMPS_FILES = {"lj_droplets": "lj_droplets.lammpstrj.gz", "fcc_block": "fcc_block.data.gz"}
+
+
+def write_lammps_files(scene, out_dir):
+    """The time series of lj_droplets as one dump and fcc_block as a data file, from the .vtp
+    files just written (the same rounded values), so that the samples open them through the
+    plugin's own readers."""
+    if scene not in LAMMPS_FILES:
+        return []
+    path = os.path.join(out_dir, LAMMPS_FILES[scene])
+
+    def read(name):
+        r = vtkXMLPolyDataReader()
+        r.SetFileName(os.path.join(out_dir, name))
+        r.Update()
+        return r.GetOutput()
+
+    if scene == "lj_droplets":
+        write_lammps_dump([read("lj_droplets_t%d.vtp" % i) for i in range(5)], path)
+    else:
+        write_lammps_data(read(scene + ".vtp"), path)
+    return [path]
+
+
 def describe(path):
+    if not path.endswith(".vtp"):
+        return "%-22s %8.1f kB" % (os.path.basename(path), os.path.getsize(path) / 1024.0)
     r = vtkXMLPolyDataReader()
     r.SetFileName(path)
     r.Update()
@@ -328,12 +429,20 @@ def main(argv=None):
                          "temporary directory")
     ap.add_argument("--dumps", metavar="DIR",
                     help="do not run LAMMPS; convert the dumps of an earlier --keep DIR run")
+    ap.add_argument("--lammps-files-only", action="store_true",
+                    help="only write the LAMMPS-format files (%s) from the .vtp files in --out"
+                    % ", ".join(sorted(LAMMPS_FILES.values())))
     ap.add_argument("--no-quantize", dest="quantize", action="store_false",
                     help="write full float32 precision (larger files)")
     args = ap.parse_args(argv)
 
     scenes = args.scene or ["all"]
     scenes = list(SCENES) if "all" in scenes else list(dict.fromkeys(scenes))
+    if args.lammps_files_only:
+        for scene in scenes:
+            for path in write_lammps_files(scene, args.out):
+                print("  " + describe(path))
+        return 0
     lmp = None if args.dumps else find_lammps(args.lmp)
     os.makedirs(args.out, exist_ok=True)
 
@@ -355,6 +464,7 @@ def main(argv=None):
             with tempfile.TemporaryDirectory(prefix="pr_lammps_%s_" % scene) as run_dir:
                 dt, _ = run_lammps(lmp, scene, run_dir, args.np_ranks)
                 written += convert(scene, run_dir, args.out, args.quantize)
+        written += write_lammps_files(scene, args.out)
         total += dt
 
     print("LAMMPS total: %.1f s" % total)
