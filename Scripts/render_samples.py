@@ -2,15 +2,19 @@
 the plugin), with each picture's cost and error measured in the same run.
 
 usage: pvpython render_samples.py --plugin ParticleRendering.so --data Testing/Data --out DIR
-           [--quick | --full] [--size WxH] [--frames N]
+           [--quick | --full] [--size WxH] [--frames N] [--ao-rays N] [--only NAME,...]
+           [--results DIR]
+       pvpython render_samples.py --check [--self-test] --out DIR
 (PYTHONPATH must hold <build>/lib/python3/dist-packages for the reference renderer;
-Scripts/render_samples.sh sets everything up.)
+Scripts/render_samples.sh sets everything up.) Exit status 1 when a picture failed (it is
+reported, and the others are still made) or, with --check, when the output is incomplete.
 
 Data, opened the way a user opens it: the droplet trajectory lj_droplets.lammpstrj.gz (5 steps,
 11 033 atoms) through the LAMMPS Dump Reader, the crystal fcc_block.data.gz (32 000 atoms) through
 the LAMMPS Data Reader, both with Type Radii 1 -> 0.5, 2 -> 0.4 sigma; the film lj_film.vtp (19 360
 atoms, the AO scene) through ParaView's XML reader. Every picture is a Particle Render View with
-one Particles representation, coloured by atom type.
+one Particles representation, coloured by atom type; the space-filling ("molecule-like") scene is
+coloured by speed, so that overlapping neighbours differ in colour.
 
 Per picture (DIR/<name>.png, one tile of DIR/contact_sheet.png, one row of DIR/samples.csv and
 DIR/samples.md):
