@@ -288,6 +288,9 @@ def main():
         if method == "walking":
             walking(mapper)
         getattr(mapper, "Set" + knob)(value)
+        if knob == "TimeBudget":
+            # the budget bounds interactive frames only (still frames walk to convergence)
+            mapper.GetFrameBudget().SetQuality(pr.vtkParticleFrameBudget.INTERACTIVE)
         actor, renderer, window = view(mapper, data)
         seconds = frame_seconds(window, renderer, frames)
         r = compare(window, renderer, actor, r_mean, normals=True)

@@ -159,6 +159,7 @@ public:
   int Variant = FinalDraw;      // the shader variant wanted (ShaderVariant)
   int BuiltVariant = FinalDraw; // and built
   std::string OpacityWarning;   // the last warning about an opacity that is not applied
+  std::string WalkWarning;      // the last warning about a still walk cut by MaximumPasses
   // the vicinity pre-pass: the depth of the iso-spheres, its viewport origin
   vtkNew<vtkTextureObject> PrePassDepth;
   int PrePassOrigin[2] = { 0, 0 };
@@ -1211,8 +1212,12 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
   plane->SetDensityTolerance(this->WalkingTolerance);
   plane->SetStepOracle(this->StepOracle);
   plane->SetMaximumPasses(this->MaximumPasses);
-  plane->SetTimeBudget(this->TimeBudget);
   plane->SetFinishedShare(this->FinishedShare);
+  // the frame budget's levels: 0 the walk bounded by TimeBudget, 1 (exact: still frames) the walk
+  // to convergence, bounded by MaximumPasses alone
+  vtkParticleFrameBudget* budget = this->GetFrameBudget();
+  const bool converge = budget->BeginFrame(ren, 2) == 1;
+  plane->SetTimeBudget(converge ? std::numeric_limits<double>::max() : this->TimeBudget);
 
   // the splat passes need every particle: no occlusion culling (see GetOcclusionCullingCompiled)
   const bool culling = this->OcclusionCulling;
@@ -1258,7 +1263,20 @@ void vtkMetaballMapper::RenderWalkingPlane(vtkRenderer* ren, vtkActor* act)
       plane->GetColorTexture()->Deactivate();
     }
   }
+  budget->EndFrame();
   this->OcclusionCulling = culling;
+
+  std::string cut;
+  if (converge && plane->GetTermination() == vtkMetaballWalkingPlane::PASS_LIMIT)
+  {
+    std::ostringstream text;
+    text << "The walking depth plane stopped at Maximum Passes (" << this->MaximumPasses
+         << ") with " << plane->GetActivePixels() << " of " << plane->GetCoveredPixels()
+         << " pixels not finished: the surface is missing or misplaced there. Raise Maximum "
+            "Passes or use the vicinity method.";
+    cut = text.str();
+  }
+  this->WarnOnChange(cut, internals.WalkWarning);
 }
 
 //------------------------------------------------------------------------------
@@ -1378,8 +1396,11 @@ vtkMetaballWalkingPlane* vtkMetaballMapper::GetWalkingPlane()
 //------------------------------------------------------------------------------
 std::string vtkMetaballMapper::GetQualityLevelNames()
 {
-  return this->Method == VICINITY && this->Internals->Supported ? "iso-spheres|exact surface"
-                                                                : "exact surface";
+  if (this->Method == WALKING_DEPTH_PLANE)
+  {
+    return "walk within the time budget|walk to convergence";
+  }
+  return this->Internals->Supported ? "iso-spheres|exact surface" : "exact surface";
 }
 
 //------------------------------------------------------------------------------

@@ -75,7 +75,10 @@
  * Newton's estimate of its distance to the surface is at most WalkingTolerance times the smallest
  * radius (where the field does not rise with depth, a ray touching the surface: when |D/t - 1| <=
  * WalkingTolerance). The walk stops (Sec. 3.2.4) when no pixel is active, when FinishedShare of the
- * covered pixels are finished, after MaximumPasses, or after TimeBudget seconds. Shading is
+ * covered pixels are finished, after MaximumPasses, or, in interactive frames only, after
+ * TimeBudget seconds (the paper's bound on a frame; a still frame walks to convergence, so that
+ * it is the exact picture whatever the machine's speed; a still frame that MaximumPasses cuts
+ * warns with the number of unfinished pixels). Shading is
  * deferred (Sec. 3.2.5): one more pass sums the field's gradient (the normal) and one the colours
  * weighted by the kernels; the final draw is the core's imposter draw, each fragment placing
  * its point where lambda is when its influence sphere holds it, so lights, AO hooks, picking
@@ -116,7 +119,8 @@
  * pre-pass's spheres, shaded, no search; exact where a particle is isolated, the merged shapes
  * shown as their spheres) and the exact surface. Coarser Tolerance, fewer RefinementSteps or
  * neighbours save at most 30 % of the frame (measured: Documentation/Performance.md), the
- * iso-spheres ~90 %. The walking depth plane has one level (its TimeBudget bounds its passes).
+ * iso-spheres ~90 %. The walking depth plane has two levels: the walk within TimeBudget (level 0)
+ * and the walk to convergence (the exact level, still frames).
  *
  * @sa vtkParticleSphereMapper vtkMetaballWalkingPlane vtkParticleReferenceMetaballs
  * vtkParticleShaderHooks
@@ -284,9 +288,11 @@ public:
 
   ///@{
   /**
-   * Walking depth plane: most passes per frame (default 100, clamped to [1, 10000]), most
-   * seconds of walking per frame (default 1: the paper's minimum frame rate of 1 FPS; 0 is
-   * one pass), the share of covered pixels whose finishing ends the walk (default 1: all).
+   * Walking depth plane: most passes per frame (default 1000, clamped to [1, 10000]: the hang
+   * guard; a still frame cut by it warns), most seconds of walking per interactive frame
+   * (default 1: the paper's minimum frame rate of 1 FPS; 0 is one pass; still frames walk to
+   * convergence, see the class description), the share of covered pixels whose finishing ends
+   * the walk (default 1: all).
    */
   vtkSetClampMacro(MaximumPasses, int, 1, 10000);
   vtkGetMacro(MaximumPasses, int);
@@ -379,7 +385,7 @@ protected:
   double WalkingTolerance = 1e-3;
   int StepOracle = BRACKETING_ORACLE;
   double MaximumStepFactor = 1.0;
-  int MaximumPasses = 100;
+  int MaximumPasses = 1000;
   double TimeBudget = 1.0;
   double FinishedShare = 1.0;
   vtkIdType NumberOfListBuilds = 0;

@@ -331,7 +331,7 @@ protected:
   int MaximumNumberOfNeighbors = 64;
   int MetaballMethod = 0;
   double WalkingTolerance = 1e-3;
-  int MaximumPasses = 100;
+  int MaximumPasses = 1000;
   double TimeBudget = 1.0;
   int OpacityReference = 0;
   bool HasLocalParticles = false; // the delivered local piece has points

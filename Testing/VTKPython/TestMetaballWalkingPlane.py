@@ -8,8 +8,10 @@ against the exact metaball surface of vtkParticleReferenceRenderer (metaball mod
    silhouettes (the issue's goal), coverage differing in at most 0.1 % of the pixels, normals
    within 1 degree and colours within 2/255 on average; no neighbour list is built.
 3. The error falls with WalkingTolerance; the walk ends by each of its criteria (converged,
-   MaximumPasses, TimeBudget, FinishedShare) and says which; fewer passes leave more pixels
-   unfinished; the paper's oracle reaches the same surface in more passes.
+   MaximumPasses, TimeBudget, FinishedShare) and says which; TimeBudget only in interactive
+   frames (a still frame with TimeBudget 0 converges), a still frame cut by MaximumPasses warns
+   once; fewer passes leave more pixels unfinished; the paper's oracle reaches the same surface
+   in more passes.
 4. The paper's thin neck (two particles 0.1 % short of the largest connecting distance):
    shown wherever the reference shows it.
 5. Switching the method back and forth gives each method's picture to 0/255.
@@ -131,10 +133,17 @@ plane = mapper.GetWalkingPlane()
 window.Render()
 converged_passes = plane.GetNumberOfPasses()
 covered = plane.GetCoveredPixels()
-for setting, value, expected in (("SetMaximumPasses", 4, "pass limit"),
-                                 ("SetTimeBudget", 0.0, "time budget"),
-                                 ("SetFinishedShare", 0.5, "finished share")):
+# the time budget bounds interactive frames only (level 0 of the frame budget); a still frame
+# (this window: nobody set an update rate) walks to convergence whatever the budget, and one that
+# MaximumPasses cuts warns
+budget = mapper.GetFrameBudget()
+for setting, value, expected, quality in (
+        ("SetMaximumPasses", 4, "pass limit", pr.vtkParticleFrameBudget.ADAPTIVE),
+        ("SetTimeBudget", 0.0, "time budget", pr.vtkParticleFrameBudget.INTERACTIVE),
+        ("SetFinishedShare", 0.5, "finished share", pr.vtkParticleFrameBudget.ADAPTIVE)):
     getattr(mapper, setting)(value)
+    budget.SetQuality(quality)
+    cut_messages = Messages(mapper)
     window.Render()
     passes, why = walk(mapper)
     active = plane.GetActivePixels()
@@ -144,6 +153,18 @@ for setting, value, expected in (("SetMaximumPasses", 4, "pass limit"),
     check(passes < converged_passes and active > 0, "%s(%g): an unfinished walk" %
           (setting, value))
     check(np.isfinite(grab_image(window)).all(), "%s(%g): a finite picture" % (setting, value))
+    warned = [w for w in cut_messages.warnings if "Maximum Passes" in w]
+    check(len(warned) == (1 if setting == "SetMaximumPasses" else 0),
+          "%s(%g): %d warnings about Maximum Passes (a still frame cut by it warns, once): %s"
+          % (setting, value, len(warned), warned))
+    budget.SetQuality(pr.vtkParticleFrameBudget.ADAPTIVE)
+    if setting == "SetTimeBudget":
+        window.Render()  # a still frame with the same budget: walks to convergence
+        passes, why = walk(mapper)
+        print("SetTimeBudget(0), still frame: %d passes, %s" % (passes, why))
+        check(why == "converged" and passes == converged_passes,
+              "SetTimeBudget(0): a still frame walks to convergence (%d passes, %s)"
+              % (passes, why))
     getattr(mapper, setting)({"SetMaximumPasses": 1000, "SetTimeBudget": 1000.0,
                               "SetFinishedShare": 1.0}[setting])
 mapper.SetMaximumPasses(8)
