@@ -75,7 +75,8 @@
  * Newton's estimate of its distance to the surface is at most WalkingTolerance times the smallest
  * radius (where the field does not rise with depth, a ray touching the surface: when |D/t - 1| <=
  * WalkingTolerance). The walk stops (Sec. 3.2.4) when no pixel is active, when FinishedShare of the
- * covered pixels are finished, after MaximumPasses, or, in interactive frames only, after
+ * covered pixels are finished, when the last few (at most 1 %) stall (vtkMetaballWalkingPlane),
+ * after MaximumPasses, or, in interactive frames only, after
  * TimeBudget seconds (the paper's bound on a frame; a still frame walks to convergence, so that
  * it is the exact picture whatever the machine's speed; a still frame that MaximumPasses cuts
  * warns with the number of unfinished pixels). Shading is

@@ -54,6 +54,9 @@ public:
   // the occlusion query of the last step pass (its active pixels), read before the next pass
   unsigned int Query = 0;
   int Issued = 0; // step passes issued in this walk
+  // the active count of the last pass, and for how many passes it has not changed
+  long long LastActive = -1;
+  int UnchangedPasses = 0;
   double Start = 0.0;
 
   bool Allocate(vtkOpenGLRenderWindow* ctx, int w, int h)
@@ -214,6 +217,8 @@ bool vtkMetaballWalkingPlane::Begin(vtkRenderer* ren)
   }
   internals.Active = true;
   internals.Issued = 0;
+  internals.LastActive = -1;
+  internals.UnchangedPasses = 0;
   internals.Start = vtkTimerLog::GetUniversalTime();
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
@@ -249,6 +254,9 @@ bool vtkMetaballWalkingPlane::StartDensity()
       // the first step saw every covered pixel active
       this->CoveredPixels = this->ActivePixels;
     }
+    internals.UnchangedPasses =
+      this->ActivePixels == internals.LastActive ? internals.UnchangedPasses + 1 : 0;
+    internals.LastActive = this->ActivePixels;
   }
   if (issued >= 1)
   {
@@ -263,6 +271,11 @@ bool vtkMetaballWalkingPlane::StartDensity()
     else if (finished >= this->FinishedShare)
     {
       termination = FINISHED_SHARE;
+    }
+    else if (internals.UnchangedPasses >= this->StallPasses &&
+      static_cast<double>(this->ActivePixels) <= std::max(1.0, 1e-2 * this->CoveredPixels))
+    {
+      termination = STALLED;
     }
     else if (this->NumberOfPasses >= this->MaximumPasses)
     {
@@ -411,6 +424,8 @@ const char* vtkMetaballWalkingPlane::GetTerminationAsString(int termination)
       return "pass limit";
     case TIME_BUDGET:
       return "time budget";
+    case STALLED:
+      return "stalled";
     default:
       return "not run";
   }
@@ -460,6 +475,7 @@ void vtkMetaballWalkingPlane::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepOracle: " << this->StepOracle << "\n";
   os << indent << "MaximumPasses: " << this->MaximumPasses << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "StallPasses: " << this->StallPasses << "\n";
   os << indent << "FinishedShare: " << this->FinishedShare << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
   os << indent << "Seconds: " << this->Seconds << "\n";

@@ -8,7 +8,9 @@ covered), the shapes cover more than the spheres of the same atoms (Particles) a
 back gives the baseline picture again; the view's ambient occlusion (Density Volume) darkens the
 metaballs and nowhere brightens them; Metaball Method "Walking Depth Plane" (walked to convergence) under the
 view's ambient occlusion gives the vicinity method's occluded picture (mean 1/255, at most 1 %
-of the pixels over 4/255), darker than the picture without occlusion; no error or warning is printed.
+of the pixels over 4/255), darker than the picture without occlusion; still frames of the
+walking depth plane with the default limits, the camera turning, end converged or stalled with at
+most 1 % of the pixels unfinished, never at the pass limit; no error or warning is printed.
 
 Criteria of the baseline comparison: the GPU's own image on the same platform matches to
 rounding; the spheres differ from the metaballs over much of the droplets, so a mean of 1/255 or
@@ -40,6 +42,17 @@ spheres = pr.must_fail(args, "spheres")
 display.Technique = "Spheres" if spheres else "Metaballs"
 pr.set_camera(view, position=(-20.0, -45.0, 75.0), focal_point=(33.0, 40.0, 40.0))
 name = "TestMetaballsParaView" + ("" if from_file else "_synthetic")
+
+
+def walking_plane(view):
+    """The walking depth plane of the view's metaball mapper."""
+    actors = view.GetClientSideObject().GetRenderer().GetActors()
+    actors.InitTraversal()
+    for _ in range(actors.GetNumberOfItems()):
+        mapper = actors.GetNextActor().GetMapper()
+        if mapper is not None and mapper.IsA("vtkMetaballMapper"):
+            return mapper.GetWalkingPlane()
+    raise RuntimeError("no metaball mapper in the view")
 
 
 def rgb(image):
@@ -115,6 +128,34 @@ if not args.must_fail:
         ok = False
     if not walking_darker / 3.0 > 1.0:
         print("FAIL: the view's ambient occlusion does not reach the walking depth plane")
+        ok = False
+
+    # still frames with the default limits (Time Budget 1 s, Maximum Passes 1000), the camera
+    # turned 2 degrees before each: every walk ends converged, or stalled with its last few
+    # pixels (at most 1 % of the covered ones, oscillating about a surface the ray grazes);
+    # never at the pass limit (a frame of 1000 passes), never by the time budget, and no warning
+    display.MetaballMethod = "Walking Depth Plane"
+    display.MetaballTimeBudget = 1.0
+    display.MetaballMaximumPasses = 1000
+    simple.Render(view)
+    plane = walking_plane(view)
+    endings = []
+    with pr.captured_messages() as walk_messages:
+        for _ in range(8):
+            view.GetActiveCamera().Azimuth(2.0)
+            simple.Render(view)
+            endings.append((plane.GetNumberOfPasses(),
+                            plane.GetTerminationAsString(plane.GetTermination()),
+                            plane.GetActivePixels(), plane.GetCoveredPixels()))
+    display.MetaballMethod = "Vicinity"
+    print("still walks with the default limits (passes, end, active of covered): %s" % endings)
+    for passes, end, active, covered_pixels in endings:
+        if end not in ("converged", "stalled") or active > max(1, 1e-2 * covered_pixels):
+            print("FAIL: a still walk ended by %s with %d of %d pixels active"
+                  % (end, active, covered_pixels))
+            ok = False
+    if walk_messages.GetOutput().strip():
+        print("FAIL: messages of the still walks: %r" % walk_messages.GetOutput())
         ok = False
 
     if printed.strip():
