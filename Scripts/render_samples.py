@@ -45,7 +45,9 @@ from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkSMPTools
 from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from prPictures import window_rgb, write_png  # noqa: E402
 
 # tile size; timed frames: at least `frames`, and more (up to 60) until they took `min_time`
 # seconds (a 15 ms frame is timed over ~30 frames); AO reference rays per pixel; the S-NDF
@@ -184,6 +186,9 @@ class Samples:
         self.ao_reference = {}
         self.supersampled = {}
         self.rows = []
+        self.tiles = []
+        self.failed = []  # (picture, error) of the pictures that could not be made
+        self.frames_timed = 0
         self.renderer_string = ""
         os.makedirs(os.path.join(args.out, "reference"), exist_ok=True)
 
@@ -266,16 +271,10 @@ class Samples:
                     self.renderer_string = line.split(":", 1)[1].strip()
         return view, display
 
-    def grab(self, view):
-        grabber = vtkWindowToImageFilter()
-        grabber.SetInput(view.GetClientSideObject().GetRenderWindow())
-        grabber.ShouldRerenderOff()
-        grabber.ReadFrontBufferOff()
-        grabber.Update()
-        image = grabber.GetOutput()
-        width, height, _ = image.GetDimensions()
-        pixels = vtk_to_numpy(image.GetPointData().GetScalars())[:, :3]
-        return pixels.reshape(height, width, 3).astype(np.float64)
+    @staticmethod
+    def grab(view):
+        window = view.GetClientSideObject().GetRenderWindow()
+        return window_rgb(window, finalize=False, rerender=False).astype(np.float64)
 
     def timed_frame(self, view):
         times = []
@@ -344,7 +343,8 @@ class Samples:
 
     # --- one picture --------------------------------------------------------------------------
     def render(self, index, tile):
-        name, label, scene, settings, reference_kind = tile[:5]
+        name, label, scene, settings, reference_kind = (
+            tile.name, tile.label, tile.scene, tile.settings, tile.reference)
         n = len(self.tiles)
         reader = self.reader(scene)
         print("[%2d/%d] %-40s" % (index + 1, n, label + " (" + scene + ")"), end=" ", flush=True)
@@ -407,7 +407,6 @@ class Samples:
     def run(self):
         only = set(self.args.only.split(",")) if self.args.only else None
         self.tiles = [t for t in TILES if only is None or t.name in only]
-        self.failed = []
         for index, tile in enumerate(self.tiles):
             try:
                 self.render(index, tile)
@@ -427,22 +426,6 @@ REFERENCE_TEXT = {
     "ao": "ray-traced AO, {ao_rays} rays per pixel",
     "supersampled": "core super-sampled {supersample}x{supersample}",
 }
-
-
-def write_png(rgb, path):
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-
-    height, width, _ = rgb.shape
-    data = np.clip(np.rint(rgb), 0, 255).astype(np.uint8).reshape(-1, 3)
-    image = vtkImageData()
-    image.SetDimensions(width, height, 1)
-    image.GetPointData().SetScalars(numpy_to_vtk(data, deep=True))
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(image)
-    writer.Write()
 
 
 def machine_text(renderer_string):
