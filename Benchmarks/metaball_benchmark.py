@@ -31,8 +31,8 @@ import time
 import numpy as np
 
 import particlerendering as pr
-from prMetaballTesting import compare, gpu_view_depth, type_lookup_table
-from prVTKTesting import actor_view
+from prMetaballTesting import type_lookup_table
+from prVTKTesting import actor_view, compare, gpu_view_depth
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData

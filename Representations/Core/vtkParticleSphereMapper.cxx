@@ -52,6 +52,12 @@ class vtkParticleSphereMapper::vtkInternals
 public:
   // Sanitised per-particle data, rebuilt when the input or the radius settings change.
   vtkNew<vtkFloatArray> Radii; // MC radius, 0 for skipped particles
+  // ellipsoids (Shape ELLIPSOID with a usable axes array): semi-axes and unit quaternions, and
+  // whether the program in use was built for them
+  vtkNew<vtkFloatArray> Axes;
+  vtkNew<vtkFloatArray> Orientations;
+  bool Ellipsoids = false;
+  bool BuiltEllipsoids = false;
   // The positions uploaded: the input's own point array when every particle is valid (no copy),
   // else a copy in the input's precision with the skipped particles moved onto a valid one. The
   // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
@@ -62,6 +68,8 @@ public:
   vtkIdType Stride = 1;
   vtkSmartPointer<vtkDataArray> UploadedPositions;
   vtkSmartPointer<vtkFloatArray> UploadedRadii;
+  vtkSmartPointer<vtkDataArray> UploadedAxes;
+  vtkSmartPointer<vtkDataArray> UploadedOrientations;
   std::vector<vtkSmartPointer<vtkDataArray>> StrideArrays; // alive until the next upload
   std::string LastStrideWarning;
   vtkTimeStamp CullerBuildTime;
@@ -85,12 +93,28 @@ public:
     std::string RadiusArrayName;
     double Radius = 0.0;
     vtkIdType NumberOfPoints = -1;
+    // ellipsoids
+    int Shape = 0;
+    vtkAbstractArray* AxesArray = nullptr;
+    vtkMTimeType AxesTime = 0;
+    std::string AxesArrayName;
+    int AxesComponent = 0;
+    bool AxesAreDiameters = false;
+    vtkAbstractArray* OrientationArray = nullptr;
+    vtkMTimeType OrientationTime = 0;
+    std::string OrientationArrayName;
+    int OrientationComponent = 0;
     bool operator==(const Signature& o) const
     {
       return Input == o.Input && Points == o.Points && PointsTime == o.PointsTime &&
         RadiusArray == o.RadiusArray && RadiusTime == o.RadiusTime &&
         RadiusArrayName == o.RadiusArrayName && Radius == o.Radius &&
-        NumberOfPoints == o.NumberOfPoints;
+        NumberOfPoints == o.NumberOfPoints && Shape == o.Shape && AxesArray == o.AxesArray &&
+        AxesTime == o.AxesTime && AxesArrayName == o.AxesArrayName &&
+        AxesComponent == o.AxesComponent && AxesAreDiameters == o.AxesAreDiameters &&
+        OrientationArray == o.OrientationArray && OrientationTime == o.OrientationTime &&
+        OrientationArrayName == o.OrientationArrayName &&
+        OrientationComponent == o.OrientationComponent;
     }
   };
   Signature Prepared;
@@ -112,12 +136,18 @@ vtkParticleSphereMapper::vtkParticleSphereMapper()
   : Internals(new vtkInternals)
 {
   this->Internals->Radii->SetName("ParticleRadius");
+  this->Internals->Axes->SetName("ParticleAxes");
+  this->Internals->Axes->SetNumberOfComponents(3);
+  this->Internals->Orientations->SetName("ParticleOrientation");
+  this->Internals->Orientations->SetNumberOfComponents(4);
 }
 
 //------------------------------------------------------------------------------
 vtkParticleSphereMapper::~vtkParticleSphereMapper()
 {
   this->SetRadiusArrayName(nullptr);
+  this->SetAxesArrayName(nullptr);
+  this->SetOrientationArrayName(nullptr);
   delete this->Internals;
 }
 
@@ -249,8 +279,129 @@ vtkSmartPointer<vtkDataArray> FillSkipped(
   return copy;
 }
 
+// The numeric point array `name` of `input` when it has at least first + count components;
+// otherwise nullptr and the reason appended to `warnings` (nullptr without a warning when no name
+// is given).
+vtkDataArray* GetComponentsPointArray(vtkPolyData* input, const char* name, const char* role,
+  int first, int count, const std::string& fallback, std::ostream& warnings)
+{
+  if (!name || !name[0])
+  {
+    return nullptr;
+  }
+  vtkAbstractArray* abstractArray = input->GetPointData()->GetAbstractArray(name);
+  vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
+  if (!abstractArray)
+  {
+    warnings << role << " array '" << name << "' is not a point array of the input: " << fallback
+             << ". ";
+  }
+  else if (!array)
+  {
+    warnings << role << " array '" << name << "' is not numeric (" << abstractArray->GetClassName()
+             << "): " << fallback << ". ";
+  }
+  else if (array->GetNumberOfComponents() < first + count)
+  {
+    warnings << role << " array '" << name << "' has " << array->GetNumberOfComponents()
+             << " components, components " << first << " to " << first + count - 1
+             << " are needed: " << fallback << ". ";
+    array = nullptr;
+  }
+  return array;
+}
+
+struct EllipsoidSummary
+{
+  vtkIdType BadAxes = 0;
+  vtkIdType BadOrientation = 0;
+  vtkIdType NonUnitOrientation = 0;
+  double WorstLength = 1.0; // the quaternion length furthest from 1 among the non-unit ones
+};
+
+// Semi-axes (halved diameters) and unit quaternions of every particle; boundingRadii[i] the
+// largest semi-axis, NaN when an axis is zero, negative, not finite or beyond single precision
+// (the particle is then skipped as for a bad radius).
+EllipsoidSummary CheckEllipsoids(vtkDataArray* axesArray, int axesComponent, bool diameters,
+  vtkDataArray* orientationArray, int orientationComponent, float* axes, float* quaternions,
+  float* boundingRadii, vtkIdType numPts)
+{
+  vtkSMPThreadLocal<EllipsoidSummary> local;
+  const double axisFactor = diameters ? 0.5 : 1.0;
+  vtkSMPTools::For(0, numPts,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      EllipsoidSummary& s = local.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        bool good = true;
+        double largest = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double a = axisFactor * axesArray->GetComponent(i, axesComponent + k);
+          good = good && std::isfinite(a) && a > 0.0 && a < 1e37;
+          axes[3 * i + k] = good ? static_cast<float>(a) : 0.0f;
+          largest = std::max(largest, a);
+        }
+        if (!good)
+        {
+          ++s.BadAxes;
+          axes[3 * i] = axes[3 * i + 1] = axes[3 * i + 2] = 0.0f;
+        }
+        boundingRadii[i] = good ? static_cast<float>(largest) : std::nanf("");
+        double q[4] = { 1.0, 0.0, 0.0, 0.0 };
+        if (orientationArray)
+        {
+          for (int k = 0; k < 4; ++k)
+          {
+            q[k] = orientationArray->GetComponent(i, orientationComponent + k);
+          }
+        }
+        const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!std::isfinite(length) || !(length > 1e-30))
+        {
+          ++s.BadOrientation;
+          q[0] = 1.0;
+          q[1] = q[2] = q[3] = 0.0;
+        }
+        else
+        {
+          if (std::abs(length - 1.0) > 1e-3)
+          {
+            ++s.NonUnitOrientation;
+            if (std::abs(length - 1.0) > std::abs(s.WorstLength - 1.0))
+            {
+              s.WorstLength = length;
+            }
+          }
+          for (double& c : q)
+          {
+            c /= length;
+          }
+        }
+        for (int k = 0; k < 4; ++k)
+        {
+          quaternions[4 * i + k] = static_cast<float>(q[k]);
+        }
+      }
+    });
+  EllipsoidSummary total;
+  for (const EllipsoidSummary& s : local)
+  {
+    total.BadAxes += s.BadAxes;
+    total.BadOrientation += s.BadOrientation;
+    total.NonUnitOrientation += s.NonUnitOrientation;
+    if (std::abs(s.WorstLength - 1.0) > std::abs(total.WorstLength - 1.0))
+    {
+      total.WorstLength = s.WorstLength;
+    }
+  }
+  return total;
+}
+
 // The warnings for skipped particles, by cause.
-void ReportSkipped(const ParticleSummary& total, vtkIdType numPts, std::ostream& warnings)
+void ReportSkipped(
+  const ParticleSummary& total, vtkIdType numPts, bool ellipsoids, std::ostream& warnings)
 {
   // (1e37: beyond it the GPU's single precision overflows in the squares of the intersection)
   if (total.BadPosition > total.HugePosition)
@@ -263,6 +414,16 @@ void ReportSkipped(const ParticleSummary& total, vtkIdType numPts, std::ostream&
     warnings << total.HugePosition << " of " << numPts
              << " particles have a coordinate of 1e37 or more, too large for single "
                 "precision, and are not drawn. ";
+  }
+  if (ellipsoids)
+  {
+    if (total.BadRadius > 0)
+    {
+      warnings << total.BadRadius << " of " << numPts
+               << " particles have a semi-axis that is zero, negative, NaN, infinite or 1e37 or "
+                  "more, and are not drawn. ";
+    }
+    return;
   }
   if (total.BadRadius > total.HugeRadius)
   {
@@ -297,6 +458,24 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   signature.RadiusTime = signature.RadiusArray ? signature.RadiusArray->GetMTime() : 0;
   signature.Radius = this->Radius;
   signature.NumberOfPoints = numPts;
+  signature.Shape = this->Shape;
+  if (this->Shape == ELLIPSOID && numPts > 0)
+  {
+    vtkPointData* pd = input->GetPointData();
+    signature.AxesArrayName = this->AxesArrayName ? this->AxesArrayName : "";
+    signature.AxesArray =
+      signature.AxesArrayName.empty() ? nullptr : pd->GetAbstractArray(this->AxesArrayName);
+    signature.AxesTime = signature.AxesArray ? signature.AxesArray->GetMTime() : 0;
+    signature.AxesComponent = this->AxesArrayComponent;
+    signature.AxesAreDiameters = this->AxesAreDiameters;
+    signature.OrientationArrayName = this->OrientationArrayName ? this->OrientationArrayName : "";
+    signature.OrientationArray = signature.OrientationArrayName.empty()
+      ? nullptr
+      : pd->GetAbstractArray(this->OrientationArrayName);
+    signature.OrientationTime =
+      signature.OrientationArray ? signature.OrientationArray->GetMTime() : 0;
+    signature.OrientationComponent = this->OrientationArrayComponent;
+  }
   if (internals.PrepareTime != 0 && internals.Prepared == signature)
   {
     return numPts;
@@ -310,6 +489,9 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   {
     warnings << "The input has no points: nothing to draw.";
     internals.Radii->SetNumberOfTuples(0);
+    internals.Ellipsoids = false;
+    internals.Axes->SetNumberOfTuples(0);
+    internals.Orientations->SetNumberOfTuples(0);
     internals.Positions = nullptr;
     internals.MaxRadius = 0.0;
     vtkMath::UninitializeBounds(internals.CenterBounds);
@@ -320,14 +502,37 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     // Which radius source?
     std::ostringstream fallback;
     fallback << "using the constant radius " << this->Radius;
-    vtkDataArray* radiusArray =
-      GetScalarPointArray(input, this->RadiusArrayName, "Radius", fallback.str(), warnings);
+    vtkDataArray* radiusArray = nullptr;
+    // Ellipsoids: their largest semi-axes are the radii (bounds, culling, clip boxes)
+    vtkNew<vtkFloatArray> boundingRadii;
+    internals.Ellipsoids = this->PrepareEllipsoids(input, boundingRadii, warnings);
+    if (internals.Ellipsoids)
+    {
+      radiusArray = boundingRadii;
+    }
+    else
+    {
+      radiusArray =
+        GetScalarPointArray(input, this->RadiusArrayName, "Radius", fallback.str(), warnings);
+    }
 
     vtkDataArray* points = input->GetPoints()->GetData();
     internals.Radii->SetNumberOfTuples(numPts);
     float* radii = internals.Radii->GetPointer(0);
 
     const ParticleSummary total = CheckParticles(points, radiusArray, this->Radius, radii, numPts);
+    if (internals.Ellipsoids && total.BadPosition > 0)
+    {
+      // skipped for their position: no axes either (GetParticleAxes() says 0 for skipped)
+      float* axes = internals.Axes->GetPointer(0);
+      for (vtkIdType i = 0; i < numPts; ++i)
+      {
+        if (radii[i] == 0.0f)
+        {
+          axes[3 * i] = axes[3 * i + 1] = axes[3 * i + 2] = 0.0f;
+        }
+      }
+    }
     // written through a raw pointer: tell the VBO cache the values are new
     internals.Radii->Modified();
 
@@ -342,7 +547,7 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     {
       internals.Positions = FillSkipped(points, radii, total.FirstValid, numPts);
     }
-    ReportSkipped(total, numPts, warnings);
+    ReportSkipped(total, numPts, internals.Ellipsoids, warnings);
     this->NumberOfSkippedParticles = skipped;
     internals.MaxRadius = total.MaxRadius;
     internals.MinRadius = total.FirstValid >= 0 ? total.MinRadius : 0.0;
@@ -362,6 +567,80 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
   stamp.Modified();
   internals.PrepareTime = stamp.GetMTime();
   return numPts;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::PrepareEllipsoids(
+  vtkPolyData* input, vtkFloatArray* boundingRadii, std::ostream& warnings)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Axes->SetNumberOfTuples(0);
+  internals.Orientations->SetNumberOfTuples(0);
+  if (this->Shape != ELLIPSOID)
+  {
+    return false;
+  }
+  const vtkIdType numPts = input->GetNumberOfPoints();
+  vtkDataArray* axesArray = nullptr;
+  if (!this->AxesArrayName || !this->AxesArrayName[0])
+  {
+    warnings << "Shape is Ellipsoid but no axes array is set: drawing spheres. ";
+  }
+  else
+  {
+    axesArray = GetComponentsPointArray(
+      input, this->AxesArrayName, "Axes", this->AxesArrayComponent, 3, "drawing spheres", warnings);
+  }
+  if (!axesArray)
+  {
+    return false;
+  }
+  vtkDataArray* orientationArray =
+    GetComponentsPointArray(input, this->OrientationArrayName, "Orientation",
+      this->OrientationArrayComponent, 4, "drawing the ellipsoids axis-aligned", warnings);
+  internals.Axes->SetNumberOfTuples(numPts);
+  internals.Orientations->SetNumberOfTuples(numPts);
+  boundingRadii->SetNumberOfTuples(numPts);
+  const EllipsoidSummary summary =
+    CheckEllipsoids(axesArray, this->AxesArrayComponent, this->AxesAreDiameters, orientationArray,
+      this->OrientationArrayComponent, internals.Axes->GetPointer(0),
+      internals.Orientations->GetPointer(0), boundingRadii->GetPointer(0), numPts);
+  internals.Axes->Modified();
+  internals.Orientations->Modified();
+  if (summary.BadOrientation > 0)
+  {
+    warnings << summary.BadOrientation << " of " << numPts
+             << " particles have a zero, NaN or infinite orientation quaternion: drawn "
+                "axis-aligned. ";
+  }
+  if (summary.NonUnitOrientation > 0)
+  {
+    warnings << summary.NonUnitOrientation << " of " << numPts
+             << " particles have an orientation quaternion whose length is not 1 (up to "
+             << summary.WorstLength << "): normalised. ";
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::GetDrawsEllipsoids()
+{
+  this->PrepareParticles();
+  return this->Internals->Ellipsoids;
+}
+
+//------------------------------------------------------------------------------
+vtkFloatArray* vtkParticleSphereMapper::GetParticleAxes()
+{
+  this->PrepareParticles();
+  return this->Internals->Ellipsoids ? this->Internals->Axes.GetPointer() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkFloatArray* vtkParticleSphereMapper::GetParticleOrientations()
+{
+  this->PrepareParticles();
+  return this->Internals->Ellipsoids ? this->Internals->Orientations.GetPointer() : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -604,6 +883,18 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
     gs, "in vec4 vertexColorVSOutput[];", "flat in vec4 vertexColorVSOutput[];");
   vtkShaderProgram::Substitute(
     gs, "out vec4 vertexColorGSOutput;", "flat out vec4 vertexColorGSOutput;");
+  // the ellipsoid variant (EllipsoidFrame.glsl), in all three stages
+  this->Internals->BuiltEllipsoids = this->Internals->Ellipsoids;
+  if (this->Internals->Ellipsoids)
+  {
+    for (std::string* source : { &vs, &gs, &fs })
+    {
+      vtkShaderProgram::Substitute(
+        *source, "//VTK::System::Dec", "//VTK::System::Dec\n#define PR_ELLIPSOID\n", false);
+    }
+    shaders[vtkShader::Vertex]->SetSource(vs);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
   // the per-sphere occlusion test, only where the culler draws this program
   if (this->GetOcclusionCullingCompiled(ren))
   {
@@ -646,6 +937,14 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
   {
     shaders[type]->SetSource(vtkParticleShaders::ResolveIncludes(shaders[type]->GetSource()));
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleSphereMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
+    this->Internals->BuiltEllipsoids != this->Internals->Ellipsoids;
 }
 
 //------------------------------------------------------------------------------
@@ -822,6 +1121,11 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
     program->SetUniform2f("clipZWOfTranslation", clipZW);
   }
 
+  if (program->IsUniformUsed("axesToVC"))
+  {
+    this->SetEllipsoidUniforms(program, ren, actor);
+  }
+
   if (this->UseClipBox && program->IsUniformUsed("prClipBoxAxes"))
   {
     // the box in buffer coordinates (the VBO shift/scale is a translation and an axis scale),
@@ -859,6 +1163,55 @@ void vtkParticleSphereMapper::SetCameraShaderParameters(
     linear->Transpose();
     program->SetUniformMatrix("prClipBoxAxes", linear);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::GetAxesToViewMatrix(
+  vtkRenderer* ren, vtkActor* actor, double axesToView[3][3])
+{
+  vtkMatrix4x4* view = ren->GetActiveCamera()->GetModelViewTransformMatrix();
+  vtkNew<vtkMatrix4x4> modelToView;
+  if (actor && !actor->GetIsIdentity())
+  {
+    vtkMatrix4x4::Multiply4x4(view, actor->GetMatrix(), modelToView);
+  }
+  else
+  {
+    modelToView->DeepCopy(view);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      axesToView[i][j] = this->RadiusScaleFactor * modelToView->GetElement(i, j);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleSphereMapper::SetEllipsoidUniforms(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* actor)
+{
+  // A = axesToVC R(q) diag(a) (EllipsoidFrame.glsl): the model -> view linear map without the
+  // VBO shift/scale (axes are lengths in model units), and its inverse, both in double
+  double axesToView[3][3];
+  this->GetAxesToViewMatrix(ren, actor, axesToView);
+  double inverse[3][3];
+  vtkMath::Invert3x3(axesToView, inverse);
+  // SetUniformMatrix uploads the elements in storage order, which GLSL reads column-major:
+  // upload the transposes
+  vtkNew<vtkMatrix3x3> forward;
+  vtkNew<vtkMatrix3x3> backward;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      forward->SetElement(j, i, axesToView[i][j]);
+      backward->SetElement(j, i, inverse[i][j]);
+    }
+  }
+  program->SetUniformMatrix("axesToVC", forward);
+  program->SetUniformMatrix("vcToAxes", backward);
 }
 
 //------------------------------------------------------------------------------
@@ -1011,6 +1364,12 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
   }
   this->VBOs->CacheDataArray("radiusMC", internals.UploadedRadii, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray("scalarColor", colors, ren, VTK_UNSIGNED_CHAR);
+  // ellipsoids: semi-axes and quaternions (28 more bytes per particle); none for spheres
+  internals.UploadedAxes = internals.Ellipsoids ? this->StrideForUpload(internals.Axes) : nullptr;
+  internals.UploadedOrientations =
+    internals.Ellipsoids ? this->StrideForUpload(internals.Orientations) : nullptr;
+  this->VBOs->CacheDataArray("axesMC", internals.UploadedAxes, ren, VTK_FLOAT);
+  this->VBOs->CacheDataArray("orientationMC", internals.UploadedOrientations, ren, VTK_FLOAT);
   this->CacheParticleAttributes(ren, act);
   this->VBOs->BuildAllVBOs(ren);
   if (reportProgress)
@@ -1439,6 +1798,14 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusArrayName: " << (this->RadiusArrayName ? this->RadiusArrayName : "(none)")
      << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "Shape: " << (this->Shape == ELLIPSOID ? "Ellipsoid" : "Sphere") << "\n";
+  os << indent << "AxesArrayName: " << (this->AxesArrayName ? this->AxesArrayName : "(none)")
+     << "\n";
+  os << indent << "AxesArrayComponent: " << this->AxesArrayComponent << "\n";
+  os << indent << "AxesAreDiameters: " << this->AxesAreDiameters << "\n";
+  os << indent << "OrientationArrayName: "
+     << (this->OrientationArrayName ? this->OrientationArrayName : "(none)") << "\n";
+  os << indent << "OrientationArrayComponent: " << this->OrientationArrayComponent << "\n";
   os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
   os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";

@@ -46,6 +46,25 @@
  * vtkOpenGLRenderPass::PreReplaceShaderValues and PostReplaceShaderValues both see them. The
  * contract (hooks, names in scope, per-sphere varyings, warnings) is vtkParticleShaderHooks.
  *
+ * Oriented ellipsoids (Shape ELLIPSOID): every particle is the unit sphere under the affine map
+ * x = centre + A u with A = L R(q) diag(a) -- a the semi-axes (a 3-component point array, or
+ * three components of a wider one; halved when AxesAreDiameters), q the unit quaternion
+ * (w, x, y, z) of the particle's body frame (LAMMPS's convention: body vector b is R(q) b in the
+ * data), L the linear part of the actor's matrix and the camera's view times RadiusScaleFactor.
+ * An affine map keeps rays and their parameters, so the sphere core generalises exactly
+ * (Shaders/Core/EllipsoidFrame.glsl, RaySphere.glsl, SphereImposter.glsl): the fragment's ray
+ * is intersected with the unit sphere in the ellipsoid's frame (exact entry and exit, depth
+ * written as for spheres, relative to the centre, so a far camera stays exact), the normal is
+ * A^-T A^-1 x, and the imposter is the sphere's triangle around the unit sphere's silhouette
+ * mapped back by A: it circumscribes the ellipsoid's silhouette ellipse with the sphere's
+ * fragment overhead at any axis ratio. The radius used for bounds, occlusion culling, clip boxes
+ * and partitions is the largest semi-axis. With equal axes and a uniform actor scale the picture
+ * is the sphere core's. Bad input, one warning per change: no usable axes array (missing, not
+ * numeric, fewer than AxesArrayComponent + 3 components): spheres as without Shape; an axis that
+ * is zero, negative, NaN or infinite: the particle is skipped; no orientation array: every
+ * ellipsoid axis-aligned (the array named but unusable: the same, with a warning); a quaternion
+ * that is zero or not finite: axis-aligned; one whose length is not 1 within 1e-3: normalised.
+ *
  * Picking: the hardware selector's point and cell ids are the particle (point) index. Above
  * MaximumNumberOfParticles every k-th particle is drawn, with a warning.
  * Clipping planes clip whole particles by their centre.
@@ -70,6 +89,7 @@ class vtkOpenGLBufferObject;
 class vtkOpenGLVertexBufferObject;
 class vtkParticleFrameBudget;
 class vtkParticleOcclusionCuller;
+class vtkShaderProgram;
 
 class VTKPARTICLERENDERINGCORE_EXPORT vtkParticleSphereMapper : public vtkOpenGLPolyDataMapper
 {
@@ -87,6 +107,73 @@ public:
   vtkSetStringMacro(RadiusArrayName);
   vtkGetStringMacro(RadiusArrayName);
   ///@}
+
+  enum ShapeType
+  {
+    SPHERE = 0,
+    ELLIPSOID = 1
+  };
+
+  ///@{
+  /**
+   * The particle shape: SPHERE (default; RadiusArrayName or Radius) or ELLIPSOID (oriented
+   * ellipsoids from AxesArrayName and OrientationArrayName; see the class description).
+   */
+  vtkSetClampMacro(Shape, int, SPHERE, ELLIPSOID);
+  vtkGetMacro(Shape, int);
+  void SetShapeToSphere() { this->SetShape(SPHERE); }
+  void SetShapeToEllipsoid() { this->SetShape(ELLIPSOID); }
+  ///@}
+
+  ///@{
+  /**
+   * Ellipsoids: the numeric point array holding each particle's three semi-axes (along its body
+   * x, y, z) in components AxesArrayComponent .. AxesArrayComponent + 2 (default 0), e.g. the
+   * columns c_ID[1..3] of a LAMMPS compute property/atom that the dump reader gathers into one
+   * array. AxesAreDiameters (default off) halves them (LAMMPS's shapex/y/z are diameters).
+   */
+  vtkSetStringMacro(AxesArrayName);
+  vtkGetStringMacro(AxesArrayName);
+  vtkSetClampMacro(AxesArrayComponent, int, 0, VTK_INT_MAX);
+  vtkGetMacro(AxesArrayComponent, int);
+  vtkSetMacro(AxesAreDiameters, bool);
+  vtkGetMacro(AxesAreDiameters, bool);
+  vtkBooleanMacro(AxesAreDiameters, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Ellipsoids: the numeric point array holding each particle's orientation as a quaternion
+   * (w, x, y, z) in components OrientationArrayComponent .. + 3 (default 0; LAMMPS's quatw, quati,
+   * quatj, quatk). Empty (the default): axis-aligned ellipsoids.
+   */
+  vtkSetStringMacro(OrientationArrayName);
+  vtkGetStringMacro(OrientationArrayName);
+  vtkSetClampMacro(OrientationArrayComponent, int, 0, VTK_INT_MAX);
+  vtkGetMacro(OrientationArrayComponent, int);
+  ///@}
+
+  /**
+   * Whether the last prepared input is drawn as ellipsoids: Shape is ELLIPSOID and the axes array
+   * is usable (valid after a render or GetBounds()).
+   */
+  bool GetDrawsEllipsoids();
+
+  /**
+   * Ellipsoids as drawn, valid with GetDrawsEllipsoids(): the semi-axes (3 components, model
+   * units before RadiusScaleFactor, 0 for skipped particles) and the unit quaternions (w, x, y,
+   * z) of every input point. nullptr when spheres are drawn. For the reference renderer and
+   * passes that deposit the particles' volume.
+   */
+  vtkFloatArray* GetParticleAxes();
+  vtkFloatArray* GetParticleOrientations();
+
+  /**
+   * The map of ellipsoid semi-axes to view coordinates: the linear part of camera view * actor
+   * matrix (no VBO shift/scale: axes are model-unit lengths) times RadiusScaleFactor, in double.
+   * The reference renderer and the ellipsoid uniforms use it.
+   */
+  void GetAxesToViewMatrix(vtkRenderer* ren, vtkActor* actor, double axesToView[3][3]);
 
   ///@{
   /**
@@ -349,6 +436,8 @@ protected:
 
   void BuildShaders(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  // a new variant also when the input switches between spheres and ellipsoids
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   // per-frame uniforms (camera, radius scale, depth split)
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
@@ -382,6 +471,9 @@ protected:
    * precision-critical product is formed (shaders, depth sort).
    */
   void GetBufferToViewMatrix(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* bufferToView);
+
+  // the uniforms axesToVC and vcToAxes of the ellipsoid variant (EllipsoidFrame.glsl)
+  void SetEllipsoidUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* actor);
 
   /**
    * Whether the geometry stage being built gets the per-sphere occlusion test
@@ -455,8 +547,22 @@ protected:
    */
   vtkIdType PrepareParticles();
 
+  /**
+   * With Shape ELLIPSOID and a usable axes array: the semi-axes and unit quaternions of every
+   * particle (the internal arrays behind GetParticleAxes()), the largest semi-axis per particle
+   * in boundingRadii (NaN where an axis is bad), problems appended to warnings; returns true.
+   * Otherwise false (spheres).
+   */
+  bool PrepareEllipsoids(vtkPolyData* input, vtkFloatArray* boundingRadii, std::ostream& warnings);
+
   char* RadiusArrayName = nullptr;
   double Radius = 0.5;
+  int Shape = SPHERE;
+  char* AxesArrayName = nullptr;
+  int AxesArrayComponent = 0;
+  bool AxesAreDiameters = false;
+  char* OrientationArrayName = nullptr;
+  int OrientationArrayComponent = 0;
   double RadiusScaleFactor = 1.0;
   // the clip box (SetClipBox) and whether it is set
   double ClipBox[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };

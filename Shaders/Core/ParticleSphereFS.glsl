@@ -1,7 +1,8 @@
 //VTK::System::Dec
 //=========================================================================
 // ParticleSphereFS.glsl -- fragment stage of vtkParticleSphereMapper: ray-cast
-// sphere with exact depth, lit with VTK's lights and material.
+// sphere (or, with PR_ELLIPSOID, oriented ellipsoid: radiusVC then bounds it) with
+// exact depth, lit with VTK's lights and material.
 //
 // Visible surface: the first ray/sphere intersection that lies in front of the
 // eye and between the near and far planes. From outside that is the front
@@ -34,6 +35,10 @@ flat in vec3 centerOffsetVCVSOutput;
 in vec3 offsetVCVSOutput;
 in vec3 rayVCVSOutput;
 flat in int particleIdVSOutput;
+#ifdef PR_ELLIPSOID
+// view-coordinate offsets from the centre -> the unit sphere (EllipsoidFrame.glsl)
+flat in mat3 ellipsoidToUnitVSOutput;
+#endif
 
 //VTK::CustomUniforms::Dec
 //VTK::Color::Dec
@@ -60,7 +65,11 @@ void main()
   vec3 prRayD = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(rayVCVSOutput);
   float prT0;
   float prT1;
+#ifdef PR_ELLIPSOID
+  bool prHit = prIntersectEllipsoid(prRayS, prRayD, ellipsoidToUnitVSOutput, prT0, prT1);
+#else
   bool prHit = prIntersectSphere(prRayS, prRayD, radiusVC, prT0, prT1);
+#endif
   //PR::Surface::Impl
   //PR::Coverage::Impl
   if (!prHit)
@@ -85,7 +94,11 @@ void main()
   gl_FragDepth = depth;
 #endif
   vec4 vertexVC = vec4(centerVC + hitRel, 1.0);
+#ifdef PR_ELLIPSOID
+  vec3 normalVCVSOutput = prEllipsoidNormal(prInside ? -hitRel : hitRel, ellipsoidToUnitVSOutput);
+#else
   vec3 normalVCVSOutput = (prInside ? -hitRel : hitRel) / radiusVC;
+#endif
   //PR::Surface::Normal
 
   //VTK::PositionVC::Impl

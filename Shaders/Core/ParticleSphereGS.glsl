@@ -1,7 +1,8 @@
 //VTK::System::Dec
 //=========================================================================
 // ParticleSphereGS.glsl -- geometry stage of vtkParticleSphereMapper: one
-// camera-facing triangle per particle (SphereImposter.glsl). Invalid particles
+// camera-facing triangle per particle (SphereImposter.glsl; for ellipsoids, PR_ELLIPSOID,
+// one circumscribing the ellipsoid's silhouette). Invalid particles
 // (radius <= 0, NaN or Inf) emit nothing. VTK's shader cache renames the
 // fragment stage's *VSOutput inputs to the *GSOutput outputs written here.
 // Hooks: //PR::Sphere::Dec (declarations, e.g. extra per-sphere inputs and
@@ -22,6 +23,11 @@ uniform vec2 clipZWOfTranslation;
 in vec4 centerRadiusVCVSOutput[];
 in vec3 centerOffsetVCVSOutput[];
 flat in int particleIdVSOutput[];
+#ifdef PR_ELLIPSOID
+flat in mat3 ellipsoidToVCVSOutput[];
+flat in mat3 ellipsoidToUnitVSOutput[];
+flat out mat3 ellipsoidToUnitGSOutput;
+#endif
 
 flat out vec4 centerRadiusVCGSOutput;
 flat out vec3 centerOffsetVCGSOutput;
@@ -56,8 +62,14 @@ void main()
   vec3 raysVC[3];
   for (int corner = 0; corner < 3; ++corner)
   {
+#ifdef PR_ELLIPSOID
+    prEllipsoidBillboard(centerVC, ellipsoidToVCVSOutput[0], ellipsoidToUnitVSOutput[0], corner,
+      cameraParallel != 0, VCDCMatrix, DCVCMatrix, cornersDC[corner], offsetsVC[corner],
+      raysVC[corner]);
+#else
     prSphereBillboard(centerVC, radiusVC, corner, cameraParallel != 0, VCDCMatrix, DCVCMatrix,
       cornersDC[corner], offsetsVC[corner], raysVC[corner]);
+#endif
   }
 #ifdef PR_OCCLUSION_CULLING
   // hidden behind the depth already drawn (vtkParticleOcclusionCuller)
@@ -98,6 +110,9 @@ void main()
     centerRadiusVCGSOutput = centerRadiusVCVSOutput[0];
     centerOffsetVCGSOutput = centerOffsetVCVSOutput[0];
     particleIdGSOutput = particleIdVSOutput[0];
+#ifdef PR_ELLIPSOID
+    ellipsoidToUnitGSOutput = ellipsoidToUnitVSOutput[0];
+#endif
     //VTK::PrimID::Impl
     //VTK::Color::Impl
     //VTK::Clip::Impl

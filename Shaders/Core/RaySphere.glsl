@@ -1,5 +1,5 @@
 //=========================================================================
-// RaySphere.glsl -- ray/sphere intersection shared by every particle mapper.
+// RaySphere.glsl -- ray/sphere and ray/ellipsoid intersection shared by every particle mapper.
 //
 // The ray is described relative to the sphere centre: s is a point of the ray
 // relative to the centre (|s| is of the order of the radius, never of the eye
@@ -26,6 +26,29 @@ bool prIntersectSphere(vec3 s, vec3 d, float r, out float t0, out float t1)
   t0 = -b - h;
   t1 = -b + h;
   return true;
+}
+
+// Ray/ellipsoid intersection: the ellipsoid is the unit sphere under the affine map
+// x = centre + A u; toUnit = A^-1 takes view-coordinate offsets from the centre to the unit
+// sphere's frame. The map keeps the ray parameter, so the unit-frame ray (toUnit s, toUnit d) is
+// intersected with the unit sphere in the centre-relative form above (its direction normalised,
+// of length |toUnit d|) and the parameters are scaled back: t0 <= t1 are measured along d from
+// s exactly as for a sphere. Equal axes r give toUnit = R^T / r and the sphere's hits.
+bool prIntersectEllipsoid(vec3 s, vec3 d, mat3 toUnit, out float t0, out float t1)
+{
+  vec3 du = toUnit * d;
+  float len = length(du);
+  bool hit = prIntersectSphere(toUnit * s, du / len, 1.0, t0, t1);
+  t0 /= len;
+  t1 /= len;
+  return hit && len > 0.0;
+}
+
+// Unit outward normal of the ellipsoid at the view-coordinate offset rel from its centre: the
+// gradient of |toUnit x|^2, toUnit^T toUnit rel.
+vec3 prEllipsoidNormal(vec3 rel, mat3 toUnit)
+{
+  return normalize(transpose(toUnit) * (toUnit * rel));
 }
 
 // Depth-buffer value and visibility of the view-coordinate point T + offsetVC. A point is

@@ -1,8 +1,9 @@
 //=========================================================================
 // SphereImposter.glsl -- geometry-stage set-up of one camera-facing triangle per
-// sphere (corner 0..2). One triangle, not a quad: half the vertices and half
-// the triangle set-ups per sphere, for 30% more (cheaply discarded) fragments;
-// with millions of few-pixel spheres the per-triangle cost dominates.
+// sphere or ellipsoid (corner 0..2; ellipsoids: prEllipsoidBillboard at the end).
+// One triangle, not a quad: half the vertices and half the triangle set-ups per
+// sphere, for 30% more (cheaply discarded) fragments; with millions of few-pixel
+// spheres the per-triangle cost dominates.
 //
 // Perspective: the triangle is the equilateral triangle circumscribing the
 // sphere's silhouette circle (where the tangent cone from the eye touches the
@@ -31,6 +32,42 @@ const vec2 prTriangleCorners[3] = vec2[3](vec2(0.0, 2.0), vec2(-1.7320508, -1.0)
 // corners of a triangle covering the viewport [-1,1]^2
 const vec2 prViewportCorners[3] = vec2[3](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
 
+// An orthonormal pair u, v perpendicular to the unit vector dir.
+void prBasisAround(vec3 dir, out vec3 u, out vec3 v)
+{
+  vec3 helper = abs(dir.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  u = normalize(cross(dir, helper));
+  v = cross(u, dir);
+}
+
+// Perspective: the corner c (of prTriangleCorners) of the triangle circumscribing the silhouette
+// circle of a sphere of radius r whose centre is at `center` (distance dist > r) from the eye,
+// relative to the centre.
+vec3 prSilhouetteTriangleOffset(vec3 center, float dist, float r, vec2 c)
+{
+  vec3 dir = center / dist;
+  vec3 u;
+  vec3 v;
+  prBasisAround(dir, u, v);
+  float rr = r / dist;
+  float silhouetteRadius = r * sqrt(max(0.0, 1.0 - rr * rr));
+  return -dir * (r * rr) + silhouetteRadius * (c.x * u + c.y * v);
+}
+
+// Eye inside or at the surface of a particle: the corner of a triangle covering the viewport,
+// its point on the near plane (see prSphereBillboard).
+void prViewportBillboard(vec3 centerVC, int corner, mat4 dcvc, out vec4 positionDC,
+  out vec3 offsetVC, out vec3 rayVC)
+{
+  vec2 v = prViewportCorners[corner];
+  vec4 nearVC = dcvc * vec4(v, -1.0, 1.0);
+  // the ray direction from the near-plane point itself: centerVC + offsetVC would cancel
+  // (the eye is within a radius of the centre, the near plane much closer to the eye)
+  rayVC = nearVC.xyz / nearVC.w;
+  offsetVC = rayVC - centerVC;
+  positionDC = vec4(v, 0.0, 1.0);
+}
+
 void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel, mat4 vcdc,
   mat4 dcvc, out vec4 positionDC, out vec3 offsetVC, out vec3 rayVC)
 {
@@ -47,25 +84,51 @@ void prSphereBillboard(vec3 centerVC, float radiusVC, int corner, bool parallel,
     if (dist <= 1.2 * radiusVC)
     {
       // eye inside or at the surface: cover the viewport, rays start at the near plane
-      vec2 v = prViewportCorners[corner];
-      vec4 nearVC = dcvc * vec4(v, -1.0, 1.0);
-      // the ray direction from the near-plane point itself: centerVC + offsetVC would cancel
-      // (the eye is within a radius of the centre, the near plane much closer to the eye)
-      rayVC = nearVC.xyz / nearVC.w;
-      offsetVC = rayVC - centerVC;
-      positionDC = vec4(v, 0.0, 1.0);
+      prViewportBillboard(centerVC, corner, dcvc, positionDC, offsetVC, rayVC);
       return;
     }
-    vec3 dir = centerVC / dist;
-    vec3 helper = abs(dir.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
-    vec3 u = normalize(cross(dir, helper));
-    vec3 v = cross(u, dir);
-    float rr = radiusVC / dist;
-    float silhouetteRadius = radiusVC * sqrt(max(0.0, 1.0 - rr * rr));
-    offsetVC = -dir * (radiusVC * rr) + silhouetteRadius * (c.x * u + c.y * v);
+    offsetVC = prSilhouetteTriangleOffset(centerVC, dist, radiusVC, c);
     positionDC = vcdc * vec4(centerVC + offsetVC, 1.0);
   }
   // a point of the ray seen from the eye (the direction is all that is used)
+  rayVC = centerVC + offsetVC;
+  positionDC.z = 0.0;
+}
+
+// The ellipsoid x = centre + A u (|u| <= 1; toVC = A, toUnit = A^-1, view coordinates): the
+// sphere's triangle set up for the unit sphere in the ellipsoid's own frame, its corners mapped
+// back by A. An affine map takes the rays from the eye (or the parallel rays) to rays, the
+// unit sphere's silhouette circle to the ellipsoid's silhouette ellipse and the circumscribing
+// triangle to a triangle circumscribing that ellipse, so the projected triangle covers the
+// projected ellipsoid exactly with the sphere's fragment overhead, whatever the axis ratio.
+// Parallel: the unit frame's rays run along toUnit * (0, 0, -1); the triangle lies in the plane
+// through the centre perpendicular to them. Eye within 1.2 (in the unit frame) of the centre:
+// the viewport triangle, as for spheres.
+void prEllipsoidBillboard(vec3 centerVC, mat3 toVC, mat3 toUnit, int corner, bool parallel,
+  mat4 vcdc, mat4 dcvc, out vec4 positionDC, out vec3 offsetVC, out vec3 rayVC)
+{
+  vec2 c = 1.0001 * prTriangleCorners[corner];
+  vec3 offsetU;
+  if (parallel)
+  {
+    vec3 u;
+    vec3 v;
+    prBasisAround(normalize(toUnit * vec3(0.0, 0.0, -1.0)), u, v);
+    offsetU = c.x * u + c.y * v;
+  }
+  else
+  {
+    vec3 centerU = toUnit * centerVC; // the centre relative to the eye, in the unit frame
+    float dist = length(centerU);
+    if (dist <= 1.2)
+    {
+      prViewportBillboard(centerVC, corner, dcvc, positionDC, offsetVC, rayVC);
+      return;
+    }
+    offsetU = prSilhouetteTriangleOffset(centerU, dist, 1.0, c);
+  }
+  offsetVC = toVC * offsetU;
+  positionDC = vcdc * vec4(centerVC + offsetVC, 1.0);
   rayVC = centerVC + offsetVC;
   positionDC.z = 0.0;
 }

@@ -175,8 +175,20 @@ struct RayCamera
 struct SphereVC
 {
   double C[3];
-  double R;
+  double R; // the radius; for an ellipsoid the radius of the smallest sphere about C holding it
+  // an oriented ellipsoid x = C + ToVC u, |u| <= 1 (ToUnit = ToVC^-1), when Ellipsoid is set
+  bool Ellipsoid = false;
+  double ToVC[3][3];
+  double ToUnit[3][3];
 };
+
+inline void Apply3x3(const double m[3][3], const double v[3], double out[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
+  }
+}
 
 // A hit along a ray
 struct Hit
@@ -197,6 +209,52 @@ inline void HitGeometry(const Hit& hit, const SphereVC& s, double n[3], double p
     n[k] = (hit.Inside ? -hit.Rel[k] : hit.Rel[k]) / s.R;
     p[k] = s.C[k] + hit.Rel[k];
   }
+  if (s.Ellipsoid)
+  {
+    // the gradient of |ToUnit x|^2: ToUnit^T ToUnit x
+    double u[3];
+    Apply3x3(s.ToUnit, hit.Rel, u);
+    for (int k = 0; k < 3; ++k)
+    {
+      const double g = s.ToUnit[0][k] * u[0] + s.ToUnit[1][k] * u[1] + s.ToUnit[2][k] * u[2];
+      n[k] = hit.Inside ? -g : g;
+    }
+    NormalizeInPlace(n);
+  }
+}
+
+// The ray (o, d) against the ellipsoid s in its unit frame: false when it misses; otherwise the
+// unit-frame closest approach q to the centre, the unit-frame direction dd (unit), its length
+// scale L (a ray parameter t is u / L for the unit-frame parameter u from q) and the half chord
+// h (unit frame): the hits are at u = -b -+ h, b = the unit-frame parameter of q from o.
+inline bool EllipsoidChord(const double o[3], const double d[3], const SphereVC& s, double q[3],
+  double dd[3], double& length, double& b, double& h)
+{
+  const double rel[3] = { o[0] - s.C[0], o[1] - s.C[1], o[2] - s.C[2] };
+  double su[3];
+  Apply3x3(s.ToUnit, rel, su);
+  Apply3x3(s.ToUnit, d, dd);
+  length = std::sqrt(Dot(dd, dd));
+  if (!(length > 0.0))
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    dd[k] /= length;
+  }
+  b = Dot(su, dd);
+  for (int k = 0; k < 3; ++k)
+  {
+    q[k] = su[k] - b * dd[k];
+  }
+  const double h2 = 1.0 - Dot(q, q);
+  if (!(h2 >= 0.0))
+  {
+    return false;
+  }
+  h = std::sqrt(h2);
+  return true;
 }
 
 // Intersect the ray (o, d) with a sphere in the sphere-relative form of RaySphere.glsl and keep
@@ -205,6 +263,44 @@ inline void HitGeometry(const Hit& hit, const SphereVC& s, double n[3], double p
 inline void IntersectSphere(const RayCamera& cam, const double o[3], const double d[3],
   const SphereVC& s, vtkIdType index, Hit& best)
 {
+  if (s.Ellipsoid)
+  {
+    // in the unit frame, the hits relative to the centre mapped back by ToVC (no cancellation)
+    double q[3];
+    double dd[3];
+    double length;
+    double b;
+    double h;
+    if (!EllipsoidChord(o, d, s, q, dd, length, b, h))
+    {
+      return;
+    }
+    for (int side = 0; side < 2; ++side)
+    {
+      const double sign = side == 0 ? -1.0 : 1.0;
+      const double t = (-b + sign * h) / length;
+      if (t > best.T || (t == best.T && index < best.Index))
+      {
+        return;
+      }
+      const double unitHit[3] = { q[0] + sign * h * dd[0], q[1] + sign * h * dd[1],
+        q[2] + sign * h * dd[2] };
+      double rel[3];
+      Apply3x3(s.ToVC, unitHit, rel);
+      const double p[3] = { s.C[0] + rel[0], s.C[1] + rel[1], s.C[2] + rel[2] };
+      double depth;
+      if (cam.Depth(p, depth))
+      {
+        best.T = t;
+        best.Depth = depth;
+        std::copy(rel, rel + 3, best.Rel);
+        best.Index = index;
+        best.Inside = side == 1;
+        return;
+      }
+    }
+    return;
+  }
   const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
   const double tc = Dot(oc, d);
   // closest approach point of the ray, relative to the centre

@@ -250,6 +250,54 @@ void vtkParticleReferenceRenderer::GetSurfaceIdImage(vtkIdTypeArray* surfaceIds)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The ellipsoid x = C + A u of semi-axes a and unit quaternion q (w, x, y, z) under the linear
+// map axesToView (vtkParticleSphereMapper::GetAxesToViewMatrix): A = axesToView R(q) diag(a),
+// its inverse, and R the largest singular value of A (the radius of the smallest sphere about C
+// that holds the ellipsoid), all in double. False for a degenerate A.
+bool SetEllipsoid(
+  prReference::SphereVC& s, const double axesToView[3][3], const float* a, const float* qf)
+{
+  const double w = qf[0];
+  const double x = qf[1];
+  const double y = qf[2];
+  const double z = qf[3];
+  const double rotation[3][3] = {
+    { 1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y) },
+    { 2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x) },
+    { 2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y) },
+  };
+  double body[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      body[i][j] = rotation[i][j] * a[j];
+    }
+  }
+  vtkMath::Multiply3x3(axesToView, body, s.ToVC);
+  if (!(std::abs(vtkMath::Determinant3x3(s.ToVC)) > 0.0))
+  {
+    return false;
+  }
+  vtkMath::Invert3x3(s.ToVC, s.ToUnit);
+  double gram[3][3];
+  double transposed[3][3];
+  vtkMath::Transpose3x3(s.ToVC, transposed);
+  vtkMath::Multiply3x3(transposed, s.ToVC, gram);
+  double eigenvalues[3];
+  double eigenvectors[3][3];
+  vtkMath::Diagonalize3x3(gram, eigenvalues, eigenvectors);
+  const double largest = std::max({ eigenvalues[0], eigenvalues[1], eigenvalues[2] });
+  // (a hair larger: the grid's cells must hold the whole ellipsoid)
+  s.R = std::sqrt(std::max(largest, 0.0)) * (1.0 + 1e-12);
+  s.Ellipsoid = true;
+  return std::isfinite(s.R) && s.R > 0.0;
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkParticleReferenceRenderer::Render()
 {
   const double startTime = vtkTimerLog::GetUniversalTime();
@@ -360,6 +408,25 @@ bool vtkParticleReferenceRenderer::Render()
   vtkProperty* property = this->Actor->GetProperty();
   const double opacity = property->GetOpacity();
 
+  // ---- oriented ellipsoids (the mapper's semi-axes and unit quaternions, as uploaded)
+  vtkFloatArray* ellipsoidAxes = numPts > 0 ? mapper->GetParticleAxes() : nullptr;
+  vtkFloatArray* ellipsoidOrientations =
+    ellipsoidAxes ? mapper->GetParticleOrientations() : nullptr;
+  double axesToView[3][3];
+  if (ellipsoidAxes)
+  {
+    if (given)
+    {
+      return fail("SetParticleAttributes() gives radii, but the mapper draws ellipsoids.");
+    }
+    if (mapper->IsA("vtkTransparentSphereMapper") || mapper->IsA("vtkMetaballMapper") ||
+      this->AmbientOcclusionSamples > 0)
+    {
+      return fail("Ellipsoids are rendered in the opaque mode without ambient occlusion only.");
+    }
+    mapper->GetAxesToViewMatrix(this->Renderer, this->Actor, axesToView);
+  }
+
   // ---- transparent mode: the model's parameters and Theta_a
   vtkTransparentSphereMapper* transparentMapper = vtkTransparentSphereMapper::SafeDownCast(mapper);
   const bool transparent = transparentMapper != nullptr;
@@ -468,6 +535,12 @@ bool vtkParticleReferenceRenderer::Render()
         s.C[k] = c[k] / c[3];
       }
       s.R = r;
+      if (ellipsoidAxes &&
+        !SetEllipsoid(s, axesToView, ellipsoidAxes->GetPointer(3 * i),
+          ellipsoidOrientations->GetPointer(4 * i)))
+      {
+        continue;
+      }
       if (!std::isfinite(s.C[0]) || !std::isfinite(s.C[1]) || !std::isfinite(s.C[2]))
       {
         continue;

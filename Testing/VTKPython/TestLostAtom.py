@@ -95,7 +95,7 @@ for translucent in (False, True):
     check(bad == 0, "%s: the lost atom itself is off in %d pixels" % (kind, bad))
 
 # ---- a lone small particle (or a tight group) away from the origin
-from prMetaballTesting import compare  # noqa: E402
+from prVTKTesting import compare  # noqa: E402
 
 TINY = 1e-6
 GROUPS = {"one particle": np.array([[0.0, 0.0, 0.0]]),

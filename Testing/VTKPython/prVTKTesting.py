@@ -1,5 +1,6 @@
 """Shared helpers of the plain-VTK-Python tests of ParticleRendering: a check that records
-failures, the closing line, and the capture of an object's VTK errors and warnings."""
+failures, the closing line, the capture of an object's VTK errors and warnings, scenes, and the
+depth, coverage and normal errors of a picture against vtkParticleReferenceRenderer (compare)."""
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
@@ -308,3 +309,109 @@ def gas_and_slab(count=100000, seed=7):
     xyz = np.vstack([slab, gas])
     kinds = np.r_[np.ones(len(slab), np.int32), np.full(n_gas, 2, np.int32)]
     return xyz, np.full(len(xyz), 0.5, np.float32), kinds
+
+
+def gpu_view_depth(window, reference):
+    """The window's depth buffer as distances along the reference's pixel rays (-1: none)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    width, height = window.GetSize()
+    z = vtkFloatArray()
+    window.GetZbufferData(0, 0, width - 1, height - 1, z)
+    image = vtkImageData()
+    image.SetDimensions(width, height, 1)
+    image.GetPointData().SetScalars(z)
+    out = vtkImageData()
+    reference.WindowDepthToViewDepth(image, out)
+    return vtk_to_numpy(out.GetPointData().GetScalars()).copy()
+
+
+def gpu_normals(window, actor):
+    """The view-coordinate normals the mapper lights with (vtkLightingMapPass's normal output,
+    8 bits per component), one unit vector per pixel."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+    from vtkmodules.vtkRenderingOpenGL2 import vtkLightingMapPass
+    keys = actor.GetPropertyKeys()
+    from vtkmodules.vtkCommonCore import vtkInformation
+    info = vtkInformation()
+    info.Set(vtkLightingMapPass.RENDER_NORMALS(), 1)
+    actor.SetPropertyKeys(info)
+    actor.GetMapper().Modified()  # the keys alone do not rebuild the shaders
+    window.Render()
+    width, height = window.GetSize()
+    rgba = vtkUnsignedCharArray()
+    window.GetRGBACharPixelData(0, 0, width - 1, height - 1, 0, rgba)
+    actor.SetPropertyKeys(keys)
+    actor.GetMapper().Modified()
+    n = vtk_to_numpy(rgba)[:, :3].astype(np.float64) / 255.0 * 2.0 - 1.0
+    length = np.linalg.norm(n, axis=1)
+    return n / np.maximum(length, 1e-12)[:, None]
+
+
+def compare(window, renderer, actor, radius, normals=False):
+    """Render the reference of `actor` at the window's size and compare. Returns a dict:
+    covered (pixels both show), only_gpu, only_ref (pixels one of them shows; the reference's
+    pixels whose ray starts inside the surface are left out), depth errors in units of `radius`
+    (mean, p99, max over the covered pixels), max_window (the largest window-depth difference
+    outside silhouettes: the depth buffer's own resolution is 2^-24), silhouette (covered pixels whose reference depth
+    jumps by more than one radius to a neighbour: ill-conditioned, counted apart), max_smooth
+    (the largest error elsewhere), the masks both and smooth (covered, not silhouette), the GPU's
+    view depth gpu_depth, and with normals=True the normal angle errors in degrees."""
+    import numpy as np
+    import particlerendering as pr
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    width, height = window.GetSize()
+    reference = pr.vtkParticleReferenceRenderer()
+    reference.SetRenderer(renderer)
+    reference.SetActor(actor)
+    reference.SetImageSize(width, height)
+    reference.Render()
+    gt = gpu_view_depth(window, reference)
+    zbuffer = vtkFloatArray()
+    window.GetZbufferData(0, 0, width - 1, height - 1, zbuffer)
+    gz = vtk_to_numpy(zbuffer).astype(np.float64)
+    rz = vtk_to_numpy(reference.GetDepthImage().GetPointData().GetScalars())
+    rt = vtk_to_numpy(reference.GetViewDepthImage().GetPointData().GetScalars()).copy()
+    inside = vtk_to_numpy(reference.GetInsideImage()) != 0
+    both = (gt >= 0) & (rt >= 0)
+    err = np.where(both, np.abs(gt - rt), 0.0) / radius
+    grid = rt.reshape(height, width)
+    padded = np.pad(grid, 1, mode="edge")
+    jump = np.zeros_like(grid)
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            shifted = padded[1 + dy:1 + dy + height, 1 + dx:1 + dx + width]
+            jump = np.maximum(jump, np.where(shifted >= 0, np.abs(shifted - grid), np.inf))
+    silhouette = both & (jump.ravel() > radius)
+    e = err[both]
+    result = {
+        "covered": int(both.sum()),
+        "only_gpu": int(((gt >= 0) & (rt < 0) & ~inside).sum()),
+        "only_ref": int(((gt < 0) & (rt >= 0)).sum()),
+        "mean": float(e.mean()) if e.size else 0.0,
+        "p99": float(np.percentile(e, 99)) if e.size else 0.0,
+        "max": float(e.max()) if e.size else 0.0,
+        "silhouette": int(silhouette.sum()),
+        "max_window": float(np.abs(gz - rz)[both & ~silhouette].max())
+        if (both & ~silhouette).any() else 0.0,
+        "max_smooth": float(err[both & ~silhouette].max()) if (both & ~silhouette).any() else 0.0,
+        "reference_seconds": reference.GetLastRenderSeconds(),
+        "reference": reference,
+        "error": err,
+        "both": both,
+        "smooth": both & ~silhouette,
+        "gpu_depth": gt,
+    }
+    if normals:
+        nr = vtk_to_numpy(reference.GetNormalImage().GetPointData().GetScalars()).reshape(-1, 3)
+        ng = gpu_normals(window, actor)
+        cosine = np.clip(np.sum(nr * ng, axis=1), -1.0, 1.0)
+        angle = np.degrees(np.arccos(cosine))[both & ~silhouette]
+        result["normal_mean"] = float(angle.mean()) if angle.size else 0.0
+        result["normal_p99"] = float(np.percentile(angle, 99)) if angle.size else 0.0
+        window.Render()
+    return result
