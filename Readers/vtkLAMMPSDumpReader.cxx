@@ -106,6 +106,7 @@ struct Plan
   int RadiusArray = -1;   // "radius" column
   int DiameterArray = -1; // "diameter" column
   int ImageArray = -1;
+  int ShapeArray = -1; // "shapex shapey shapez" (diameters of ellipsoids)
   std::string Warning;
 };
 
@@ -262,6 +263,43 @@ void PlanVectors(const std::vector<std::string>& columns, Plan& plan, std::vecto
   }
 }
 
+// aspherical particles (atom_style ellipsoid): shapex shapey shapez -> "shape" (LAMMPS's
+// diameters; AddSemiAxes halves them), quatw quati quatj quatk -> "orientation" (w, i, j, k),
+// each when all its columns are there, in any column order
+void PlanEllipsoids(const std::vector<std::string>& columns, Plan& plan, std::vector<bool>& done)
+{
+  const std::vector<std::string> groups[2] = { { "shapex", "shapey", "shapez" },
+    { "quatw", "quati", "quatj", "quatk" } };
+  const char* const names[2] = { "shape", "orientation" };
+  for (int g = 0; g < 2; ++g)
+  {
+    std::vector<int> c;
+    for (const std::string& name : groups[g])
+    {
+      const int column = FindColumn(columns, name.c_str());
+      if (column < 0 || done[column])
+      {
+        break;
+      }
+      c.push_back(column);
+    }
+    if (c.size() != groups[g].size())
+    {
+      continue;
+    }
+    const int array = AddArray(plan, names[g], Kind::Float, static_cast<int>(c.size()));
+    for (size_t k = 0; k < c.size(); ++k)
+    {
+      plan.Columns[c[k]] = { Kind::Float, array, static_cast<int>(k) };
+      done[c[k]] = true;
+    }
+    if (g == 0)
+    {
+      plan.ShapeArray = array;
+    }
+  }
+}
+
 // bracketed vectors c_name[1] c_name[2] ... (consecutive, starting at 1)
 void PlanBracketedVectors(
   const std::vector<std::string>& columns, Plan& plan, std::vector<bool>& done)
@@ -360,6 +398,7 @@ Plan MakePlan(const std::vector<std::string>& columns, const std::vector<std::st
   ChoosePoints(present, positionSource, plan);
   PlanCoordinates(present, flavourColumns, plan, done);
   PlanVectors(columns, plan, done);
+  PlanEllipsoids(columns, plan, done);
   PlanBracketedVectors(columns, plan, done);
   PlanScalars(columns, firstRow, plan, done);
   return plan;
@@ -1089,6 +1128,7 @@ int vtkLAMMPSDumpReader::RequestData(
   MapPoints(state);
   MoveStrings(state);
   this->AddRadius(state);
+  this->AddSemiAxes(state);
   this->OrderById(state);
   AssembleOutput(state, output);
   this->UpdateProgress(1.0);
@@ -1371,6 +1411,30 @@ void vtkLAMMPSDumpReader::AddRadius(vtkRequestState& state)
     std::fill(r, r + n, static_cast<float>(this->DefaultRadius));
   }
   out.Objects.push_back(radius);
+}
+
+//------------------------------------------------------------------------------
+// Semi-axes of ellipsoids: half the "shape" array (LAMMPS's shapex/y/z are diameters), as the
+// 3-component array "semi_axes" that vtkParticleSphereMapper's Shape Ellipsoid takes.
+void vtkLAMMPSDumpReader::AddSemiAxes(vtkRequestState& state)
+{
+  const Plan& plan = state.Columns;
+  if (plan.ShapeArray < 0)
+  {
+    return;
+  }
+  const long long n = state.N;
+  vtkSmartPointer<vtkFloatArray> axes = vtkSmartPointer<vtkFloatArray>::New();
+  axes->SetName("semi_axes");
+  axes->SetNumberOfComponents(3);
+  axes->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  float* a = axes->GetPointer(0);
+  const float* d = static_cast<const float*>(state.Out.Arrays[plan.ShapeArray]);
+  for (long long i = 0; i < 3 * n; ++i)
+  {
+    a[i] = 0.5f * d[i];
+  }
+  state.Out.Objects.push_back(axes);
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,14 @@
  * - `vx vy vz`, `fx fy fz`, `mux muy muz`, `omegax ...`, `angmomx ...`, `tqx ...` as the
  *   3-component arrays "velocity", "force", "mu", "omega", "angmom", "torque"; consecutive
  *   bracketed columns `c_name[1] c_name[2] ...` as one multi-component array "c_name";
+ * - ellipsoids (atom_style ellipsoid): `shapex shapey shapez` as the 3-component array "shape"
+ *   (LAMMPS's diameters, as written) and "semi_axes" (half of them), `quatw quati quatj quatk`
+ *   as the 4-component array "orientation" (w, i, j, k): what vtkParticleSphereMapper's Shape
+ *   Ellipsoid takes (AxesArrayName "semi_axes", OrientationArrayName "orientation"). LAMMPS
+ *   versions whose `dump custom` does not know these names (the 2021 LAMMPS of Debian 12) write
+ *   them through `compute ID all property/atom shapex shapey shapez quatw quati quatj quatk` as
+ *   `c_ID[1]` ... `c_ID[7]`, read as the 7-component "c_ID": there the columns' meaning is the
+ *   user's to give (components 0-2 diameters, 3-6 the quaternion);
  * - `id`, `mol`, `type`, `proc`, `procp1` as integer arrays (vtkIdTypeArray for id, vtkIntArray
  *   otherwise); `element` (and any column whose first value is not a number) as a string array;
  *   every other column as a float array named like the column.
@@ -170,6 +178,7 @@ private:
   static void MapPoints(vtkRequestState& state);
   static void MoveStrings(vtkRequestState& state);
   void AddRadius(vtkRequestState& state);
+  void AddSemiAxes(vtkRequestState& state);
   void RadiiFromTypes(const int* type, long long n, float* r);
   void OrderById(vtkRequestState& state);
   static void AssembleOutput(vtkRequestState& state, vtkPolyData* output);

@@ -16,6 +16,10 @@ scene              output files
 ``lj_film``        ``lj_film.vtp``
 ``fcc_block``      ``fcc_block.vtp``; the same as a LAMMPS data file,
                    ``fcc_block.data.gz``
+``gb_ellipsoids``  ``gb_ellipsoids.lammpstrj.gz``: Gay-Berne ellipsoids
+                   (atom_style ellipsoid), 3 frames, the dump as LAMMPS
+                   wrote it with its c_shape[1..7] columns renamed to
+                   shapex ... quatk (no .vtp)
 =================  =====================================================
 
 The LAMMPS-format files (write_lammps_dump, write_lammps_data) hold the
@@ -111,7 +115,13 @@ SCENES = {
     "lj_droplets": ("in.lj_droplets", "lj_droplets.*.dump"),
     "lj_film": ("in.lj_film", "lj_film.dump"),
     "fcc_block": ("in.fcc_block", "fcc_block.dump"),
+    "gb_ellipsoids": ("in.gb_ellipsoids", "gb_ellipsoids.dump"),
 }
+
+#: the compute property/atom columns of in.gb_ellipsoids and the names newer LAMMPS versions
+#: write for them in dump custom (Debian 12's LAMMPS has no such dump keywords)
+ELLIPSOID_COLUMNS = ("c_shape[1] c_shape[2] c_shape[3] c_shape[4] c_shape[5] c_shape[6] "
+                     "c_shape[7]", "shapex shapey shapez quatw quati quatj quatk")
 
 
 # --------------------------------------------------------------------------- LAMMPS
@@ -389,11 +399,28 @@ def describe(path):
 
 
 # --------------------------------------------------------------------------- main
+def convert_ellipsoids(dump, out_dir):
+    """The Gay-Berne dump as the bundled gb_ellipsoids.lammpstrj.gz: LAMMPS's text with the
+    compute property/atom columns named as newer LAMMPS's dump custom names them."""
+    path = os.path.join(out_dir, "gb_ellipsoids.lammpstrj.gz")
+    old, new = ELLIPSOID_COLUMNS
+    with open(dump) as f, _gzip_text(path) as out:
+        for line in f:
+            if line.startswith("ITEM: ATOMS"):
+                if old not in line:
+                    sys.exit("error: %s has no columns %s" % (dump, old))
+                line = line.replace(old, new)
+            out.write(line)
+    return [path]
+
+
 def convert(scene, run_dir, out_dir, quantize=True):
     pattern = SCENES[scene][1]
     dumps = glob.glob(os.path.join(run_dir, pattern))
     if not dumps:
         sys.exit("error: LAMMPS wrote no dump matching %s" % pattern)
+    if scene == "gb_ellipsoids":
+        return convert_ellipsoids(dumps[0], out_dir)
 
     def step_of(p):
         m = re.search(r"\.(\d+)\.dump$", p)
