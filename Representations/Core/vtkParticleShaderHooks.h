@@ -41,8 +41,14 @@
  * (window depth of the visible point), prInside, vertexVC, normalVCVSOutput, particleIdVSOutput,
  * centerOffsetVCVSOutput, clipZWOfTranslation, VCDCMatrix, cameraParallel; after lighting
  * prSurfaceColor, ambientColor, diffuseColor, specularColor, opacity, prAmbientOcclusion,
- * prAmbientLight. The functions of RaySphere.glsl (prIntersectSphere, prDepthOfSplitPointVC,
- * prClipZWOfSplitPointVC) are in scope in the fragment stage. Defining PR_NO_DEPTH_WRITE in the
+ * prAmbientLight. The functions of RaySphere.glsl (prIntersectSphere, prIntersectEllipsoid,
+ * prEllipsoidNormal, prDepthOfSplitPointVC, prClipZWOfSplitPointVC) are in scope in the fragment
+ * stage. With ellipsoids (PR_ELLIPSOID defined in every stage) radiusVC bounds the particle (its
+ * largest semi-axis), the intersection and normal are the ellipsoid's, and
+ * ellipsoidToUnitVSOutput (vertex and fragment; mat3 taking view-coordinate offsets from the
+ * centre to the unit sphere's frame) and ellipsoidToVCVSOutput (vertex and geometry; its inverse)
+ * are in scope: code that measures along the ray in radii works in that frame (see
+ * TransparentSphereShading.glsl). Defining PR_NO_DEPTH_WRITE in the
  * fragment //PR::Sphere::Dec leaves gl_FragDepth unwritten (a translucent variant whose
  * early-termination mask must be tested before shading).
  *

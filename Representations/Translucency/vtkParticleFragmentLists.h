@@ -86,7 +86,7 @@ public:
   /**
    * Declarations and extension the fragment stage needs to append (insert the first string right
    * after the #version line, the second into the declarations). The append function is
-   * prAppendSegment(prSegment, rayS, rayD, radiusVC, centerOffsetVC, maximumIntegral).
+   * prAppendSegment(prSegment, rayD, centerOffsetVC, maximumIntegral).
    */
   static std::string GetAppendExtension();
   static std::string GetAppendDeclarations();

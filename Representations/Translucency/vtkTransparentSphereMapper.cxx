@@ -528,8 +528,7 @@ void vtkTransparentSphereMapper::ReplaceShaderValues(
         "    {\n"
         "      discard;\n"
         "    }\n"
-        "    prAppendSegment(prSeg, prRayS, prRayD, radiusVC, centerOffsetVCVSOutput,\n"
-        "      prMaximumIntegral);\n"
+        "    prAppendSegment(prSeg, prRayD, centerOffsetVCVSOutput, prMaximumIntegral);\n"
         "    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);");
     }
     else
@@ -739,7 +738,8 @@ void vtkTransparentSphereMapper::RenderTranslucentLevel(
   internals.SortTimed = false;
   internals.ExactOverlapInUse = exact &&
     (this->OverlapCompositing == EXACT_OVERLAP ||
-      (this->OverlapCompositing == AUTOMATIC && this->AutomaticNeedsExactOverlap(ren, act)));
+      (this->OverlapCompositing == AUTOMATIC &&
+        (this->GetDrawsEllipsoids() || this->AutomaticNeedsExactOverlap(ren, act))));
   if (internals.ExactOverlapInUse)
   {
     if (this->RenderTranslucentLists(ren, act, savedByPass))

@@ -52,6 +52,19 @@
  * it glow brighter than an opaque one). A segment without entry surface gets no ambient terms.
  * The background seen through a particle is attenuated by 1 - Theta (front-to-back compositing).
  *
+ * Ellipsoids (the core's Shape ELLIPSOID, x = c + A u): the model holds through the affine map.
+ * Along a ray the chord, impact parameter and density profile are those of the unit sphere in the
+ * ellipsoid's frame (the density is rho(u): constant, or |u|^2, the squared distance measured in
+ * the ellipsoid's own proportions; a hollow core is the ellipsoid scaled by f), and one unit of
+ * tau is 1 / |A^-1 d| long. The optical depth is a physical density integrated over length: a
+ * ray's integral is I_u / |A^-1 d|, and the most opaque ray lies along the longest semi-axis
+ * a_max with I_max,u a_max, so Theta_i is the opacity along that axis and a ray along axis k
+ * through the centre has 1 - (1 - Theta_i)^(a_k / a_max) (constant density; the tests check this
+ * and the squared model's sqrt(2) variant). The sort by centre is no visibility order for
+ * ellipsoids (two separate rods can cross in depth), so AUTOMATIC always composites ellipsoids
+ * with the exact-overlap lists; SORTED_SPHERES, when asked for, composites each whole in the
+ * order of its bounding sphere.
+ *
  * Opaque particles (Theta_i = 1) are drawn in the opaque pass exactly as the core draws them,
  * with depth writes; particles with Theta_i = 0 are not drawn at all; only the others take the
  * translucent path. Picking selects every particle with Theta_i > 0.

@@ -5,16 +5,15 @@
 //=========================================================================
 //PR::Include FragmentListBuffers
 
-// seg: the visible segment; rayS, rayD: the fragment's ray relative to the centre;
-// centerOffsetVC: the centre without the MC->VC translation, so that the key below is common to
-// all spheres of the pixel and small (no camera-distance digits in it).
-void prAppendSegment(prSegment seg, vec3 rayS, vec3 rayD, float radiusVC, vec3 centerOffsetVC,
-  float maximumIntegral)
+// seg: the visible segment (its tau = 0 point seg.closest relative to the centre, one unit of tau
+// seg.scale long: the closest approach and the radius for a sphere); rayD: the fragment's ray
+// direction; centerOffsetVC: the centre without the MC->VC translation, so that the key below is
+// common to all spheres of the pixel and small (no camera-distance digits in it).
+void prAppendSegment(prSegment seg, vec3 rayD, vec3 centerOffsetVC, float maximumIntegral)
 {
   // the closest approach point's position along the pixel ray: z / d_z is the ray parameter
   // up to one constant of the pixel (all spheres share the ray and the translation)
-  vec3 q = rayS - dot(rayS, rayD) * rayD;
-  float key = (centerOffsetVC.z + q.z) / rayD.z;
+  float key = (centerOffsetVC.z + seg.closest.z) / rayD.z;
   float lambda = seg.kappa < 0.0 ? 1e30 : seg.kappa / maximumIntegral;
   uint index = atomicAdd(prListCounters[0], 1u);
   if (index >= uint(prListCapacity))
@@ -23,7 +22,7 @@ void prAppendSegment(prSegment seg, vec3 rayS, vec3 rayD, float radiusVC, vec3 c
   }
   uint base = index * uint(PR_LIST_NODE_UINTS);
   prListNodes[base + 0u] = floatBitsToUint(key);
-  prListNodes[base + 1u] = floatBitsToUint(radiusVC);
+  prListNodes[base + 1u] = floatBitsToUint(seg.scale);
   prListNodes[base + 2u] = floatBitsToUint(seg.tn);
   prListNodes[base + 3u] = floatBitsToUint(seg.tf);
   prListNodes[base + 4u] = floatBitsToUint(seg.b2);

@@ -16,7 +16,14 @@
 // The visible part of a sphere's chord in a translucent fragment, in units of the radius from
 // the ray's closest approach to the centre: kappa the optical depth of the particle's most opaque
 // ray (< 0: opaque), b2 the squared impact parameter, the chord [-h, h], the visible segment
-// [tn, tf] (clipN / clipF: moved by clipping), radiance the colour it emits (Eq. 2).
+// [tn, tf] (clipN / clipF: moved by clipping), radiance the colour it emits (Eq. 2); scale the
+// view-coordinate length of one unit of tau along this ray and closest the view-coordinate
+// offset of tau = 0 from the centre (for the exact-overlap lists).
+// Ellipsoids (PR_ELLIPSOID): the same in the ellipsoid's unit frame (the unit sphere under
+// x = c + A u, EllipsoidFrame.glsl): b2 and the chord are the unit sphere's, one unit of tau is
+// 1 / |A^-1 d| along this ray, and kappa is scaled by 1 / (|A^-1 d| a_max) -- the optical depth
+// of a physical density integrated over view-coordinate length, normalised so that the particle's
+// most opaque ray is its longest axis a_max (radiusVC): Theta_i is the opacity along that axis.
 struct prSegment
 {
   float kappa;
@@ -27,6 +34,8 @@ struct prSegment
   bool clipN;
   bool clipF;
   vec3 radiance;
+  float scale;
+  vec3 closest;
 };
 
 // kappaA: the particle's optical depth (< 0: opaque, Theta_a = 1); opacity: VTK's fragment
@@ -40,7 +49,7 @@ bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffu
   float ambientOcclusion, vec3 ambientLight, vec3 rayS, vec3 rayD, float t0, float t1, float radiusVC, vec3 centerOffsetVC,
   out prSegment seg)
 {
-  seg = prSegment(0.0, 0.0, 0.0, 0.0, 0.0, false, false, vec3(0.0));
+  seg = prSegment(0.0, 0.0, 0.0, 0.0, 0.0, false, false, vec3(0.0), 0.0, vec3(0.0));
   // Theta_i = Theta_a * opacity, as an optical depth: the actor's opacity and transmittance
   // from the CPU in double when the opacity is the actor's alone (no scalar alpha), else
   // from VTK's opacity
@@ -102,9 +111,28 @@ bool prTranslucentSegment(float kappaA, float opacity, vec3 litColor, vec3 diffu
     return false;
   }
   seg.kappa = kappa;
+#ifdef PR_ELLIPSOID
+  vec3 su = ellipsoidToUnitVSOutput * rayS;
+  vec3 du = ellipsoidToUnitVSOutput * rayD;
+  float unitPerVC = length(du);
+  du /= unitPerVC;
+  float tc = -dot(su, du);
+  seg.h = 0.5 * (t1 - t0) * unitPerVC;
+  vec3 q = su + tc * du;
+  seg.b2 = min(1.0, dot(q, q));
+  seg.scale = 1.0 / unitPerVC;
+  seg.closest = rayS + (tc / unitPerVC) * rayD;
+  if (kappa > 0.0)
+  {
+    seg.kappa = kappa / (unitPerVC * radiusVC);
+  }
+#else
   seg.h = 0.5 * (t1 - t0) / radiusVC;
   vec3 q = rayS - dot(rayS, rayD) * rayD;
   seg.b2 = min(1.0, dot(q, q) / (radiusVC * radiusVC));
+  seg.scale = radiusVC;
+  seg.closest = q;
+#endif
   seg.tn = -seg.h + 2.0 * seg.h * un;
   seg.tf = -seg.h + 2.0 * seg.h * uf;
   // Eq. 2: surface reflection at the entry point mixed with the volume colour, occluded and lit

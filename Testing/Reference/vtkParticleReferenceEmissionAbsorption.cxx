@@ -257,6 +257,7 @@ void RenderTranslucent(const Frame& frame)
   const bool exactOverlaps = frame.ExactOverlaps;
   const double inf = std::numeric_limits<double>::infinity();
   const bool haveLayer = !layerDepths.empty();
+  const int densityPower = densityModel == 1 ? 3 : 1; // I_max ~ r or r^3
   ForEachPixelRay<TranslucentScratch>(frame,
     [&](int x, int y, std::size_t pixel, const double o[3], const double d[3], double tNear,
       double tFar, TranslucentScratch& scratch)
@@ -305,7 +306,7 @@ void RenderTranslucent(const Frame& frame)
         else
         {
           Segment seg;
-          if (MakeSegment(cam, o, d, spheres[i], tNear, tFar, i, seg))
+          if (MakeSegment(cam, o, d, spheres[i], tNear, tFar, i, seg, densityPower))
           {
             segments.push_back(seg);
           }
@@ -397,10 +398,11 @@ void RenderTranslucent(const Frame& frame)
       for (const Segment& seg : segments)
       {
         const SphereVC& s = spheres[seg.Index];
-        const double impact = std::sqrt(Dot(seg.Q, seg.Q));
-        const double integral =
-          IntegrateDensityImpl(densityModel, hollowFraction, s.R, impact, seg.Tau0, seg.Tau1);
-        const double opticalDepth = sphereKappa[seg.Index] * (integral / sphereMaximum[seg.Index]);
+        const double impact = seg.Impact;
+        const double maximum = sphereMaximum[seg.Index] * seg.MaximumScale;
+        const double integral = IntegrateDensityImpl(
+          densityModel, hollowFraction, seg.Radius, impact, seg.Tau0, seg.Tau1);
+        const double opticalDepth = sphereKappa[seg.Index] * (integral / maximum);
         const double theta = OpacityFromOpticalDepth(opticalDepth);
         if (!(theta > 0.0) || !std::isfinite(opticalDepth))
         {
@@ -424,9 +426,10 @@ void RenderTranslucent(const Frame& frame)
           for (int k = 0; k < 3; ++k)
           {
             rel[k] = seg.Q[k] - seg.H * d[k];
-            n[k] = rel[k] / s.R;
-            p[k] = s.C[k] + rel[k];
           }
+          Hit entry;
+          std::copy(rel, rel + 3, entry.Rel);
+          HitGeometry(entry, s, n, p);
           double surface[3];
           cones = frame.Shade(n, p, amb, dif, surface);
           if (!std::isfinite(surface[0]) || !std::isfinite(surface[1]) ||
@@ -480,9 +483,9 @@ void RenderTranslucent(const Frame& frame)
           // composited below, with the other segments
           Emitter e;
           e.Seg = &seg;
-          e.Radius = s.R;
+          e.Radius = seg.Radius;
           e.Impact = impact;
-          e.Lambda = sphereKappa[seg.Index] / sphereMaximum[seg.Index];
+          e.Lambda = sphereKappa[seg.Index] / maximum;
           for (int k = 0; k < 3; ++k)
           {
             e.Radiance[k] = radiance[k];

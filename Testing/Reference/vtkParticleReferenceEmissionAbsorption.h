@@ -224,33 +224,74 @@ inline double OpacityFromOpticalDepth(double opticalDepth)
 }
 
 // A translucent sphere's part of a pixel ray, relative to the closest approach of the ray to
-// the centre (tau = t - Tc).
+// the centre (tau = t - Tc). An ellipsoid's part is that of the sphere that has the same chord
+// and density profile along this ray (its unit-frame chord scaled by Radius = 1 / |A^-1 d|):
+// impact Impact = |q_u| Radius, and an I_max scaled so that the ratio I / I_max is the
+// ellipsoid's physical one (see MakeSegment).
 struct Segment
 {
-  double Key;  // ray parameter of the segment's start (t_n after clipping)
-  double Tc;   // ray parameter of the closest approach
-  double Q[3]; // closest approach point relative to the centre
-  double H;    // half chord
-  double Tau0; // start (-inf: the entry point)
-  double Tau1; // end (+inf: the exit point)
+  double Key;                // ray parameter of the segment's start (t_n after clipping)
+  double Tc;                 // ray parameter of the closest approach
+  double Q[3];               // closest approach point relative to the centre
+  double H;                  // half chord
+  double Radius = 0.0;       // the sphere's radius (the equivalent sphere's for an ellipsoid)
+  double Impact = 0.0;       // distance of the ray from the (equivalent) centre
+  double MaximumScale = 1.0; // I_max of the segment = the sphere's I_max times this
+  double Tau0;               // start (-inf: the entry point)
+  double Tau1;               // end (+inf: the exit point)
   std::uint32_t Index;
   bool Entry; // the segment starts at the visible entry point
 };
 
 // The chord of a sphere clipped to the visible part of the ray with the GPU's rule (see the
 // class description). Returns false when no part of it is visible.
+// densityPower: 1 for the constant density model, 3 for squared distance (I_max ~ r^p). An
+// ellipsoid's physical optical depth is kappa (I_u / |A^-1 d|) / (I_max,u a_max) (the unit
+// frame's integrals, a_max = s.R its longest semi-axis): with the equivalent sphere of radius
+// R' = 1 / |A^-1 d| whose own ratio is I'/(I_max,u R'^p), I_max scales by (R' / a_max)^(p-1).
 inline bool MakeSegment(const RayCamera& cam, const double o[3], const double d[3],
-  const SphereVC& s, double tNear, double tFar, std::uint32_t index, Segment& seg)
+  const SphereVC& s, double tNear, double tFar, std::uint32_t index, Segment& seg,
+  int densityPower = 1)
 {
-  const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
-  const double tc = Dot(oc, d);
-  const double q[3] = { tc * d[0] - oc[0], tc * d[1] - oc[1], tc * d[2] - oc[2] };
-  const double h2 = s.R * s.R - Dot(q, q);
-  if (!(h2 > 0.0))
+  double tc;
+  double q[3];
+  double h;
+  if (s.Ellipsoid)
   {
-    return false; // missed, or tangent (no length)
+    double qu[3];
+    double dd[3];
+    double length;
+    double b;
+    double hu;
+    if (!EllipsoidChord(o, d, s, qu, dd, length, b, hu) || !(hu > 0.0))
+    {
+      return false;
+    }
+    tc = -b / length;
+    Apply3x3(s.ToVC, qu, q); // the unit frame's closest approach, in view coordinates
+    h = hu / length;
+    seg.Radius = 1.0 / length;
+    seg.Impact = std::sqrt(Dot(qu, qu)) / length;
+    seg.MaximumScale = std::pow(seg.Radius / s.R, densityPower - 1);
   }
-  const double h = std::sqrt(h2);
+  else
+  {
+    const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
+    tc = Dot(oc, d);
+    for (int k = 0; k < 3; ++k)
+    {
+      q[k] = tc * d[k] - oc[k];
+    }
+    const double h2 = s.R * s.R - Dot(q, q);
+    if (!(h2 > 0.0))
+    {
+      return false; // missed, or tangent (no length)
+    }
+    h = std::sqrt(h2);
+    seg.Radius = s.R;
+    seg.Impact = std::sqrt(Dot(q, q));
+    seg.MaximumScale = 1.0;
+  }
   double pIn[3];
   double pOut[3];
   for (int k = 0; k < 3; ++k)

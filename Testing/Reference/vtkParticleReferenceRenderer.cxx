@@ -419,10 +419,10 @@ bool vtkParticleReferenceRenderer::Render()
     {
       return fail("SetParticleAttributes() gives radii, but the mapper draws ellipsoids.");
     }
-    if (mapper->IsA("vtkTransparentSphereMapper") || mapper->IsA("vtkMetaballMapper") ||
-      this->AmbientOcclusionSamples > 0)
+    if (mapper->IsA("vtkMetaballMapper") || this->AmbientOcclusionSamples > 0)
     {
-      return fail("Ellipsoids are rendered in the opaque mode without ambient occlusion only.");
+      return fail("Ellipsoids are rendered in the opaque and transparent modes without ambient "
+                  "occlusion only.");
     }
     mapper->GetAxesToViewMatrix(this->Renderer, this->Actor, axesToView);
   }
@@ -559,8 +559,10 @@ bool vtkParticleReferenceRenderer::Render()
         theta = std::min(theta, 1.0);
         sphereTheta.push_back(theta);
         sphereKappa.push_back(theta < 1.0 ? -std::log1p(-theta) : 0.0);
+        // (an ellipsoid's largest semi-axis: s.R, see MakeSegment)
         sphereMaximum.push_back(maximumPathIntegral *
-          (densityModel == vtkTransparentSphereMapper::SQUARED_DISTANCE_DENSITY ? r * r * r : r));
+          (densityModel == vtkTransparentSphereMapper::SQUARED_DISTANCE_DENSITY ? s.R * s.R * s.R
+                                                                                : s.R));
       }
       spheres.push_back(s);
       ids.push_back(i);
