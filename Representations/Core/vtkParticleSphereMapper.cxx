@@ -505,8 +505,16 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     vtkDataArray* radiusArray = nullptr;
     // Ellipsoids: their largest semi-axes are the radii (bounds, culling, clip boxes)
     vtkNew<vtkFloatArray> boundingRadii;
-    internals.Ellipsoids = this->PrepareEllipsoids(input, boundingRadii, warnings);
-    if (internals.Ellipsoids)
+    const bool haveAxes = this->PrepareEllipsoids(input, boundingRadii, warnings);
+    // (a surface of its own, e.g. metaballs, is made of spheres: those of the largest semi-axes)
+    internals.Ellipsoids = haveAxes && this->GetDrawsSphereGlyphs();
+    if (haveAxes && !internals.Ellipsoids)
+    {
+      warnings << "A " << this->GetClassName()
+               << " draws a surface of spheres, not ellipsoids: each particle's largest "
+                  "semi-axis is its radius. ";
+    }
+    if (haveAxes)
     {
       radiusArray = boundingRadii;
     }

@@ -366,6 +366,7 @@ int vtkParticleRepresentation::RequestData(
   }
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   this->ProcessedData = MakeParticles(input, false);
+  this->AddBoundingRadii(this->ProcessedData);
   // Distributed rendering: translucent spheres are partitioned here, in the pipeline, which
   // runs on every process together (a render pass may not: IceT runs it zero or more times)
   double bounds[6];
@@ -660,6 +661,11 @@ void vtkParticleRepresentation::SetVisibility(bool val)
 //------------------------------------------------------------------------------
 std::string vtkParticleRepresentation::EffectiveRadiusArray(vtkPolyData* particles) const
 {
+  if (particles && this->EllipsoidsInEffect(particles) &&
+    particles->GetPointData()->GetArray("ParticleBoundingRadius"))
+  {
+    return "ParticleBoundingRadius"; // (AddBoundingRadii; the mapper itself uses the axes)
+  }
   if (this->UseRadiusArray == RADIUS_ARRAY_ON)
   {
     return this->RadiusArray;
@@ -679,6 +685,191 @@ void vtkParticleRepresentation::UpdateMapperRadiusArray()
 {
   const std::string name = this->EffectiveRadiusArray(this->Mapper->GetInput());
   this->Mapper->SetRadiusArrayName(name.empty() ? nullptr : name.c_str());
+  this->UpdateMapperShape();
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleRepresentation::EllipsoidsInEffect(vtkPolyData* particles) const
+{
+  if (this->Shape == SHAPE_ELLIPSOID)
+  {
+    return true;
+  }
+  if (this->Shape != SHAPE_AUTOMATIC || !particles)
+  {
+    return false;
+  }
+  vtkDataArray* axes = particles->GetPointData()->GetArray("semi_axes");
+  return axes && axes->GetNumberOfComponents() >= 3;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::EffectiveEllipsoidArrays(vtkPolyData* particles, std::string& axes,
+  int& axesComponent, bool& diameters, std::string& orientation, int& orientationComponent) const
+{
+  if (this->Shape == SHAPE_AUTOMATIC)
+  {
+    // what vtkLAMMPSDumpReader writes for LAMMPS's ellipsoids
+    axes = "semi_axes";
+    axesComponent = 0;
+    diameters = false;
+    vtkDataArray* quaternions =
+      particles ? particles->GetPointData()->GetArray("orientation") : nullptr;
+    orientation = quaternions && quaternions->GetNumberOfComponents() >= 4 ? "orientation" : "";
+    orientationComponent = 0;
+    return;
+  }
+  axes = this->AxesArray;
+  axesComponent = this->AxesArrayComponent;
+  diameters = this->AxesAreDiameters;
+  orientation = this->OrientationArray;
+  orientationComponent = this->OrientationArrayComponent;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::UpdateMapperShape()
+{
+  vtkPolyData* particles = this->Mapper->GetInput();
+  if (!this->EllipsoidsInEffect(particles))
+  {
+    this->Mapper->SetShapeToSphere();
+    return;
+  }
+  std::string axes;
+  std::string orientation;
+  int axesComponent = 0;
+  int orientationComponent = 0;
+  bool diameters = false;
+  this->EffectiveEllipsoidArrays(
+    particles, axes, axesComponent, diameters, orientation, orientationComponent);
+  this->Mapper->SetShapeToEllipsoid();
+  this->Mapper->SetAxesArrayName(axes.empty() ? nullptr : axes.c_str());
+  this->Mapper->SetAxesArrayComponent(axesComponent);
+  this->Mapper->SetAxesAreDiameters(diameters);
+  this->Mapper->SetOrientationArrayName(orientation.empty() ? nullptr : orientation.c_str());
+  this->Mapper->SetOrientationArrayComponent(orientationComponent);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
+{
+  if (!particles || !this->EllipsoidsInEffect(particles))
+  {
+    return;
+  }
+  std::string axesName;
+  std::string orientation;
+  int component = 0;
+  int orientationComponent = 0;
+  bool diameters = false;
+  this->EffectiveEllipsoidArrays(
+    particles, axesName, component, diameters, orientation, orientationComponent);
+  vtkDataArray* axes = particles->GetPointData()->GetArray(axesName.c_str());
+  if (!axes || axes->GetNumberOfComponents() < component + 3)
+  {
+    return; // the mapper says what is wrong, and draws spheres
+  }
+  const vtkIdType n = particles->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> radii;
+  radii->SetName("ParticleBoundingRadius");
+  radii->SetNumberOfTuples(n);
+  const double factor = diameters ? 0.5 : 1.0;
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        double largest = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double a = factor * axes->GetComponent(i, component + k);
+          // (a NaN makes the particle's bound NaN: skipped, as by the mapper)
+          largest = std::isnan(a) ? a : std::max(largest, a);
+        }
+        radii->SetValue(i, static_cast<float>(largest));
+      }
+    });
+  particles->GetPointData()->AddArray(radii);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetShape(int shape)
+{
+  shape =
+    std::min(std::max(shape, static_cast<int>(SHAPE_SPHERE)), static_cast<int>(SHAPE_AUTOMATIC));
+  if (shape != this->Shape)
+  {
+    this->Shape = shape;
+    this->UpdateMapperShape();
+    this->MarkModified(); // bounds, partitions
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SelectAxesArray(int, int, int, int, const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->AxesArray)
+  {
+    this->AxesArray = value;
+    this->UpdateMapperShape();
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetAxesArrayComponent(int component)
+{
+  component = std::max(0, component);
+  if (component != this->AxesArrayComponent)
+  {
+    this->AxesArrayComponent = component;
+    this->UpdateMapperShape();
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetAxesAreDiameters(bool diameters)
+{
+  if (diameters != this->AxesAreDiameters)
+  {
+    this->AxesAreDiameters = diameters;
+    this->UpdateMapperShape();
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SelectOrientationArray(int, int, int, int, const char* name)
+{
+  // (the XML's none_string: no orientation array, axis-aligned ellipsoids)
+  const std::string given = name ? name : "";
+  const std::string value = given == "None (axis-aligned)" ? "" : given;
+  if (value != this->OrientationArray)
+  {
+    this->OrientationArray = value;
+    this->UpdateMapperShape();
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SetOrientationArrayComponent(int component)
+{
+  component = std::max(0, component);
+  if (component != this->OrientationArrayComponent)
+  {
+    this->OrientationArrayComponent = component;
+    this->UpdateMapperShape();
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleRepresentation::GetDrawsEllipsoids()
+{
+  return this->Mapper->GetInput() && this->Mapper->GetDrawsEllipsoids();
 }
 
 //------------------------------------------------------------------------------
@@ -1037,6 +1228,11 @@ void vtkParticleRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "UseRadiusArray: " << this->UseRadiusArray << "\n";
+  os << indent << "Shape: " << this->Shape << "\n";
+  os << indent << "AxesArray: " << this->AxesArray << " component " << this->AxesArrayComponent
+     << (this->AxesAreDiameters ? " (diameters)" : "") << "\n";
+  os << indent << "OrientationArray: " << this->OrientationArray << " component "
+     << this->OrientationArrayComponent << "\n";
   os << indent << "RadiusArray: " << this->RadiusArray << "\n";
   os << indent << "Radius: " << this->Mapper->GetRadius() << "\n";
   os << indent << "RadiusScaleFactor: " << this->Mapper->GetRadiusScaleFactor() << "\n";

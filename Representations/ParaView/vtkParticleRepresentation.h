@@ -50,6 +50,15 @@
  * and RadiusScaleFactor). Missing, non-numeric or multi-component radius arrays fall back to the
  * constant Radius with a warning from the mapper.
  *
+ * Shape: SHAPE_SPHERE, SHAPE_ELLIPSOID (oriented ellipsoids from AxesArray and OrientationArray,
+ * components picked with AxesArrayComponent and OrientationArrayComponent, diameters halved with
+ * AxesAreDiameters: vtkParticleSphereMapper's Shape ELLIPSOID) or SHAPE_AUTOMATIC (the default):
+ * ellipsoids when the data has the point arrays vtkLAMMPSDumpReader writes for LAMMPS's
+ * ellipsoids, "semi_axes" (3 components) and, if present, "orientation" (4), spheres otherwise.
+ * With ellipsoids the radius settings are not used: bounds, partitions and ghosts take each
+ * particle's largest semi-axis (the point array "ParticleBoundingRadius" the representation adds
+ * to its copy of the data).
+ *
  * Colouring: the standard ColorArrayName (SetInputArrayToProcess), LookupTable and MapScalars;
  * point arrays only (a cell array gives the solid DiffuseColor, as in Point Gaussian).
  * Material: the actor's property (Ambient, Diffuse, Specular, SpecularPower and colours,
@@ -113,6 +122,30 @@ public:
   double GetRadius();
   void SetRadiusScaleFactor(double factor);
   double GetRadiusScaleFactor();
+  ///@}
+
+  ///@{
+  /**
+   * Particle shape (see the class description). The array selectors have the signature of
+   * SetInputArrayToProcess so ParaView's array widgets can drive them; only the name is used.
+   */
+  enum ShapeModes
+  {
+    SHAPE_SPHERE = 0,
+    SHAPE_ELLIPSOID = 1,
+    SHAPE_AUTOMATIC = 2
+  };
+  void SetShape(int shape);
+  vtkGetMacro(Shape, int);
+  void SelectAxesArray(int, int, int, int, const char* name);
+  void SetAxesArrayComponent(int component);
+  void SetAxesAreDiameters(bool diameters);
+  void SelectOrientationArray(int, int, int, int, const char* name);
+  void SetOrientationArrayComponent(int component);
+  /**
+   * Whether the particles are drawn as ellipsoids (the Shape in effect for the processed data).
+   */
+  bool GetDrawsEllipsoids();
   ///@}
 
   ///@{
@@ -352,6 +385,23 @@ protected:
 
   int UseRadiusArray = RADIUS_ARRAY_AUTOMATIC;
   std::string RadiusArray;
+
+  // particle shape (SetShape): the settings, whether the processed data is drawn as ellipsoids,
+  // and the arrays in effect
+  int Shape = SHAPE_AUTOMATIC;
+  std::string AxesArray = "semi_axes";
+  int AxesArrayComponent = 0;
+  bool AxesAreDiameters = false;
+  std::string OrientationArray = "orientation";
+  int OrientationArrayComponent = 0;
+  bool EllipsoidsInEffect(vtkPolyData* particles) const;
+  // the axes and orientation arrays in effect for particles (AUTOMATIC: the reader's names)
+  void EffectiveEllipsoidArrays(vtkPolyData* particles, std::string& axes, int& axesComponent,
+    bool& diameters, std::string& orientation, int& orientationComponent) const;
+  // the largest semi-axis of every particle as the point array "ParticleBoundingRadius" of
+  // particles (ellipsoids in effect), for bounds, partitions and ghosts
+  void AddBoundingRadii(vtkPolyData* particles);
+  void UpdateMapperShape();
 
 private:
   vtkParticleRepresentation(const vtkParticleRepresentation&) = delete;

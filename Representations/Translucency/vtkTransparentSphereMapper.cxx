@@ -588,6 +588,22 @@ double vtkTransparentSphereMapper::GetEffectiveColumnLayers()
       ++count;
     }
   }
+  if (vtkFloatArray* axes = this->GetParticleAxes())
+  {
+    // Ellipsoids: in any direction the chords through a particle integrate to its volume
+    // 4/3 pi a b c; over its longest chord 2 a_max that is (2/3) pi (a b c / a_max) full chords,
+    // a sphere's (2/3) pi r^2: each counts with the radius sqrt(a b c / a_max)
+    sum = 0.0;
+    for (vtkIdType i = 0; i < axes->GetNumberOfTuples(); ++i)
+    {
+      const float* a = axes->GetPointer(3 * i);
+      const double largest = std::max({ a[0], a[1], a[2] });
+      if (largest > 0.0 && radii->GetValue(i) > 0.0)
+      {
+        sum += std::sqrt(static_cast<double>(a[0]) * a[1] * a[2] / largest);
+      }
+    }
+  }
   this->EstimatedColumnLayers = EstimateColumnLayers(static_cast<double>(count), sum, b);
   return this->EstimatedColumnLayers;
 }
