@@ -250,7 +250,11 @@ bool vtkDensityVolumeAOPass::PostReplaceShaderValues(std::string& vertexShader,
     "//PR::Include DensityVolumeOwn");
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Impl",
     "vec3 prCentreVolume = (prViewToVolume * vec4(centerVC, 1.0)).xyz;\n"
+    "#ifdef PR_ELLIPSOID\n"
+    "  float prOwn = prOwnDensity * abs(determinant(ellipsoidToVCVSOutput));\n"
+    "#else\n"
     "  float prOwn = prOwnDensity * radiusVC * radiusVC * radiusVC;\n"
+    "#endif\n"
     "  for (int k = 0; k < 3; ++k)\n"
     "  {\n"
     "    vec3 prStep = vec3(0.0);\n"
@@ -304,6 +308,7 @@ bool vtkDensityVolumeAOPass::SetShaderParameters(
   if (program->IsUniformUsed("prOwnDensity"))
   {
     // a sphere of radius r adds g (4/3 pi r^3) / voxel^3 to the voxels, split by the splat weights
+    // (an ellipsoid g (4/3 pi |det A|) / voxel^3)
     const float dimensions[3] = { static_cast<float>(dims[0]), static_cast<float>(dims[1]),
       static_cast<float>(dims[2]) };
     program->SetUniform3f("prVolumeDimensions", dimensions);

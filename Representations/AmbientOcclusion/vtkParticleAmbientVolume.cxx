@@ -760,7 +760,7 @@ vtkIdType vtkParticleAmbientVolume::GetNumberOfParticles()
   vtkIdType total = 0;
   for (auto& item : this->Internals->Props)
   {
-    total += item.second->GetParticleRadii()->GetNumberOfTuples();
+    total += item.second->GetParticleVolumeRadii()->GetNumberOfTuples();
   }
   return total;
 }
@@ -774,7 +774,7 @@ void vtkParticleAmbientVolume::GatherSpheres(vtkActor* actor, vtkParticleSphereM
   {
     return;
   }
-  const vtkIdType n = mapper->GetParticleRadii()->GetNumberOfTuples();
+  const vtkIdType n = mapper->GetParticleVolumeRadii()->GetNumberOfTuples();
   vtkPoints* points = mapper->GetInput()->GetPoints();
   if (n == 0 || !points || points->GetNumberOfPoints() < n)
   {
@@ -793,7 +793,7 @@ void vtkParticleAmbientVolume::GatherSpheres(vtkActor* actor, vtkParticleSphereM
   {
     ghosts = nullptr;
   }
-  const float* r = mapper->GetParticleRadii()->GetPointer(0);
+  const float* r = mapper->GetParticleVolumeRadii()->GetPointer(0);
   const double scale = mapper->GetRadiusScaleVC(actor);
   const double* m = actor->GetMatrix()->GetData();
   vtkUnsignedCharArray* mapped = mapper->MapScalars(1.0);

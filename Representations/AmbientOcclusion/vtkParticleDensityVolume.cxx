@@ -570,7 +570,7 @@ vtkIdType vtkParticleDensityVolume::GetNumberOfParticles()
   vtkIdType total = 0;
   for (auto& item : this->Internals->Props)
   {
-    total += item.second->GetParticleRadii()->GetNumberOfTuples();
+    total += item.second->GetParticleVolumeRadii()->GetNumberOfTuples();
   }
   return total;
 }
@@ -607,7 +607,7 @@ bool vtkParticleDensityVolume::GatherParticles(
   vtkIdType offset = 0;
   for (auto& item : this->Internals->Props)
   {
-    const vtkIdType n = item.second->GetParticleRadii()->GetNumberOfTuples();
+    const vtkIdType n = item.second->GetParticleVolumeRadii()->GetNumberOfTuples();
     vtkPoints* inputPoints = item.second->GetInput()->GetPoints();
     if (n == 0 || !inputPoints || inputPoints->GetNumberOfPoints() < n)
     {
@@ -618,7 +618,7 @@ bool vtkParticleDensityVolume::GatherParticles(
       offset += n; // nothing drawn (the mapper reported why)
       continue;
     }
-    const float* r = item.second->GetParticleRadii()->GetPointer(0);
+    const float* r = item.second->GetParticleVolumeRadii()->GetPointer(0);
     vtkDataArray* points = inputPoints->GetData();
     vtkFloatArray* floatPoints = vtkFloatArray::FastDownCast(points);
     const float* xyz = floatPoints ? floatPoints->GetPointer(0) : nullptr;

@@ -148,7 +148,11 @@ bool vtkVoxelConeAOPass::PostReplaceShaderValues(std::string& vertexShader,
     "prConeMZ" };
   hooks.Insert(Hooks::Vertex, "//PR::Sphere::Dec", "//PR::Include VoxelConeTrace");
   std::string impl = "vec4 prSphereCones[6];\n"
-                     "  prTraceSphereCones(centerVC, radiusVC, prSphereCones);";
+                     "#ifdef PR_ELLIPSOID\n"
+                     "  prTraceEllipsoidCones(centerVC, ellipsoidToVCVSOutput, prSphereCones);\n"
+                     "#else\n"
+                     "  prTraceSphereCones(centerVC, radiusVC, prSphereCones);\n"
+                     "#endif";
   std::string blend = "prViewToWorld * normalVCVSOutput";
   for (int k = 0; k < 6; ++k)
   {

@@ -56,6 +56,8 @@ public:
   // whether the program in use was built for them
   vtkNew<vtkFloatArray> Axes;
   vtkNew<vtkFloatArray> Orientations;
+  vtkNew<vtkFloatArray> VolumeRadii; // cbrt(a b c), 0 for skipped particles
+  vtkSmartPointer<vtkDataArray> UploadedVolumeRadii;
   bool Ellipsoids = false;
   bool BuiltEllipsoids = false;
   // The positions uploaded: the input's own point array when every particle is valid (no copy),
@@ -541,6 +543,25 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
         }
       }
     }
+    if (internals.Ellipsoids)
+    {
+      // the radius of the sphere of each ellipsoid's volume
+      const float* axes = internals.Axes->GetPointer(0);
+      internals.VolumeRadii->SetNumberOfTuples(numPts);
+      float* volumeRadii = internals.VolumeRadii->GetPointer(0);
+      vtkSMPTools::For(0, numPts,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            volumeRadii[i] = radii[i] > 0.0f
+              ? static_cast<float>(
+                  std::cbrt(static_cast<double>(axes[3 * i]) * axes[3 * i + 1] * axes[3 * i + 2]))
+              : 0.0f;
+          }
+        });
+      internals.VolumeRadii->Modified();
+    }
     // written through a raw pointer: tell the VBO cache the values are new
     internals.Radii->Modified();
 
@@ -638,6 +659,14 @@ bool vtkParticleSphereMapper::GetDrawsEllipsoids()
 }
 
 //------------------------------------------------------------------------------
+vtkFloatArray* vtkParticleSphereMapper::GetParticleVolumeRadii()
+{
+  this->PrepareParticles();
+  return this->Internals->Ellipsoids ? this->Internals->VolumeRadii.GetPointer()
+                                     : this->Internals->Radii.GetPointer();
+}
+
+//------------------------------------------------------------------------------
 vtkFloatArray* vtkParticleSphereMapper::GetParticleAxes()
 {
   this->PrepareParticles();
@@ -723,7 +752,8 @@ bool vtkParticleSphereMapper::GetParticleBuffers(vtkOpenGLBufferObject*& positio
   vtkMatrix4x4* bufferToModel)
 {
   vtkOpenGLVertexBufferObject* positionVBO = this->VBOs->GetVBO("vertexMC");
-  vtkOpenGLVertexBufferObject* radiusVBO = this->VBOs->GetVBO("radiusMC");
+  vtkOpenGLVertexBufferObject* radiusVBO =
+    this->VBOs->GetVBO(this->Internals->Ellipsoids ? "volumeRadiusMC" : "radiusMC");
   count = static_cast<vtkIdType>(this->Primitives[PrimitiveTris].IBO->IndexCount);
   if (!positionVBO || !radiusVBO || count <= 0 || positionVBO->GetHandle() == 0)
   {
@@ -1378,6 +1408,10 @@ void vtkParticleSphereMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act
     internals.Ellipsoids ? this->StrideForUpload(internals.Orientations) : nullptr;
   this->VBOs->CacheDataArray("axesMC", internals.UploadedAxes, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray("orientationMC", internals.UploadedOrientations, ren, VTK_FLOAT);
+  // (for compute passes that deposit the particles' volume: GetParticleBuffers)
+  internals.UploadedVolumeRadii =
+    internals.Ellipsoids ? this->StrideForUpload(internals.VolumeRadii) : nullptr;
+  this->VBOs->CacheDataArray("volumeRadiusMC", internals.UploadedVolumeRadii, ren, VTK_FLOAT);
   this->CacheParticleAttributes(ren, act);
   this->VBOs->BuildAllVBOs(ren);
   if (reportProgress)

@@ -342,8 +342,16 @@ public:
   vtkFloatArray* GetParticleRadii();
 
   /**
+   * The radius of the sphere of each particle's volume, as GetParticleRadii(): the radius for a
+   * sphere, cbrt(a b c) for an ellipsoid. What volumes that deposit the particles' mass use
+   * (vtkParticleDensityVolume, vtkParticleAmbientVolume).
+   */
+  vtkFloatArray* GetParticleVolumeRadii();
+
+  /**
    * The particle vertex buffers for compute passes: the positions (float, stride in floats) and
-   * radii (float, model-coordinate radius, 0 for skipped particles) as VTK's buffer objects
+   * volume radii (float, model-coordinate GetParticleVolumeRadii(), 0 for skipped particles;
+   * for spheres the radius buffer the draw uses) as VTK's buffer objects
    * (bind them with vtkParticleComputeProgram::BindStorage), and the matrix from buffer to model
    * coordinates (VTK's VBO shift/scale undone), valid once the mapper has drawn. Returns false
    * before that.

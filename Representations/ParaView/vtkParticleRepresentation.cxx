@@ -568,8 +568,13 @@ int vtkParticleRepresentation::ProcessViewRequest(
     if (auto particleView = vtkParticleRenderView::SafeDownCast(this->GetView()))
     {
       // (the view builds the AO volume of all its Particles representations before the frame)
+      // (ellipsoids deposit their own volume: the radius of the sphere of that volume)
+      const bool volumeRadii = this->EllipsoidsInEffect(this->ProcessedData) &&
+        this->ProcessedData->GetPointData()->GetArray("ParticleVolumeRadius");
       particleView->GetParticleVolumes()->SetSource(this, this->Technique == SPHERES, this->Actor,
-        this->Mapper, this->ProcessedData, this->EffectiveRadiusArray(this->ProcessedData));
+        this->Mapper, this->ProcessedData,
+        volumeRadii ? std::string("ParticleVolumeRadius")
+                    : this->EffectiveRadiusArray(this->ProcessedData));
     }
     this->UpdateMapperRadiusArray(); // the automatic radius array depends on the data
     // An empty local piece is normal (other ranks hold the data, nothing was delivered here,
@@ -773,6 +778,10 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
   vtkNew<vtkFloatArray> radii;
   radii->SetName("ParticleBoundingRadius");
   radii->SetNumberOfTuples(n);
+  // and the radius of the sphere of each particle's volume, for the AO volumes
+  vtkNew<vtkFloatArray> volumeRadii;
+  volumeRadii->SetName("ParticleVolumeRadius");
+  volumeRadii->SetNumberOfTuples(n);
   const double factor = diameters ? 0.5 : 1.0;
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
@@ -780,16 +789,20 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
       for (vtkIdType i = begin; i < end; ++i)
       {
         double largest = 0.0;
+        double product = 1.0;
         for (int k = 0; k < 3; ++k)
         {
           const double a = factor * axes->GetComponent(i, component + k);
           // (a NaN makes the particle's bound NaN: skipped, as by the mapper)
           largest = std::isnan(a) ? a : std::max(largest, a);
+          product *= a;
         }
         radii->SetValue(i, static_cast<float>(largest));
+        volumeRadii->SetValue(i, static_cast<float>(product > 0.0 ? std::cbrt(product) : 0.0));
       }
     });
   particles->GetPointData()->AddArray(radii);
+  particles->GetPointData()->AddArray(volumeRadii);
 }
 
 //------------------------------------------------------------------------------

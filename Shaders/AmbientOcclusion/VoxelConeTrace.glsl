@@ -93,6 +93,23 @@ void prTraceSphereCones(vec3 centerVC, float radiusVC, out vec4 cones[6])
   }
 }
 
+#ifdef PR_ELLIPSOID
+// Per ellipsoid (x = c + A u, toVC = A in view coordinates): the same six cones from the
+// ellipsoid's extreme points along the world axes, c + A A^T e / |A^T e| (voxel coordinates).
+void prTraceEllipsoidCones(vec3 centerVC, mat3 toVC, out vec4 cones[6])
+{
+  vec3 c = (prViewToVoxel * vec4(centerVC, 1.0)).xyz;
+  mat3 a = mat3(prViewToVoxel) * toVC;
+  for (int k = 0; k < 6; ++k)
+  {
+    vec3 axis = vec3(0.0);
+    axis[k / 2] = (k % 2 == 0) ? 1.0 : -1.0;
+    vec3 support = transpose(a) * axis;
+    cones[k] = prTraceConesVoxel(c + a * (support / length(support)), axis);
+  }
+}
+#endif
+
 // Per fragment: the six axis results blended by the squared components of the world normal
 // (they sum to 1), the side chosen by each component's sign.
 vec4 prBlendSphereCones(vec3 normalWC, vec4 plusX, vec4 minusX, vec4 plusY, vec4 minusY,

@@ -90,18 +90,46 @@ double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vt
         continue;
       }
       const SphereVC& sv = spheres[j];
-      const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
-      const double b = vtkMath::Dot(oc, dir);
-      // closest approach relative to the centre (no cancellation), as everywhere here
-      const double q[3] = { oc[0] - b * dir[0], oc[1] - b * dir[1], oc[2] - b * dir[2] };
-      const double h2 = sv.R * sv.R - vtkMath::Dot(q, q);
-      if (!(h2 >= 0.0))
+      double tIn;
+      double tOut;
+      AmbientScratch::Piece piece;
+      if (sv.Ellipsoid)
       {
-        continue;
+        // the unit frame's chord, and the sphere with its profile along this ray (MakeSegment)
+        double qu[3];
+        double dd[3];
+        double length;
+        double b;
+        double hu;
+        if (!EllipsoidChord(p, dir, sv, qu, dd, length, b, hu))
+        {
+          continue;
+        }
+        tIn = (-b - hu) / length;
+        tOut = (-b + hu) / length;
+        piece.Tc = -b / length;
+        piece.Radius = 1.0 / length;
+        piece.Impact = std::sqrt(vtkMath::Dot(qu, qu)) / length;
+        piece.MaximumScale = std::pow(piece.Radius / sv.R, frame.DensityModel == 1 ? 2.0 : 0.0);
       }
-      const double hh = std::sqrt(h2);
-      const double tIn = -b - hh;
-      const double tOut = -b + hh;
+      else
+      {
+        const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
+        const double b = vtkMath::Dot(oc, dir);
+        // closest approach relative to the centre (no cancellation), as everywhere here
+        const double q[3] = { oc[0] - b * dir[0], oc[1] - b * dir[1], oc[2] - b * dir[2] };
+        const double h2 = sv.R * sv.R - vtkMath::Dot(q, q);
+        if (!(h2 >= 0.0))
+        {
+          continue;
+        }
+        const double hh = std::sqrt(h2);
+        tIn = -b - hh;
+        tOut = -b + hh;
+        piece.Tc = -b;
+        piece.Radius = sv.R;
+        piece.Impact = std::sqrt(vtkMath::Dot(q, q));
+      }
       if (!(tOut > 1e-9 * sv.R && tIn < aoDistance))
       {
         continue;
@@ -117,7 +145,10 @@ double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vt
         }
         continue;
       }
-      pieces.push_back({ start, std::min(tOut, aoDistance), j });
+      piece.Start = start;
+      piece.End = std::min(tOut, aoDistance);
+      piece.Index = j;
+      pieces.push_back(piece);
     }
     if (allOpaque)
     {
@@ -146,15 +177,11 @@ double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vt
       {
         break;
       }
-      const SphereVC& sv = spheres[piece.Index];
-      const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
-      const double tc = -vtkMath::Dot(oc, dir);
-      const double q[3] = { oc[0] + tc * dir[0], oc[1] + tc * dir[1], oc[2] + tc * dir[2] };
-      const double impact = std::sqrt(vtkMath::Dot(q, q));
-      const double integral = IntegrateDensityImpl(frame.DensityModel, frame.HollowFraction, sv.R,
-        impact, piece.Start - tc, std::min(piece.End, tOpaque) - tc);
-      const double opticalDepth =
-        frame.SphereKappa[piece.Index] * (integral / frame.SphereMaximum[piece.Index]);
+      const double tc = piece.Tc;
+      const double integral = IntegrateDensityImpl(frame.DensityModel, frame.HollowFraction,
+        piece.Radius, piece.Impact, piece.Start - tc, std::min(piece.End, tOpaque) - tc);
+      const double opticalDepth = frame.SphereKappa[piece.Index] *
+        (integral / (frame.SphereMaximum[piece.Index] * piece.MaximumScale));
       if (!(opticalDepth > 0.0) || !std::isfinite(opticalDepth))
       {
         continue;

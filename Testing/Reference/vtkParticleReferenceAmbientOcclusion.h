@@ -25,6 +25,11 @@ struct AmbientScratch
     double Start;
     double End;
     std::uint32_t Index;
+    // the (equivalent, for an ellipsoid) sphere along this ray: see MakeSegment
+    double Tc = 0.0;
+    double Radius = 0.0;
+    double Impact = 0.0;
+    double MaximumScale = 1.0;
   };
   std::vector<std::uint32_t> Candidates;
   std::vector<Piece> Pieces;

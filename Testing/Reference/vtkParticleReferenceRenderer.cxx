@@ -419,10 +419,9 @@ bool vtkParticleReferenceRenderer::Render()
     {
       return fail("SetParticleAttributes() gives radii, but the mapper draws ellipsoids.");
     }
-    if (mapper->IsA("vtkMetaballMapper") || this->AmbientOcclusionSamples > 0)
+    if (mapper->IsA("vtkMetaballMapper"))
     {
-      return fail("Ellipsoids are rendered in the opaque and transparent modes without ambient "
-                  "occlusion only.");
+      return fail("A vtkMetaballMapper draws no ellipsoids.");
     }
     mapper->GetAxesToViewMatrix(this->Renderer, this->Actor, axesToView);
   }
@@ -709,7 +708,8 @@ bool vtkParticleReferenceRenderer::Render()
     double sum = 0.0;
     for (const SphereVC& sv : frame.Spheres)
     {
-      sum += sv.R;
+      // (an ellipsoid: the radius of the sphere of its volume, as the AO volumes' grids)
+      sum += sv.Ellipsoid ? std::cbrt(std::abs(vtkMath::Determinant3x3(sv.ToVC))) : sv.R;
     }
     aoDistance = frame.Spheres.empty() ? 1.0 : 4.0 * sum / frame.Spheres.size();
   }

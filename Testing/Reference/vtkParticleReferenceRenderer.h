@@ -263,8 +263,8 @@ public:
    * has no surface point and gets none) and of an opaque particle -- casts that many rays into
    * the hemisphere of its normal, cosine-distributed (a stratified Hammersley set rotated per
    * pixel, deterministic), through the real spheres (all of them but its own) up to
-   * AmbientOcclusionDistance (0, the default: four mean radii, one voxel of
-   * vtkParticleDensityVolume's automatic grid):
+   * AmbientOcclusionDistance (0, the default: four mean radii -- of an ellipsoid the radius of
+   * the sphere of its volume --, one voxel of vtkParticleDensityVolume's automatic grid):
    * - A_O (Eq. 5) is the mean transmittance of the rays. An opaque sphere (the opaque mode, or
    *   Theta_i >= 1) stops a ray (binary visibility, Eq. 3); a translucent one attenuates it by
    *   its exact emission-absorption transmittance exp(-kappa_i I / I_max) over its part of the
