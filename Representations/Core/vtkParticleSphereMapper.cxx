@@ -106,6 +106,9 @@ public:
     vtkMTimeType OrientationTime = 0;
     std::string OrientationArrayName;
     int OrientationComponent = 0;
+    vtkAbstractArray* TensorArray = nullptr;
+    vtkMTimeType TensorTime = 0;
+    std::string TensorArrayName;
     bool operator==(const Signature& o) const
     {
       return Input == o.Input && Points == o.Points && PointsTime == o.PointsTime &&
@@ -116,7 +119,8 @@ public:
         AxesComponent == o.AxesComponent && AxesAreDiameters == o.AxesAreDiameters &&
         OrientationArray == o.OrientationArray && OrientationTime == o.OrientationTime &&
         OrientationArrayName == o.OrientationArrayName &&
-        OrientationComponent == o.OrientationComponent;
+        OrientationComponent == o.OrientationComponent && TensorArray == o.TensorArray &&
+        TensorTime == o.TensorTime && TensorArrayName == o.TensorArrayName;
     }
   };
   Signature Prepared;
@@ -150,6 +154,7 @@ vtkParticleSphereMapper::~vtkParticleSphereMapper()
   this->SetRadiusArrayName(nullptr);
   this->SetAxesArrayName(nullptr);
   this->SetOrientationArrayName(nullptr);
+  this->SetTensorArrayName(nullptr);
   delete this->Internals;
 }
 
@@ -311,6 +316,68 @@ vtkDataArray* GetComponentsPointArray(vtkPolyData* input, const char* name, cons
     array = nullptr;
   }
   return array;
+}
+
+// The semi-axes (absolute eigenvalues of the symmetric part) and unit quaternions (the
+// eigenvectors, right-handed) of 3x3 tensors, as vtkTensorGlyph's ExtractEigenvalues reads them;
+// a non-finite tensor gives NaN axes, an eigenvalue below 1e-6 of the largest 0 (the particle
+// is then skipped as for bad axes).
+void TensorsToEllipsoids(vtkDataArray* tensors, vtkFloatArray* axes, vtkFloatArray* quaternions)
+{
+  const vtkIdType n = tensors->GetNumberOfTuples();
+  axes->SetNumberOfComponents(3);
+  axes->SetNumberOfTuples(n);
+  quaternions->SetNumberOfComponents(4);
+  quaternions->SetNumberOfTuples(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double t[9];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        tensors->GetTuple(i, t);
+        double m[3][3];
+        bool finite = true;
+        for (int r = 0; r < 3; ++r)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            m[r][c] = 0.5 * (t[r + 3 * c] + t[c + 3 * r]);
+            finite = finite && std::isfinite(m[r][c]);
+          }
+        }
+        double w[3] = { 0.0, 0.0, 0.0 };
+        double v[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+        if (finite)
+        {
+          vtkMath::Diagonalize3x3(m, w, v); // eigenvectors in the columns of v
+          if (vtkMath::Determinant3x3(v) < 0.0)
+          {
+            for (int r = 0; r < 3; ++r)
+            {
+              v[r][2] = -v[r][2];
+            }
+          }
+        }
+        // an eigenvalue below float precision of the largest is a flat glyph's 0 (skipped)
+        const double largest = std::max({ std::abs(w[0]), std::abs(w[1]), std::abs(w[2]) });
+        for (double& value : w)
+        {
+          value = std::abs(value) > 1e-6 * largest ? value : 0.0;
+        }
+        double q[4];
+        vtkMath::Matrix3x3ToQuaternion(v, q);
+        for (int k = 0; k < 3; ++k)
+        {
+          axes->SetTypedComponent(
+            i, k, finite ? static_cast<float>(std::abs(w[k])) : std::nanf(""));
+        }
+        for (int k = 0; k < 4; ++k)
+        {
+          quaternions->SetTypedComponent(i, k, static_cast<float>(q[k]));
+        }
+      }
+    });
 }
 
 struct EllipsoidSummary
@@ -477,6 +544,10 @@ vtkIdType vtkParticleSphereMapper::PrepareParticles()
     signature.OrientationTime =
       signature.OrientationArray ? signature.OrientationArray->GetMTime() : 0;
     signature.OrientationComponent = this->OrientationArrayComponent;
+    signature.TensorArrayName = this->TensorArrayName ? this->TensorArrayName : "";
+    signature.TensorArray =
+      signature.TensorArrayName.empty() ? nullptr : pd->GetAbstractArray(this->TensorArrayName);
+    signature.TensorTime = signature.TensorArray ? signature.TensorArray->GetMTime() : 0;
   }
   if (internals.PrepareTime != 0 && internals.Prepared == signature)
   {
@@ -611,29 +682,52 @@ bool vtkParticleSphereMapper::PrepareEllipsoids(
   }
   const vtkIdType numPts = input->GetNumberOfPoints();
   vtkDataArray* axesArray = nullptr;
-  if (!this->AxesArrayName || !this->AxesArrayName[0])
+  vtkDataArray* orientationArray = nullptr;
+  int axesComponent = this->AxesArrayComponent;
+  int orientationComponent = this->OrientationArrayComponent;
+  bool diameters = this->AxesAreDiameters;
+  vtkNew<vtkFloatArray> tensorAxes;
+  vtkNew<vtkFloatArray> tensorQuaternions;
+  if (this->TensorArrayName && this->TensorArrayName[0])
   {
-    warnings << "Shape is Ellipsoid but no axes array is set: drawing spheres. ";
+    // axes and orientation from the tensors' eigen-decomposition (vtkTensorGlyph's rule)
+    vtkDataArray* tensors = GetComponentsPointArray(
+      input, this->TensorArrayName, "Tensor", 0, 9, "drawing spheres", warnings);
+    if (!tensors)
+    {
+      return false;
+    }
+    TensorsToEllipsoids(tensors, tensorAxes, tensorQuaternions);
+    axesArray = tensorAxes;
+    orientationArray = tensorQuaternions;
+    axesComponent = 0;
+    orientationComponent = 0;
+    diameters = false;
   }
   else
   {
-    axesArray = GetComponentsPointArray(
-      input, this->AxesArrayName, "Axes", this->AxesArrayComponent, 3, "drawing spheres", warnings);
-  }
-  if (!axesArray)
-  {
-    return false;
-  }
-  vtkDataArray* orientationArray =
-    GetComponentsPointArray(input, this->OrientationArrayName, "Orientation",
+    if (!this->AxesArrayName || !this->AxesArrayName[0])
+    {
+      warnings << "Shape is Ellipsoid but no axes array is set: drawing spheres. ";
+    }
+    else
+    {
+      axesArray = GetComponentsPointArray(input, this->AxesArrayName, "Axes",
+        this->AxesArrayComponent, 3, "drawing spheres", warnings);
+    }
+    if (!axesArray)
+    {
+      return false;
+    }
+    orientationArray = GetComponentsPointArray(input, this->OrientationArrayName, "Orientation",
       this->OrientationArrayComponent, 4, "drawing the ellipsoids axis-aligned", warnings);
+  }
   internals.Axes->SetNumberOfTuples(numPts);
   internals.Orientations->SetNumberOfTuples(numPts);
   boundingRadii->SetNumberOfTuples(numPts);
-  const EllipsoidSummary summary =
-    CheckEllipsoids(axesArray, this->AxesArrayComponent, this->AxesAreDiameters, orientationArray,
-      this->OrientationArrayComponent, internals.Axes->GetPointer(0),
-      internals.Orientations->GetPointer(0), boundingRadii->GetPointer(0), numPts);
+  const EllipsoidSummary summary = CheckEllipsoids(axesArray, axesComponent, diameters,
+    orientationArray, orientationComponent, internals.Axes->GetPointer(0),
+    internals.Orientations->GetPointer(0), boundingRadii->GetPointer(0), numPts);
   internals.Axes->Modified();
   internals.Orientations->Modified();
   if (summary.BadOrientation > 0)
@@ -1848,6 +1942,8 @@ void vtkParticleSphereMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OrientationArrayName: "
      << (this->OrientationArrayName ? this->OrientationArrayName : "(none)") << "\n";
   os << indent << "OrientationArrayComponent: " << this->OrientationArrayComponent << "\n";
+  os << indent << "TensorArrayName: " << (this->TensorArrayName ? this->TensorArrayName : "(none)")
+     << "\n";
   os << indent << "RadiusScaleFactor: " << this->RadiusScaleFactor << "\n";
   os << indent << "NumberOfSkippedParticles: " << this->NumberOfSkippedParticles << "\n";
   os << indent << "CollectTimings: " << this->CollectTimings << "\n";

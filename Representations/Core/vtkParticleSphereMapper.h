@@ -153,6 +153,20 @@ public:
   vtkGetMacro(OrientationArrayComponent, int);
   ///@}
 
+  ///@{
+  /**
+   * Ellipsoids from a 3x3 tensor per particle (a 9-component point array), as ParaView's Tensor
+   * Glyph draws them with Extract Eigenvalues (vtkTensorGlyph): the semi-axes are the absolute
+   * eigenvalues of the tensor's symmetric part, the orientation its eigenvectors (made
+   * right-handed). When set it replaces AxesArrayName and OrientationArrayName; a tensor with a
+   * non-finite entry or an eigenvalue below 1e-6 of its largest skips its particle (a flat or
+   * degenerate glyph), with the bad axes' warning. Empty (the default): the axes and orientation
+   * arrays.
+   */
+  vtkSetStringMacro(TensorArrayName);
+  vtkGetStringMacro(TensorArrayName);
+  ///@}
+
   /**
    * Whether the last prepared input is drawn as ellipsoids: Shape is ELLIPSOID and the axes array
    * is usable (valid after a render or GetBounds()).
@@ -571,6 +585,7 @@ protected:
   bool AxesAreDiameters = false;
   char* OrientationArrayName = nullptr;
   int OrientationArrayComponent = 0;
+  char* TensorArrayName = nullptr;
   double RadiusScaleFactor = 1.0;
   // the clip box (SetClipBox) and whether it is set
   double ClipBox[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };

@@ -696,7 +696,7 @@ void vtkParticleRepresentation::UpdateMapperRadiusArray()
 //------------------------------------------------------------------------------
 bool vtkParticleRepresentation::EllipsoidsInEffect(vtkPolyData* particles) const
 {
-  if (this->Shape == SHAPE_ELLIPSOID)
+  if (this->Shape == SHAPE_ELLIPSOID || this->Shape == SHAPE_TENSOR_ELLIPSOID)
   {
     return true;
   }
@@ -748,6 +748,9 @@ void vtkParticleRepresentation::UpdateMapperShape()
   this->EffectiveEllipsoidArrays(
     particles, axes, axesComponent, diameters, orientation, orientationComponent);
   this->Mapper->SetShapeToEllipsoid();
+  this->Mapper->SetTensorArrayName(
+    this->Shape == SHAPE_TENSOR_ELLIPSOID && !this->TensorArray.empty() ? this->TensorArray.c_str()
+                                                                        : nullptr);
   this->Mapper->SetAxesArrayName(axes.empty() ? nullptr : axes.c_str());
   this->Mapper->SetAxesArrayComponent(axesComponent);
   this->Mapper->SetAxesAreDiameters(diameters);
@@ -760,6 +763,11 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
 {
   if (!particles || !this->EllipsoidsInEffect(particles))
   {
+    return;
+  }
+  if (this->Shape == SHAPE_TENSOR_ELLIPSOID)
+  {
+    this->AddTensorBoundingRadii(particles);
     return;
   }
   std::string axesName;
@@ -806,10 +814,65 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleRepresentation::AddTensorBoundingRadii(vtkPolyData* particles)
+{
+  vtkDataArray* tensors = particles->GetPointData()->GetArray(this->TensorArray.c_str());
+  if (!tensors || tensors->GetNumberOfComponents() != 9)
+  {
+    return; // the mapper says what is wrong, and draws spheres
+  }
+  // the tensor's symmetric part S: its eigenvalues are the semi-axes (vtkTensorGlyph), so
+  // max |lambda| <= |S|_F bounds the particle and |det S| = a b c gives its volume
+  const vtkIdType n = particles->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> radii;
+  radii->SetName("ParticleBoundingRadius");
+  radii->SetNumberOfTuples(n);
+  vtkNew<vtkFloatArray> volumeRadii;
+  volumeRadii->SetName("ParticleVolumeRadius");
+  volumeRadii->SetNumberOfTuples(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double t[9];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        tensors->GetTuple(i, t);
+        double s[3][3];
+        double frobenius = 0.0;
+        for (int r = 0; r < 3; ++r)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            s[r][c] = 0.5 * (t[r + 3 * c] + t[c + 3 * r]);
+            frobenius += s[r][c] * s[r][c];
+          }
+        }
+        radii->SetValue(i, static_cast<float>(std::sqrt(frobenius)));
+        volumeRadii->SetValue(
+          i, static_cast<float>(std::cbrt(std::abs(vtkMath::Determinant3x3(s)))));
+      }
+    });
+  particles->GetPointData()->AddArray(radii);
+  particles->GetPointData()->AddArray(volumeRadii);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleRepresentation::SelectTensorArray(int, int, int, int, const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->TensorArray)
+  {
+    this->TensorArray = value;
+    this->UpdateMapperShape();
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetShape(int shape)
 {
-  shape =
-    std::min(std::max(shape, static_cast<int>(SHAPE_SPHERE)), static_cast<int>(SHAPE_AUTOMATIC));
+  shape = std::min(
+    std::max(shape, static_cast<int>(SHAPE_SPHERE)), static_cast<int>(SHAPE_TENSOR_ELLIPSOID));
   if (shape != this->Shape)
   {
     this->Shape = shape;

@@ -52,7 +52,9 @@
  *
  * Shape: SHAPE_SPHERE, SHAPE_ELLIPSOID (oriented ellipsoids from AxesArray and OrientationArray,
  * components picked with AxesArrayComponent and OrientationArrayComponent, diameters halved with
- * AxesAreDiameters: vtkParticleSphereMapper's Shape ELLIPSOID) or SHAPE_AUTOMATIC (the default):
+ * AxesAreDiameters: vtkParticleSphereMapper's Shape ELLIPSOID), SHAPE_TENSOR_ELLIPSOID (the
+ * eigen-decomposition of the 9-component TensorArray, as ParaView's Tensor Glyph: the mapper's
+ * TensorArrayName) or SHAPE_AUTOMATIC (the default):
  * ellipsoids when the data has the point arrays vtkLAMMPSDumpReader writes for LAMMPS's
  * ellipsoids, "semi_axes" (3 components) and, if present, "orientation" (4), spheres otherwise.
  * With ellipsoids the radius settings are not used: bounds, partitions and ghosts take each
@@ -133,7 +135,8 @@ public:
   {
     SHAPE_SPHERE = 0,
     SHAPE_ELLIPSOID = 1,
-    SHAPE_AUTOMATIC = 2
+    SHAPE_AUTOMATIC = 2,
+    SHAPE_TENSOR_ELLIPSOID = 3
   };
   void SetShape(int shape);
   vtkGetMacro(Shape, int);
@@ -142,6 +145,7 @@ public:
   void SetAxesAreDiameters(bool diameters);
   void SelectOrientationArray(int, int, int, int, const char* name);
   void SetOrientationArrayComponent(int component);
+  void SelectTensorArray(int, int, int, int, const char* name);
   /**
    * Whether the particles are drawn as ellipsoids (the Shape in effect for the processed data).
    */
@@ -394,6 +398,7 @@ protected:
   bool AxesAreDiameters = false;
   std::string OrientationArray = "orientation";
   int OrientationArrayComponent = 0;
+  std::string TensorArray;
   bool EllipsoidsInEffect(vtkPolyData* particles) const;
   // the axes and orientation arrays in effect for particles (AUTOMATIC: the reader's names)
   void EffectiveEllipsoidArrays(vtkPolyData* particles, std::string& axes, int& axesComponent,
@@ -401,6 +406,7 @@ protected:
   // the largest semi-axis of every particle as the point array "ParticleBoundingRadius" of
   // particles (ellipsoids in effect), for bounds, partitions and ghosts
   void AddBoundingRadii(vtkPolyData* particles);
+  void AddTensorBoundingRadii(vtkPolyData* particles);
   void UpdateMapperShape();
 
 private:

@@ -10,7 +10,9 @@
   baseline; still ellipsoids;
 - the 2021 LAMMPS layout: the same step written with the columns c_shape[1..7] (what Debian 12's
   lmp writes through compute property/atom), Shape Ellipsoid with Axes Array c_shape, component
-  0, Axes Are Diameters, Orientation Array c_shape, component 3: the same picture, bit for bit.
+  0, Axes Are Diameters, Orientation Array c_shape, component 3: the same picture, bit for bit;
+- tensors as the Tensor Glyph filter takes them (R diag(a) R^T): Shape Ellipsoid (Tensor) draws
+  the picture of Shape Ellipsoid with the axes and quaternions, within 1/255.
 
 usage: pvpython TestEllipsoidsParaView.py --plugin ParticleRendering.so --data DIR
            --baseline-dir DIR --temp-dir DIR [--must-fail spheres]
@@ -60,6 +62,39 @@ def last_step_as_2021_dump(path, out):
         for line in last:
             f.write((line.replace(NAMES, C_SHAPE) if line.startswith("ITEM: ATOMS") else line)
                     + "\n")
+
+
+def write_tensor_particles(path):
+    """40 random ellipsoids as a .vtp: axes, quaternions and the tensors R diag(a) R^T."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    rng = np.random.default_rng(8)
+    n = 40
+    q = rng.normal(size=(n, 4))
+    q /= np.linalg.norm(q, axis=1)[:, None]
+    a = rng.uniform(0.2, 1.0, size=(n, 3))
+    w, x, y, z = q.T
+    r = np.stack([
+        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
+    data = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(rng.uniform(-3.0, 3.0, size=(n, 3)), deep=True))
+    data.SetPoints(points)
+    for name, values in (("axes", a), ("quat", q),
+                         ("tensor", np.einsum("nij,nj,nkj->nik", r, a, r).reshape(n, 9))):
+        array = numpy_to_vtk(np.ascontiguousarray(values), deep=True)
+        array.SetName(name)
+        data.GetPointData().AddArray(array)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetDataModeToBinary()
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.Write()
 
 
 bundled = os.path.join(args.data, "gb_ellipsoids.lammpstrj.gz")
@@ -136,8 +171,33 @@ def second_part():
             if largest != 0:
                 fail("the c_shape components draw another picture (%s/255)" % largest)
 
-            # translucent
+            # tensors, as the Tensor Glyph filter takes them: Shape Ellipsoid (Tensor) draws the
+            # picture of the axes and quaternions they were made from
             simple.Hide(old_reader, view)
+            tensor_file = os.path.join(args.temp_dir, "TestEllipsoidsParaView_tensors.vtp")
+            write_tensor_particles(tensor_file)
+            tensor_reader = simple.OpenDataFile(tensor_file)
+            tensor_display = simple.Show(tensor_reader, view)
+            tensor_display.Representation = "Particles"
+            pictures = []
+            for shape in ("Ellipsoid", "Ellipsoid (Tensor)"):
+                tensor_display.Shape = shape
+                tensor_display.AxesArray = ["POINTS", "axes"]
+                tensor_display.OrientationArray = ["POINTS", "quat"]
+                tensor_display.TensorArray = ["POINTS", "tensor"]
+                simple.Render(view)
+                if not draws_ellipsoids(view):
+                    fail("%s: not drawn as ellipsoids" % shape)
+                pictures.append(pr.capture(view, os.path.join(
+                    args.temp_dir, "TestEllipsoidsParaView_%s.png" % shape.split()[-1].strip("()"))))
+            largest, mean = pr.difference(pictures[0], pictures[1])
+            report.append("Ellipsoid (Tensor) vs axes and quaternions: largest difference %s/255"
+                          % largest)
+            if largest is None or largest > 1:
+                fail("the tensors draw another picture (%s/255)" % largest)
+            simple.Hide(tensor_reader, view)
+
+            # translucent
             simple.Show(reader, view)
             display.Opacity = 0.9
             display.DensityModel = "Squared Distance"

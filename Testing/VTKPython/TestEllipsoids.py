@@ -14,6 +14,8 @@
    particles in one point.
 5. Bad input: zero, negative and NaN axes skip the particle, zero and non-unit quaternions are
    axis-aligned and normalised, an unusable axes array gives spheres; each with its warning.
+   Tensors (TensorArrayName, as ParaView's Tensor Glyph takes them): the absolute eigenvalues are
+   the axes, the picture is that of the axes and quaternions; a flat tensor is skipped.
 6. Occlusion culling and picking work on ellipsoids; the baseline picture (with its must-fail
    pictures) and the repeat of every frame.
 
@@ -365,6 +367,52 @@ window.Render()
 check(np.allclose(vtk_to_numpy(mapper.GetParticleAxes())[0], [0.5, 0.3, 0.2]),
       "diameters are halved")
 check(abs(mapper.GetBounds()[1] - 0.5) < 1e-6, "bounds grow by the largest semi-axis")
+
+# tensors (as ParaView's Tensor Glyph takes them): T = R diag(a) R^T, one eigenvalue negated
+# for some (the same ellipsoid: |eigenvalue|), one flat tensor (an eigenvalue 0: skipped)
+count = 30
+tensor_rng = np.random.default_rng(99)  # (the scenes below keep their random numbers)
+xyz = tensor_rng.uniform(-2.0, 2.0, size=(count, 3))
+quats = random_quaternions(count, tensor_rng)
+axes = tensor_rng.uniform(0.15, 0.8, size=(count, 3))
+w, x, y, z = quats.T
+turns = np.stack([
+    np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+    np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+    np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
+signs = np.ones((count, 3))
+signs[::3, 0] = -1.0
+tensors = np.einsum("nij,nj,nkj->nik", turns, axes * signs, turns).reshape(count, 9)
+flat = tensors.copy()
+flat[0] = np.einsum("ij,j,kj->ik", turns[0], [0.5, 0.3, 0.0], turns[0]).reshape(9)
+pictures = []
+for label, use_tensor in (("axes and quaternions", False), ("tensors", True)):
+    data = particles_from(xyz, axes=axes, quat=quats, tensor=tensors, flat=flat)
+    mapper = pr.vtkParticleSphereMapper()
+    mapper.SetInputData(data)
+    mapper.SetShapeToEllipsoid()
+    if use_tensor:
+        mapper.SetTensorArrayName("tensor")
+    else:
+        mapper.SetAxesArrayName("axes")
+        mapper.SetOrientationArrayName("quat")
+    actor, renderer, window = actor_view(mapper, (240, 240))
+    look(renderer, (6.0, 4.0, 10.0))
+    pictures.append(grab_image(window)[:, :3].astype(int))
+    if use_tensor:
+        drawn = np.sort(vtk_to_numpy(mapper.GetParticleAxes()), axis=1)
+        error = np.abs(drawn - np.sort(axes, axis=1)).max()
+        print("tensors: eigenvalue semi-axes within %.1e of the axes" % error)
+        check(error < 1e-5, "tensor eigenvalues: axes off by %.1e" % error)
+        mapper.SetTensorArrayName("flat")
+        window.Render()
+        check(mapper.GetNumberOfSkippedParticles() == 1 and
+              "semi-axis" in mapper.GetLastInputWarning(),
+              "flat tensor: skipped with a warning (%s)" % mapper.GetLastInputWarning())
+diff = np.abs(pictures[0] - pictures[1]).max(axis=1)
+print("tensors vs axes and quaternions: %d pixels differ by more than 1/255 (largest %d)"
+      % (np.sum(diff > 1), diff.max()))
+check(np.sum(diff > 1) <= 10, "tensors draw another picture (%d pixels)" % np.sum(diff > 1))
 
 # ---- 6. occlusion culling, picking, baseline
 xyz = rng.uniform(0.0, 12.0, size=(20000, 3))
