@@ -12,8 +12,10 @@ reported, and the others are still made) or, with --check, when the output is in
 Data, opened the way a user opens it: the droplet trajectory lj_droplets.lammpstrj.gz (5 steps,
 11 033 atoms) through the LAMMPS Dump Reader, the crystal fcc_block.data.gz (32 000 atoms) through
 the LAMMPS Data Reader, both with Type Radii 1 -> 0.5, 2 -> 0.4 sigma; the film lj_film.vtp (19 360
-atoms, the AO scene) through ParaView's XML reader. Every picture is a Particle Render View with
-one Particles representation, coloured by atom type; the space-filling ("molecule-like") scene is
+atoms, the AO scene) through ParaView's XML reader; the Gay-Berne rods gb_ellipsoids.lammpstrj.gz
+(1440 ellipsoids, atom_style ellipsoid, last of 3 steps) through the LAMMPS Dump Reader, drawn as
+oriented ellipsoids by Shape Automatic. Every picture is a Particle Render View with one Particles
+representation, coloured by atom type; the space-filling ("molecule-like") scene and the rods are
 coloured by speed, so that overlapping neighbours differ in colour.
 
 Per picture (DIR/<name>.png, one tile of DIR/contact_sheet.png, one row of DIR/samples.csv and
@@ -82,6 +84,9 @@ SCENES = {
                  what="VTK XML"),
     "crystal": dict(file="fcc_block.data.gz", reader="data", direction=(1.2, -1.5, 1.0),
                     zoom=0.8, what="LAMMPS data file"),
+    # atom_style ellipsoid: Shape Automatic draws the reader's semi_axes and orientation
+    "rods": dict(file="gb_ellipsoids.lammpstrj.gz", reader="dump", step=-1, colour="speed",
+                 direction=(1.0, -1.6, 0.5), zoom=1.25, what="LAMMPS dump, ellipsoids"),
 }
 
 # name: the file name; label: what the picture shows; scene: a key of SCENES; settings: display.X
@@ -132,11 +137,19 @@ TILES = [
          "atoms near or below a pixel: alias-free shading, refined while the view holds still"),
     Tile("time_step", "Time series, step 1 of 5", "droplets t0", {}, "opaque",
          "trajectories: the LAMMPS readers' time steps, Play in ParaView"),
+    Tile("ellipsoids", "Ellipsoids (Gay-Berne rods)", "rods", {}, "opaque",
+         "aspherical particles (atom_style ellipsoid): exact oriented ellipsoids"),
+    Tile("ellipsoids_translucent", "Ellipsoids, translucent", "rods",
+         {"display.Opacity": 0.9, "display.DensityModel": "Squared Distance"}, "transparent",
+         "see into a liquid crystal: each rod's opacity along its length"),
+    Tile("ellipsoids_ao", "Ellipsoids, voxel-cone AO", "rods",
+         {"view.ParticleAmbientOcclusion": "Voxel Cone Tracing"}, "ao",
+         "the depth of a dense packing of rods"),
 ]
 # the opaque core of each scene: the picture that is the scene's core, or a core measured
 # without a picture
 CORE_TILE = {"droplets": "core", "film": "film_plain", "crystal": "crystal_plain",
-             "droplets t0": "time_step"}
+             "droplets t0": "time_step", "rods": "ellipsoids"}
 
 
 def parse_arguments():
@@ -419,7 +432,7 @@ class Samples:
 
 
 REFERENCE_TEXT = {
-    "opaque": "ray-cast spheres (double)",
+    "opaque": "ray-cast particles (double)",
     "transparent": "emission-absorption integral (double)",
     "transparent exact": "exact overlap integral (double)",
     "metaballs": "exact metaball surface (double)",
