@@ -154,7 +154,10 @@ void vtkParticleDistributedPartition::UpdateColumnLayers()
   // bounds
   vtkParticleProcessReduction::Extent extent;
   const vtkIdType n = particles && particles->GetPoints() ? particles->GetNumberOfPoints() : 0;
-  vtkDataArray* radii = n > 0 ? GetRadiusValues(particles, radiusArray) : nullptr;
+  vtkDataArray* radii = n > 0
+    ? GetRadiusValues(
+        particles, this->ColumnRadiusArray.empty() ? radiusArray : this->ColumnRadiusArray)
+    : nullptr;
   for (vtkIdType i = 0; i < n; ++i)
   {
     double x[3];

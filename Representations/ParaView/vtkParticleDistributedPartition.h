@@ -69,6 +69,16 @@ public:
 
   ///@{
   /**
+   * The point array whose values count as the particles' radii in the column-layer estimate
+   * (vtkTransparentSphereMapper::EstimateColumnLayers) when it differs from the drawing radius:
+   * for ellipsoids sqrt(a b c / a_max), what the mapper counts on one process. Empty (the
+   * default): the radius array of Update().
+   */
+  void SetColumnRadiusArray(const std::string& name) { this->ColumnRadiusArray = name; }
+  ///@}
+
+  ///@{
+  /**
    * The view partitions these particles together with its other Particles representations
    * (vtkParticleViewPartition): Update records its arguments and the column layers only.
    */
@@ -180,6 +190,7 @@ protected:
   vtkSmartPointer<vtkPolyData> Particles;
   bool Needed = false;
   std::string RadiusArray;
+  std::string ColumnRadiusArray;
   double Radius = 1.0;
   double RadiusScale = 1.0;
   double Reach = 1.0;

@@ -378,6 +378,11 @@ int vtkParticleRepresentation::RequestData(
   const bool needed =
     (this->IsTranslucent() && this->Technique == SPHERES) || this->Technique == METABALLS;
   const double reach = this->Technique == METABALLS ? this->InfluenceFactor : 1.0;
+  // (ellipsoids count in the column-layer estimate with sqrt(a b c / a_max))
+  this->DistributedPartition->SetColumnRadiusArray(this->EllipsoidsInEffect(this->ProcessedData) &&
+        this->ProcessedData->GetPointData()->GetArray("ParticleColumnRadius")
+      ? "ParticleColumnRadius"
+      : "");
   this->DistributedPartition->Update(this->ProcessedData, input, needed,
     this->EffectiveRadiusArray(this->ProcessedData), this->Mapper->GetRadius(),
     this->Mapper->GetRadiusScaleFactor(), reach, bounds);
@@ -786,10 +791,14 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
   vtkNew<vtkFloatArray> radii;
   radii->SetName("ParticleBoundingRadius");
   radii->SetNumberOfTuples(n);
-  // and the radius of the sphere of each particle's volume, for the AO volumes
+  // and the radius of the sphere of each particle's volume, for the AO volumes, and the radius
+  // that counts in the column-layer estimate, sqrt(a b c / a_max) (as the mapper's)
   vtkNew<vtkFloatArray> volumeRadii;
   volumeRadii->SetName("ParticleVolumeRadius");
   volumeRadii->SetNumberOfTuples(n);
+  vtkNew<vtkFloatArray> columnRadii;
+  columnRadii->SetName("ParticleColumnRadius");
+  columnRadii->SetNumberOfTuples(n);
   const double factor = diameters ? 0.5 : 1.0;
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
@@ -807,10 +816,23 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
         }
         radii->SetValue(i, static_cast<float>(largest));
         volumeRadii->SetValue(i, static_cast<float>(product > 0.0 ? std::cbrt(product) : 0.0));
+        // (from the float axes the mapper holds)
+        double floats = 1.0;
+        double floatLargest = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double a = static_cast<float>(factor * axes->GetComponent(i, component + k));
+          floats *= a;
+          floatLargest = std::max(floatLargest, a);
+        }
+        columnRadii->SetValue(i,
+          static_cast<float>(
+            floats > 0.0 && floatLargest > 0.0 ? std::sqrt(floats / floatLargest) : 0.0));
       }
     });
   particles->GetPointData()->AddArray(radii);
   particles->GetPointData()->AddArray(volumeRadii);
+  particles->GetPointData()->AddArray(columnRadii);
 }
 
 //------------------------------------------------------------------------------

@@ -41,6 +41,8 @@ usage: mpiexec -np N pvbatch TestParticlesMPI.py --plugin ParticleRendering.so -
             Benchmarks/mpi_partition_accuracy.py, 6 000 spheres; no baseline at -np 1)]
            [--bad-points (a NaN point and (1e30, 1e30, Inf) on the last rank: not drawn, the
             picture unchanged)]
+           [--ellipsoids (instead of the film 3 000 oriented ellipsoids, Shape Automatic; no
+            baseline at -np 1)]
 """
 import argparse
 import builtins
@@ -66,8 +68,21 @@ def parse_extra():
     parser.add_argument("--few", type=int, default=0)
     parser.add_argument("--bad-points", action="store_true")
     parser.add_argument("--deep", action="store_true")
+    parser.add_argument("--ellipsoids", action="store_true")
     extra, _ = parser.parse_known_args()
     return extra
+
+
+def draws_ellipsoids(view):
+    """Whether this rank's visible particle mapper draws ellipsoids (Shape Automatic)."""
+    actors = view.GetClientSideObject().GetRenderer().GetActors()
+    actors.InitTraversal()
+    for _ in range(actors.GetNumberOfItems()):
+        actor = actors.GetNextActor()
+        mapper = actor.GetMapper()
+        if mapper is not None and mapper.IsA("vtkParticleSphereMapper"):
+            return mapper.GetDrawsEllipsoids()
+    return False
 
 
 def main():
@@ -80,12 +95,14 @@ def main():
 
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     deep_path = None
-    if extra.deep:
-        deep_path = os.path.join(args.temp_dir, "deep.vtp")
-        write_scene("deep", deep_path)  # (this script runs on the first rank; the pieces read it)
+    if extra.deep or extra.ellipsoids:
+        scene = "ellipsoids" if extra.ellipsoids else "deep"
+        deep_path = os.path.join(args.temp_dir, scene + ".vtp")
+        write_scene(scene, deep_path)  # (this script runs on the first rank; the pieces read it)
     pieces_source = make_film_pieces(args, extra.empty_rank, extra.few, extra.bad_points,
                                      deep_path)
-    expected_total = ((extra.few if extra.few > 0 else 6000 if extra.deep else 19360)
+    expected_total = ((extra.few if extra.few > 0 else 6000 if extra.deep else
+                       3000 if extra.ellipsoids else 19360)
                       + (2 if extra.bad_points else 0))
     total = pieces_source.GetDataInformation().GetNumberOfPoints()
     print("ranks %d, particles %d" % (ranks, total))
@@ -94,8 +111,8 @@ def main():
         ok = False
 
     view, display = show_film(pieces_source, pr)
-    if extra.deep:
-        pr.set_camera(view, *SCENE_CAMERAS["deep"])
+    if extra.deep or extra.ellipsoids:
+        pr.set_camera(view, *SCENE_CAMERAS["ellipsoids" if extra.ellipsoids else "deep"])
 
 
     def distribution():
@@ -121,7 +138,7 @@ def main():
     for case in extra.cases.split(","):
         apply_case(view, display, case)
         name = ("TestParticlesMPI_%s" % case + ("_few%d" % extra.few if extra.few else "")
-                + ("_deep" if extra.deep else ""))
+                + ("_deep" if extra.deep else "") + ("_ellipsoids" if extra.ellipsoids else ""))
         image = pr.capture(view, os.path.join(args.temp_dir, "%s_np%d.png" % (name, ranks)))
         per_rank = distribution()
         print("%s: per rank [input, owned, ghost, bytes sent] %s" % (case, per_rank))
@@ -157,7 +174,10 @@ def main():
                 print("FAIL: %s: %d particles owned over all ranks, not %d"
                       % (case, owned, expected_total))
                 ok = False
-        if ranks == 1 and (extra.few or extra.deep):
+        if extra.ellipsoids and not draws_ellipsoids(view):
+            print("FAIL: %s: the particles are not drawn as ellipsoids" % case)
+            ok = False
+        if ranks == 1 and (extra.few or extra.deep or extra.ellipsoids):
             # no baseline: the reference of the runs with more ranks than particles or of the
             # deep scene; it must show something
             drawn = int(numpy.count_nonzero(numpy.abs(rgb(image) - rgb(image)[0]).max(axis=1)))
@@ -182,13 +202,13 @@ def main():
             print("FAIL: %s: differs from the single-process image" % case)
             ok = False
 
-    if not (extra.few or extra.deep or extra.bad_points):
+    if not (extra.few or extra.deep or extra.ellipsoids or extra.bad_points):
         mixed_ok, worst = check_one_partition(args, extra, view, display, ranks)
         ok = mixed_ok and ok
         worst_overall = builtins.max(worst_overall, worst)
     if ranks > 1:
         print("largest difference from the single-process images: %.0f/255" % worst_overall)
-    if ranks > 1 and not extra.deep:
+    if ranks > 1 and not (extra.deep or extra.ellipsoids):
         ok = check_interactive_levels(view, display) and ok
         ok = check_sndf_progressive(view, display) and ok
     return ok

@@ -130,6 +130,7 @@ self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
 SCENE_CAMERAS = {  # position, focal point: the slab obliquely; the deep block from the front
     "gas": ((80.0, -40.0, 30.0), (16.0, 16.0, 4.0)),
     "deep": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
+    "ellipsoids": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
 }
 
 
@@ -137,8 +138,10 @@ def write_scene(name, path):
     """Write the seeded scene `name` (points, radius, type, speed) to the .vtp file `path`:
     gas (a dense fcc slab of 8 000 atoms, radius 0.5, in 16 000 atoms of hot gas), deep (6 000
     spheres of radius 0.9-1.5 at mean spacing 0.9), mixed (gas, and also its slab and its gas
-    alone in <path>_type1.vtp and <path>_type2.vtp). Benchmarks/mpi_partition_accuracy.py and
-    TestParticlesMPI --deep."""
+    alone in <path>_type1.vtp and <path>_type2.vtp), ellipsoids (3 000 oriented ellipsoids of
+    semi-axes 0.25-1.2 in the deep scene's box, point arrays semi_axes and orientation as the
+    LAMMPS Dump Reader writes them). Benchmarks/mpi_partition_accuracy.py and TestParticlesMPI
+    --deep / --ellipsoids."""
     import numpy
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
     vtk_python = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
@@ -159,6 +162,22 @@ def write_scene(name, path):
         speed = numpy.where(kind == 2, 0.3 + 0.7 * rng.random(len(xyz)),
                             0.05 + 0.1 * rng.random(len(xyz)))
         radius = numpy.full(len(xyz), 0.5)
+    elif name == "ellipsoids":
+        xyz = rng.random((3000, 3)) * [24.0, 24.0, 10.0]
+        kind = 1.0 + (rng.random(3000) < 0.3)
+        speed = 0.2 + 0.8 * rng.random(3000)
+        radius = numpy.full(3000, 0.5)
+        axes = 0.25 + 0.95 * rng.random((3000, 3))
+        quaternions = rng.normal(size=(3000, 4))
+        quaternions /= numpy.linalg.norm(quaternions, axis=1)[:, None]
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(path)
+        writer.SetInputData(particles_from(
+            xyz.astype(numpy.float32), radius=radius.astype(numpy.float32),
+            type=kind.astype(numpy.float32), speed=speed.astype(numpy.float32),
+            semi_axes=axes.astype(numpy.float32), orientation=quaternions.astype(numpy.float32)))
+        writer.Write()
+        return
     else:
         xyz = rng.random((6000, 3)) * [24.0, 24.0, 10.0]
         kind = 1.0 + (rng.random(6000) < 0.3)
