@@ -53,7 +53,9 @@ ARGS = parse()
 if ARGS.quick:
     ARGS.counts, ARGS.frames, ARGS.size = "1e3", 3, "320x240"
 sys.path.insert(0, os.path.join(ARGS.build, "lib", "python3", "dist-packages"))
+sys.path.insert(0, os.path.join(TOP, "Testing", "VTKPython"))
 import particlerendering as pr  # noqa: E402
+from prVTKTesting import quaternion_rotations, random_quaternions  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
@@ -67,20 +69,11 @@ WIDTH, HEIGHT = (int(v) for v in ARGS.size.split("x"))
 SHAPES = {"rods 1:1:3": (0.5, 0.5, 1.5), "needles 1:1:10": (0.3, 0.3, 3.0)}
 
 
-def rotations(q):
-    w, x, y, z = q.T
-    return np.stack([
-        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
-
-
 def scene(n, axes, seed=11):
     rng = np.random.default_rng(seed)
     side = (n / 0.05) ** (1.0 / 3.0)
     xyz = rng.uniform(0.0, side, size=(n, 3))
-    q = rng.normal(size=(n, 4))
-    q /= np.linalg.norm(q, axis=1)[:, None]
+    q = random_quaternions(n, rng)
     data = vtkPolyData()
     points = vtkPoints()
     points.SetData(numpy_to_vtk(xyz, deep=True))
@@ -91,7 +84,7 @@ def scene(n, axes, seed=11):
         data.GetPointData().AddArray(array)
     # the tensor of vtkTensorGlyph (ExtractEigenvalues off: components 0-2, 3-5, 6-8 are the
     # glyph's axes, their norms the scales): the columns of R diag(a), one after the other
-    tensor = rotations(q) * np.asarray(axes)[None, None, :]
+    tensor = quaternion_rotations(q) * np.asarray(axes)[None, None, :]
     columns = np.transpose(tensor, (0, 2, 1)).reshape(n, 9)
     array = numpy_to_vtk(np.ascontiguousarray(columns, dtype=np.float32), deep=True)
     array.SetName("tensor")

@@ -286,13 +286,13 @@ vtkSmartPointer<vtkDataArray> FillSkipped(
   return copy;
 }
 
-// The numeric point array `name` of `input` when it has at least first + count components;
-// otherwise nullptr and the reason appended to `warnings` (nullptr without a warning when no name
-// is given).
-vtkDataArray* GetComponentsPointArray(vtkPolyData* input, const char* name, const char* role,
-  int first, int count, const std::string& fallback, std::ostream& warnings)
+// The point array `name` of `input` when it is numeric; otherwise nullptr and the reason appended
+// to `warnings` as "<role> array '<name>' is not a point array of the input / is not numeric:
+// <fallback>. " (nullptr without a warning when no name is given).
+vtkDataArray* NumericPointArray(vtkPolyData* input, const char* name, const char* role,
+  const std::string& fallback, std::ostream& warnings)
 {
-  if (!name || !name[0])
+  if (!input || !name || !name[0])
   {
     return nullptr;
   }
@@ -308,7 +308,17 @@ vtkDataArray* GetComponentsPointArray(vtkPolyData* input, const char* name, cons
     warnings << role << " array '" << name << "' is not numeric (" << abstractArray->GetClassName()
              << "): " << fallback << ". ";
   }
-  else if (array->GetNumberOfComponents() < first + count)
+  return array;
+}
+
+// The numeric point array `name` of `input` when it has at least first + count components;
+// otherwise nullptr and the reason appended to `warnings` (nullptr without a warning when no name
+// is given).
+vtkDataArray* GetComponentsPointArray(vtkPolyData* input, const char* name, const char* role,
+  int first, int count, const std::string& fallback, std::ostream& warnings)
+{
+  vtkDataArray* array = NumericPointArray(input, name, role, fallback, warnings);
+  if (array && array->GetNumberOfComponents() < first + count)
   {
     warnings << role << " array '" << name << "' has " << array->GetNumberOfComponents()
              << " components, components " << first << " to " << first + count - 1
@@ -864,23 +874,8 @@ bool vtkParticleSphereMapper::GetParticleBuffers(vtkOpenGLBufferObject*& positio
 vtkDataArray* vtkParticleSphereMapper::GetScalarPointArray(vtkPolyData* input, const char* name,
   const char* role, const std::string& fallback, std::ostream& warnings)
 {
-  if (!input || !name || !name[0])
-  {
-    return nullptr;
-  }
-  vtkAbstractArray* abstractArray = input->GetPointData()->GetAbstractArray(name);
-  vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
-  if (!abstractArray)
-  {
-    warnings << role << " array '" << name << "' is not a point array of the input: " << fallback
-             << ". ";
-  }
-  else if (!array)
-  {
-    warnings << role << " array '" << name << "' is not numeric (" << abstractArray->GetClassName()
-             << "): " << fallback << ". ";
-  }
-  else if (array->GetNumberOfComponents() != 1)
+  vtkDataArray* array = NumericPointArray(input, name, role, fallback, warnings);
+  if (array && array->GetNumberOfComponents() != 1)
   {
     warnings << role << " array '" << name << "' has " << array->GetNumberOfComponents()
              << " components, one value per particle is needed: " << fallback << ". ";

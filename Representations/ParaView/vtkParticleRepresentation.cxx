@@ -764,6 +764,20 @@ void vtkParticleRepresentation::UpdateMapperShape()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// A new float point array `name` of particles, one value per point (to be filled).
+vtkFloatArray* AddPointArray(vtkPolyData* particles, const char* name)
+{
+  vtkNew<vtkFloatArray> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(particles->GetNumberOfPoints());
+  particles->GetPointData()->AddArray(array);
+  return array;
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
 {
   if (!particles || !this->EllipsoidsInEffect(particles))
@@ -788,17 +802,11 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
     return; // the mapper says what is wrong, and draws spheres
   }
   const vtkIdType n = particles->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> radii;
-  radii->SetName("ParticleBoundingRadius");
-  radii->SetNumberOfTuples(n);
+  vtkFloatArray* radii = AddPointArray(particles, "ParticleBoundingRadius");
   // and the radius of the sphere of each particle's volume, for the AO volumes, and the radius
   // that counts in the column-layer estimate, sqrt(a b c / a_max) (as the mapper's)
-  vtkNew<vtkFloatArray> volumeRadii;
-  volumeRadii->SetName("ParticleVolumeRadius");
-  volumeRadii->SetNumberOfTuples(n);
-  vtkNew<vtkFloatArray> columnRadii;
-  columnRadii->SetName("ParticleColumnRadius");
-  columnRadii->SetNumberOfTuples(n);
+  vtkFloatArray* volumeRadii = AddPointArray(particles, "ParticleVolumeRadius");
+  vtkFloatArray* columnRadii = AddPointArray(particles, "ParticleColumnRadius");
   const double factor = diameters ? 0.5 : 1.0;
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
@@ -830,9 +838,6 @@ void vtkParticleRepresentation::AddBoundingRadii(vtkPolyData* particles)
             floats > 0.0 && floatLargest > 0.0 ? std::sqrt(floats / floatLargest) : 0.0));
       }
     });
-  particles->GetPointData()->AddArray(radii);
-  particles->GetPointData()->AddArray(volumeRadii);
-  particles->GetPointData()->AddArray(columnRadii);
 }
 
 //------------------------------------------------------------------------------
@@ -846,12 +851,8 @@ void vtkParticleRepresentation::AddTensorBoundingRadii(vtkPolyData* particles)
   // the tensor's symmetric part S: its eigenvalues are the semi-axes (vtkTensorGlyph), so
   // max |lambda| <= |S|_F bounds the particle and |det S| = a b c gives its volume
   const vtkIdType n = particles->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> radii;
-  radii->SetName("ParticleBoundingRadius");
-  radii->SetNumberOfTuples(n);
-  vtkNew<vtkFloatArray> volumeRadii;
-  volumeRadii->SetName("ParticleVolumeRadius");
-  volumeRadii->SetNumberOfTuples(n);
+  vtkFloatArray* radii = AddPointArray(particles, "ParticleBoundingRadius");
+  vtkFloatArray* volumeRadii = AddPointArray(particles, "ParticleVolumeRadius");
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -874,68 +875,38 @@ void vtkParticleRepresentation::AddTensorBoundingRadii(vtkPolyData* particles)
           i, static_cast<float>(std::cbrt(std::abs(vtkMath::Determinant3x3(s)))));
       }
     });
-  particles->GetPointData()->AddArray(radii);
-  particles->GetPointData()->AddArray(volumeRadii);
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SelectTensorArray(int, int, int, int, const char* name)
 {
-  const std::string value = name ? name : "";
-  if (value != this->TensorArray)
-  {
-    this->TensorArray = value;
-    this->UpdateMapperShape();
-    this->MarkModified();
-  }
+  this->ChangeShapeSetting(this->TensorArray, std::string(name ? name : ""));
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetShape(int shape)
 {
-  shape = std::min(
-    std::max(shape, static_cast<int>(SHAPE_SPHERE)), static_cast<int>(SHAPE_TENSOR_ELLIPSOID));
-  if (shape != this->Shape)
-  {
-    this->Shape = shape;
-    this->UpdateMapperShape();
-    this->MarkModified(); // bounds, partitions
-  }
+  this->ChangeShapeSetting(this->Shape,
+    std::min(
+      std::max(shape, static_cast<int>(SHAPE_SPHERE)), static_cast<int>(SHAPE_TENSOR_ELLIPSOID)));
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SelectAxesArray(int, int, int, int, const char* name)
 {
-  const std::string value = name ? name : "";
-  if (value != this->AxesArray)
-  {
-    this->AxesArray = value;
-    this->UpdateMapperShape();
-    this->MarkModified();
-  }
+  this->ChangeShapeSetting(this->AxesArray, std::string(name ? name : ""));
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetAxesArrayComponent(int component)
 {
-  component = std::max(0, component);
-  if (component != this->AxesArrayComponent)
-  {
-    this->AxesArrayComponent = component;
-    this->UpdateMapperShape();
-    this->MarkModified();
-  }
+  this->ChangeShapeSetting(this->AxesArrayComponent, std::max(0, component));
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetAxesAreDiameters(bool diameters)
 {
-  if (diameters != this->AxesAreDiameters)
-  {
-    this->AxesAreDiameters = diameters;
-    this->UpdateMapperShape();
-    this->MarkModified();
-  }
+  this->ChangeShapeSetting(this->AxesAreDiameters, diameters);
 }
 
 //------------------------------------------------------------------------------
@@ -943,25 +914,14 @@ void vtkParticleRepresentation::SelectOrientationArray(int, int, int, int, const
 {
   // (the XML's none_string: no orientation array, axis-aligned ellipsoids)
   const std::string given = name ? name : "";
-  const std::string value = given == "None (axis-aligned)" ? "" : given;
-  if (value != this->OrientationArray)
-  {
-    this->OrientationArray = value;
-    this->UpdateMapperShape();
-    this->MarkModified();
-  }
+  this->ChangeShapeSetting(
+    this->OrientationArray, given == "None (axis-aligned)" ? std::string() : given);
 }
 
 //------------------------------------------------------------------------------
 void vtkParticleRepresentation::SetOrientationArrayComponent(int component)
 {
-  component = std::max(0, component);
-  if (component != this->OrientationArrayComponent)
-  {
-    this->OrientationArrayComponent = component;
-    this->UpdateMapperShape();
-    this->MarkModified();
-  }
+  this->ChangeShapeSetting(this->OrientationArrayComponent, std::max(0, component));
 }
 
 //------------------------------------------------------------------------------

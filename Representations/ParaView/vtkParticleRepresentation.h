@@ -408,6 +408,17 @@ protected:
   void AddBoundingRadii(vtkPolyData* particles);
   void AddTensorBoundingRadii(vtkPolyData* particles);
   void UpdateMapperShape();
+  // a shape setting changes: the mapper's shape follows, the bounds and partitions are redone
+  template <class T>
+  void ChangeShapeSetting(T& setting, const T& value)
+  {
+    if (setting != value)
+    {
+      setting = value;
+      this->UpdateMapperShape();
+      this->MarkModified();
+    }
+  }
 
 private:
   vtkParticleRepresentation(const vtkParticleRepresentation&) = delete;

@@ -21,7 +21,8 @@ import gzip
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
 import prParaViewTesting as pr  # noqa: E402
 from paraview import simple  # noqa: E402
 
@@ -41,15 +42,7 @@ def fail(text):
 
 
 def draws_ellipsoids(view):
-    """Whether the visible particle mapper of the view draws ellipsoids."""
-    actors = view.GetClientSideObject().GetRenderer().GetActors()
-    actors.InitTraversal()
-    for _ in range(actors.GetNumberOfItems()):
-        actor = actors.GetNextActor()
-        mapper = actor.GetMapper()
-        if actor.GetVisibility() and mapper is not None and mapper.IsA("vtkParticleSphereMapper"):
-            return mapper.GetDrawsEllipsoids()
-    raise RuntimeError("no visible particle mapper in the view")
+    return pr.particle_mapper(view).GetDrawsEllipsoids()
 
 
 def last_step_as_2021_dump(path, out):
@@ -71,16 +64,13 @@ def write_tensor_particles(path):
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    sys.path.append(os.path.join(os.path.dirname(HERE), "VTKPython"))
+    from prVTKTesting import quaternion_rotations, random_quaternions
     rng = np.random.default_rng(8)
     n = 40
-    q = rng.normal(size=(n, 4))
-    q /= np.linalg.norm(q, axis=1)[:, None]
+    q = random_quaternions(n, rng)
     a = rng.uniform(0.2, 1.0, size=(n, 3))
-    w, x, y, z = q.T
-    r = np.stack([
-        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
+    r = quaternion_rotations(q)
     data = vtkPolyData()
     points = vtkPoints()
     points.SetData(numpy_to_vtk(rng.uniform(-3.0, 3.0, size=(n, 3)), deep=True))

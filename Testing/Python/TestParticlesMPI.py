@@ -74,15 +74,8 @@ def parse_extra():
 
 
 def draws_ellipsoids(view):
-    """Whether this rank's visible particle mapper draws ellipsoids (Shape Automatic)."""
-    actors = view.GetClientSideObject().GetRenderer().GetActors()
-    actors.InitTraversal()
-    for _ in range(actors.GetNumberOfItems()):
-        actor = actors.GetNextActor()
-        mapper = actor.GetMapper()
-        if mapper is not None and mapper.IsA("vtkParticleSphereMapper"):
-            return mapper.GetDrawsEllipsoids()
-    return False
+    """Whether this rank's particle mapper draws ellipsoids (Shape Automatic)."""
+    return pr.particle_mapper(view, visible=False).GetDrawsEllipsoids()
 
 
 def main():

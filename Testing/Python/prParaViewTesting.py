@@ -220,6 +220,20 @@ def set_camera(view, position, focal_point, view_up=(0, 0, 1), view_angle=30.0):
 REPEAT_FAILURES = []
 
 
+def particle_mapper(view, visible=True):
+    """The view's (first visible, with visible) particle mapper on this process: a
+    vtkParticleSphereMapper or a subclass, with its Python methods."""
+    actors = view.GetClientSideObject().GetRenderer().GetActors()
+    actors.InitTraversal()
+    for _ in range(actors.GetNumberOfItems()):
+        actor = actors.GetNextActor()
+        mapper = actor.GetMapper()
+        if (actor.GetVisibility() or not visible) and mapper is not None and \
+                mapper.IsA("vtkParticleSphereMapper"):
+            return mapper
+    raise RuntimeError("no particle mapper in the view")
+
+
 def capture(view, path, repeat=True):
     """Render the view, save it to `path` (PNG, the view's size) and return the image read back
     (vtkImageData). With repeat (the default: every image test of the suite) the view is saved

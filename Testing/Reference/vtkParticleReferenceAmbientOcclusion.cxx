@@ -90,46 +90,19 @@ double AmbientTerms(const Frame& frame, const double p[3], const double n[3], vt
         continue;
       }
       const SphereVC& sv = spheres[j];
-      double tIn;
-      double tOut;
+      Chord chord;
+      if (!ChordOf(p, dir, sv, frame.DensityModel == 1 ? 3 : 1, chord))
+      {
+        continue;
+      }
+      const double tIn = chord.Tc - chord.H;
+      const double tOut = chord.Tc + chord.H;
+      // (the piece of the ray through the sphere along it that has the particle's profile)
       AmbientScratch::Piece piece;
-      if (sv.Ellipsoid)
-      {
-        // the unit frame's chord, and the sphere with its profile along this ray (MakeSegment)
-        double qu[3];
-        double dd[3];
-        double length;
-        double b;
-        double hu;
-        if (!EllipsoidChord(p, dir, sv, qu, dd, length, b, hu))
-        {
-          continue;
-        }
-        tIn = (-b - hu) / length;
-        tOut = (-b + hu) / length;
-        piece.Tc = -b / length;
-        piece.Radius = 1.0 / length;
-        piece.Impact = std::sqrt(vtkMath::Dot(qu, qu)) / length;
-        piece.MaximumScale = std::pow(piece.Radius / sv.R, frame.DensityModel == 1 ? 2.0 : 0.0);
-      }
-      else
-      {
-        const double oc[3] = { p[0] - sv.C[0], p[1] - sv.C[1], p[2] - sv.C[2] };
-        const double b = vtkMath::Dot(oc, dir);
-        // closest approach relative to the centre (no cancellation), as everywhere here
-        const double q[3] = { oc[0] - b * dir[0], oc[1] - b * dir[1], oc[2] - b * dir[2] };
-        const double h2 = sv.R * sv.R - vtkMath::Dot(q, q);
-        if (!(h2 >= 0.0))
-        {
-          continue;
-        }
-        const double hh = std::sqrt(h2);
-        tIn = -b - hh;
-        tOut = -b + hh;
-        piece.Tc = -b;
-        piece.Radius = sv.R;
-        piece.Impact = std::sqrt(vtkMath::Dot(q, q));
-      }
+      piece.Tc = chord.Tc;
+      piece.Radius = chord.Radius;
+      piece.Impact = chord.Impact;
+      piece.MaximumScale = chord.MaximumScale;
       if (!(tOut > 1e-9 * sv.R && tIn < aoDistance))
       {
         continue;

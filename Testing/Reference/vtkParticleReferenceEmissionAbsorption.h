@@ -245,53 +245,23 @@ struct Segment
 
 // The chord of a sphere clipped to the visible part of the ray with the GPU's rule (see the
 // class description). Returns false when no part of it is visible.
-// densityPower: 1 for the constant density model, 3 for squared distance (I_max ~ r^p). An
-// ellipsoid's physical optical depth is kappa (I_u / |A^-1 d|) / (I_max,u a_max) (the unit
-// frame's integrals, a_max = s.R its longest semi-axis): with the equivalent sphere of radius
-// R' = 1 / |A^-1 d| whose own ratio is I'/(I_max,u R'^p), I_max scales by (R' / a_max)^(p-1).
+// densityPower: 1 for the constant density model, 3 for squared distance (I_max ~ r^p; see
+// ChordOf for an ellipsoid's equivalent sphere along the ray).
 inline bool MakeSegment(const RayCamera& cam, const double o[3], const double d[3],
   const SphereVC& s, double tNear, double tFar, std::uint32_t index, Segment& seg,
   int densityPower = 1)
 {
-  double tc;
-  double q[3];
-  double h;
-  if (s.Ellipsoid)
+  Chord chord;
+  if (!ChordOf(o, d, s, densityPower, chord) || !(chord.H > 0.0))
   {
-    double qu[3];
-    double dd[3];
-    double length;
-    double b;
-    double hu;
-    if (!EllipsoidChord(o, d, s, qu, dd, length, b, hu) || !(hu > 0.0))
-    {
-      return false;
-    }
-    tc = -b / length;
-    Apply3x3(s.ToVC, qu, q); // the unit frame's closest approach, in view coordinates
-    h = hu / length;
-    seg.Radius = 1.0 / length;
-    seg.Impact = std::sqrt(Dot(qu, qu)) / length;
-    seg.MaximumScale = std::pow(seg.Radius / s.R, densityPower - 1);
+    return false; // missed, or tangent (no length)
   }
-  else
-  {
-    const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
-    tc = Dot(oc, d);
-    for (int k = 0; k < 3; ++k)
-    {
-      q[k] = tc * d[k] - oc[k];
-    }
-    const double h2 = s.R * s.R - Dot(q, q);
-    if (!(h2 > 0.0))
-    {
-      return false; // missed, or tangent (no length)
-    }
-    h = std::sqrt(h2);
-    seg.Radius = s.R;
-    seg.Impact = std::sqrt(Dot(q, q));
-    seg.MaximumScale = 1.0;
-  }
+  const double tc = chord.Tc;
+  const double* q = chord.Q;
+  const double h = chord.H;
+  seg.Radius = chord.Radius;
+  seg.Impact = chord.Impact;
+  seg.MaximumScale = chord.MaximumScale;
   double pIn[3];
   double pOut[3];
   for (int k = 0; k < 3; ++k)

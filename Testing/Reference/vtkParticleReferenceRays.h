@@ -257,70 +257,87 @@ inline bool EllipsoidChord(const double o[3], const double d[3], const SphereVC&
   return true;
 }
 
-// Intersect the ray (o, d) with a sphere in the sphere-relative form of RaySphere.glsl and keep
-// the first visible intersection if it is nearer than best (ties: larger index, as the GPU's
-// GL_LEQUAL depth test with instances drawn in id order).
-inline void IntersectSphere(const RayCamera& cam, const double o[3], const double d[3],
-  const SphereVC& s, vtkIdType index, Hit& best)
+// The chord of the ray (o, d) through the sphere or ellipsoid s, relative to the closest approach
+// of the ray to the centre: the ray parameter Tc of that point, its position Q relative to the
+// centre (view coordinates), the half chord H, and the sphere that has the same chord and density
+// profile along this ray -- for a sphere itself; for an ellipsoid the unit frame's chord scaled by
+// Radius = 1 / |A^-1 d|, at Impact = |q_u| Radius from its centre. MaximumScale: how its I_max
+// scales (densityPower 1 for the constant density model, 3 for the squared distance): an
+// ellipsoid's physical optical depth is kappa (I_u / |A^-1 d|) / (I_max,u a_max) (a_max = s.R
+// its longest semi-axis), the equivalent sphere's own ratio I'/(I_max,u R^p), so I_max scales by
+// (R / a_max)^(p-1). False when the ray misses (or only touches: no length).
+struct Chord
+{
+  double Tc = 0.0;
+  double Q[3] = { 0, 0, 0 };
+  double H = 0.0;
+  double Radius = 0.0;
+  double Impact = 0.0;
+  double MaximumScale = 1.0;
+};
+
+inline bool ChordOf(
+  const double o[3], const double d[3], const SphereVC& s, int densityPower, Chord& chord)
 {
   if (s.Ellipsoid)
   {
-    // in the unit frame, the hits relative to the centre mapped back by ToVC (no cancellation)
-    double q[3];
+    double qu[3];
     double dd[3];
     double length;
     double b;
-    double h;
-    if (!EllipsoidChord(o, d, s, q, dd, length, b, h))
+    double hu;
+    if (!EllipsoidChord(o, d, s, qu, dd, length, b, hu))
     {
-      return;
+      return false;
     }
-    for (int side = 0; side < 2; ++side)
-    {
-      const double sign = side == 0 ? -1.0 : 1.0;
-      const double t = (-b + sign * h) / length;
-      if (t > best.T || (t == best.T && index < best.Index))
-      {
-        return;
-      }
-      const double unitHit[3] = { q[0] + sign * h * dd[0], q[1] + sign * h * dd[1],
-        q[2] + sign * h * dd[2] };
-      double rel[3];
-      Apply3x3(s.ToVC, unitHit, rel);
-      const double p[3] = { s.C[0] + rel[0], s.C[1] + rel[1], s.C[2] + rel[2] };
-      double depth;
-      if (cam.Depth(p, depth))
-      {
-        best.T = t;
-        best.Depth = depth;
-        std::copy(rel, rel + 3, best.Rel);
-        best.Index = index;
-        best.Inside = side == 1;
-        return;
-      }
-    }
-    return;
+    chord.Tc = -b / length;
+    Apply3x3(s.ToVC, qu, chord.Q); // the unit frame's closest approach, without cancellation
+    chord.H = hu / length;
+    chord.Radius = 1.0 / length;
+    chord.Impact = std::sqrt(Dot(qu, qu)) / length;
+    chord.MaximumScale = std::pow(chord.Radius / s.R, densityPower - 1);
+    return true;
   }
+  // relative to the centre: the textbook |o - c|^2 - r^2 cancels with a far camera
   const double oc[3] = { s.C[0] - o[0], s.C[1] - o[1], s.C[2] - o[2] };
-  const double tc = Dot(oc, d);
-  // closest approach point of the ray, relative to the centre
-  const double q[3] = { tc * d[0] - oc[0], tc * d[1] - oc[1], tc * d[2] - oc[2] };
-  const double h2 = s.R * s.R - Dot(q, q);
+  chord.Tc = Dot(oc, d);
+  for (int k = 0; k < 3; ++k)
+  {
+    chord.Q[k] = chord.Tc * d[k] - oc[k];
+  }
+  const double h2 = s.R * s.R - Dot(chord.Q, chord.Q);
   if (!(h2 >= 0.0))
+  {
+    return false;
+  }
+  chord.H = std::sqrt(h2);
+  chord.Radius = s.R;
+  chord.Impact = std::sqrt(Dot(chord.Q, chord.Q));
+  chord.MaximumScale = 1.0;
+  return true;
+}
+
+// Intersect the ray (o, d) with a sphere or ellipsoid (ChordOf) and keep the first visible
+// intersection if it is nearer than best (ties: larger index, as the GPU's GL_LEQUAL depth test
+// with instances drawn in id order).
+inline void IntersectSphere(const RayCamera& cam, const double o[3], const double d[3],
+  const SphereVC& s, vtkIdType index, Hit& best)
+{
+  Chord chord;
+  if (!ChordOf(o, d, s, 1, chord))
   {
     return;
   }
-  const double h = std::sqrt(h2);
   for (int side = 0; side < 2; ++side)
   {
     const double sign = side == 0 ? -1.0 : 1.0;
-    const double t = tc + sign * h;
+    const double t = chord.Tc + sign * chord.H;
     if (t > best.T || (t == best.T && index < best.Index))
     {
       return; // the exit is even further
     }
-    const double rel[3] = { q[0] + sign * h * d[0], q[1] + sign * h * d[1],
-      q[2] + sign * h * d[2] };
+    const double rel[3] = { chord.Q[0] + sign * chord.H * d[0], chord.Q[1] + sign * chord.H * d[1],
+      chord.Q[2] + sign * chord.H * d[2] };
     const double p[3] = { s.C[0] + rel[0], s.C[1] + rel[1], s.C[2] + rel[2] };
     double depth;
     if (cam.Depth(p, depth))

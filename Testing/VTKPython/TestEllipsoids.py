@@ -31,7 +31,7 @@ import numpy as np
 
 import particlerendering as pr
 from prVTKTesting import (Messages, actor_view, check, compare, finish, grab_image, particles_from,
-                          picked_ids)
+                          picked_ids, quaternion_rotations, random_quaternions)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
@@ -41,11 +41,6 @@ parser.add_argument("--baseline")
 parser.add_argument("--temp", default=".")
 parser.add_argument("--data")
 args = parser.parse_args()
-
-
-def random_quaternions(count, rng):
-    q = rng.normal(size=(count, 4))
-    return q / np.linalg.norm(q, axis=1)[:, None]
 
 
 def ellipsoid_view(xyz, axes, quats, size=(240, 240), diameters=False):
@@ -184,10 +179,7 @@ for label, parallel in (("perspective", False), ("parallel", True)):
 # ---- 3. closed form: the silhouette seen along each body axis (parallel projection)
 a_b_c = np.array([60.0, 35.0, 20.0])  # semi-axes in pixels (parallel scale set below)
 turn = np.array([math.cos(0.35), 0.0, 0.0, math.sin(0.35)])  # about z by 0.7 rad
-w, x, y, z = turn
-rotation = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+rotation = quaternion_rotations(turn[None])[0]
 size = 200
 for axis in range(3):
     mapper, actor, renderer, window = ellipsoid_view([[0.0, 0.0, 0.0]], [a_b_c], [turn],
@@ -376,11 +368,7 @@ tensor_rng = np.random.default_rng(99)  # (the scenes below keep their random nu
 xyz = tensor_rng.uniform(-2.0, 2.0, size=(count, 3))
 quats = random_quaternions(count, tensor_rng)
 axes = tensor_rng.uniform(0.15, 0.8, size=(count, 3))
-w, x, y, z = quats.T
-turns = np.stack([
-    np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-    np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-    np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
+turns = quaternion_rotations(quats)
 signs = np.ones((count, 3))
 signs[::3, 0] = -1.0
 tensors = np.einsum("nij,nj,nkj->nik", turns, axes * signs, turns).reshape(count, 9)

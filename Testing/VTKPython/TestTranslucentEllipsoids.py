@@ -21,18 +21,14 @@ import sys
 import numpy as np
 
 import particlerendering as pr
-from prVTKTesting import Messages, check, finish, grab_image, offscreen_window, particles_from
+from prVTKTesting import (Messages, check, finish, grab_image, offscreen_window, particles_from,
+                          random_quaternions)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 M = pr.vtkTransparentSphereMapper
 SIZE = 200
-
-
-def random_quaternions(count, rng):
-    q = rng.normal(size=(count, 4))
-    return q / np.linalg.norm(q, axis=1)[:, None]
 
 
 def scene(xyz, axes, quats, rgb, opacity=0.8, model=M.CONSTANT_DENSITY, hollow=0.0,

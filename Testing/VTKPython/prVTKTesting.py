@@ -415,3 +415,21 @@ def compare(window, renderer, actor, radius, normals=False):
         result["normal_p99"] = float(np.percentile(angle, 99)) if angle.size else 0.0
         window.Render()
     return result
+
+
+def random_quaternions(count, rng):
+    """`count` unit quaternions (w, x, y, z) uniformly distributed over the rotations (numpy)."""
+    import numpy as np
+    q = rng.normal(size=(count, 4))
+    return q / np.linalg.norm(q, axis=1)[:, None]
+
+
+def quaternion_rotations(q):
+    """The rotation matrices (N, 3, 3) of unit quaternions q (N, 4) = (w, x, y, z): a body
+    vector b is R b in the model frame (LAMMPS's and vtkParticleSphereMapper's convention)."""
+    import numpy as np
+    w, x, y, z = np.asarray(q, dtype=np.float64).T
+    return np.stack([
+        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
