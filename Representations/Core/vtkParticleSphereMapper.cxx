@@ -41,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -59,7 +60,9 @@ public:
   vtkNew<vtkFloatArray> VolumeRadii; // cbrt(a b c), 0 for skipped particles
   vtkSmartPointer<vtkDataArray> UploadedVolumeRadii;
   bool Ellipsoids = false;
-  bool BuiltEllipsoids = false;
+  // per program (a subclass draws several, e.g. opaque and translucent): whether it was built
+  // for ellipsoids
+  std::map<const vtkOpenGLHelper*, bool> BuiltEllipsoids;
   // The positions uploaded: the input's own point array when every particle is valid (no copy),
   // else a copy in the input's precision with the skipped particles moved onto a valid one. The
   // VBO converts to float after its shift/scale, so far-from-origin data keeps its precision.
@@ -1011,7 +1014,6 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(
     gs, "out vec4 vertexColorGSOutput;", "flat out vec4 vertexColorGSOutput;");
   // the ellipsoid variant (EllipsoidFrame.glsl), in all three stages
-  this->Internals->BuiltEllipsoids = this->Internals->Ellipsoids;
   if (this->Internals->Ellipsoids)
   {
     for (std::string* source : { &vs, &gs, &fs })
@@ -1070,8 +1072,16 @@ void vtkParticleSphereMapper::ReplaceShaderValues(
 bool vtkParticleSphereMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
-    this->Internals->BuiltEllipsoids != this->Internals->Ellipsoids;
+  // (the program is then built with the current shape: ReplaceShaderValues)
+  const bool ellipsoids = this->Internals->Ellipsoids;
+  auto built = this->Internals->BuiltEllipsoids.find(&cellBO);
+  const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
+    built == this->Internals->BuiltEllipsoids.end() || built->second != ellipsoids;
+  if (rebuild)
+  {
+    this->Internals->BuiltEllipsoids[&cellBO] = ellipsoids;
+  }
+  return rebuild;
 }
 
 //------------------------------------------------------------------------------

@@ -168,6 +168,37 @@ for label, xyz in (("separate", separate), ("intersecting", crowded)):
             check(np.sum(sorted_diff > 2) > 1e-3 * covered,
                   "must fail: the sorted path passes on intersecting ellipsoids")
 
+# the data turns from spheres into ellipsoids (its axes array appears) while both the opaque and
+# the translucent programs are in use (per-particle opacities 1 and 0.5): each is rebuilt for
+# ellipsoids, the picture is a fresh mapper's
+xyz = rng.uniform(-2.0, 2.0, size=(20, 3))
+axes = shapes[np.arange(len(xyz)) % len(shapes)] * 0.6
+quats = random_quaternions(len(xyz), rng)
+rgb = (rng.uniform(0.2, 1.0, size=(len(xyz), 3)) * 255).astype(np.uint8)
+alpha = np.where(np.arange(len(xyz)) % 2 == 0, 1.0, 0.5)
+pictures = []
+for late in (True, False):
+    mapper, actor, renderer, window, messages = scene(xyz, axes, quats, rgb, opacity=1.0)
+    data = mapper.GetInput()
+    data.GetPointData().AddArray(particles_from(xyz, alpha=alpha).GetPointData().GetArray("alpha"))
+    mapper.SetOpacityArrayName("alpha")
+    mapper.SetOpacityRange(0.0, 1.0)
+    mapper.SetRadius(0.5)
+    if late:
+        saved = data.GetPointData().GetArray("axes")
+        data.GetPointData().RemoveArray("axes")
+        window.Render()
+        check(not mapper.GetDrawsEllipsoids(), "without the axes array: spheres")
+        data.GetPointData().AddArray(saved)
+        data.Modified()
+    window.Render()
+    check(mapper.GetDrawsEllipsoids(), "with the axes array: ellipsoids")
+    pictures.append(grab_image(window)[:, :3])
+diff = error(pictures[0], pictures[1])
+print("spheres turned ellipsoids: %d pixels differ from a fresh mapper's picture (largest %d)"
+      % (np.sum(diff > 0), diff.max()))
+check(diff.max() == 0, "a program kept the sphere variant after the data became ellipsoids")
+
 # the camera inside a translucent ellipsoid (its chord starts at the near plane)
 mapper, actor, renderer, window, _ = scene([[0.0, 0.0, 0.0], [0.5, 0.3, -3.0]],
                                            [[3.0, 1.5, 5.0], [0.6, 0.6, 0.6]],
