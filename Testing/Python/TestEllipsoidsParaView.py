@@ -104,6 +104,8 @@ with pr.captured_messages() as messages:
         if display.Shape != "Automatic":
             fail("Shape is %r, not Automatic" % display.Shape)
         simple.ColorBy(display, ("POINTS", "velocity", "Magnitude"))
+        # (ParaView 6's default map is "Fast", 5.11's and 5.13's "Cool to Warm")
+        pr.apply_preset(simple.GetColorTransferFunction("velocity"), "Cool to Warm")
         display.RescaleTransferFunctionToDataRange(True, False)
         pr.set_camera(view, position=(-40.0, -55.0, 50.0), focal_point=(7.5, 7.5, 16.5),
                       view_up=(0, 0, 1))
