@@ -232,7 +232,10 @@ void vtkParticleOrderedCompositePass::WriteImage(const vtkRenderState* s, int wi
   if (static_cast<int>(this->Texture->GetWidth()) != width ||
     static_cast<int>(this->Texture->GetHeight()) != height || this->Texture->GetHandle() == 0)
   {
-    this->Texture->ReleaseGraphicsResources(context);
+    // new storage under the same texture name: the framebuffer below keeps the texture it
+    // attached first (AddColorAttachment ignores the same vtkTextureObject again), so a new
+    // name would leave it blitting the previous size's last image (a screenshot at another
+    // resolution than the view's, its tiles)
     this->Texture->SetInternalFormat(GL_RGBA8);
     this->Texture->SetFormat(GL_RGBA);
     this->Texture->SetDataType(GL_UNSIGNED_BYTE);

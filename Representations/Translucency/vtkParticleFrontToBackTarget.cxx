@@ -298,6 +298,9 @@ bool vtkParticleFrontToBackTarget::Begin(vtkRenderer* ren, bool savedByPass)
       internals.ResolveFormat = format;
       internals.ResolveFBO->SetContext(ctx);
       internals.ResolveFBO->Bind(GL_DRAW_FRAMEBUFFER);
+      // (the texture has a new name: the framebuffer attaches it again only after removing
+      // the old one, it ignores the same vtkTextureObject)
+      internals.ResolveFBO->RemoveDepthAttachment();
       internals.ResolveFBO->AddDepthAttachment(resolved);
       internals.ResolveAllocated = true;
     }
