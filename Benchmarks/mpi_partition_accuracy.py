@@ -7,10 +7,14 @@ particle i on rank i mod N; the tests' view, colours and camera set-up):
   gas   a dense fcc slab (8 000 atoms, radius 0.5) in hot gas (16 000 atoms spread through and
         around it: deep penetrations), opacity from a 'speed' array (gas fast, slab slow)
   deep  6 000 spheres of radius 0.9-1.5 at mean spacing 0.9 (up to ~10 overlapping at a point)
+  reproducer  issue 61's: 100 000 atoms at random in a 30 x 30 x 40 box, radius 0.5, opacity
+        from 'speed' (uniform 0.5-4) over the custom range 1-3.5 ('custom'), seen at 480 x 360
+        (--size 480 360, as run_mpi_partition_accuracy.sh runs its cases)
 Cases: <scene>:<settings>:<compositing>, settings from {speed (opacity array), squared
 (Squared Distance density), hollow (HollowFraction 0.5), one (Opacity Of One Particle), opaque
 (Opacity 1), dvao / vcao / pointao (Density Volume / Voxel Cone Tracing / PointAO), sndf
-(Scale-Consistent Shading, converged), far (the camera 3x farther away), metaballs,
+(Scale-Consistent Shading, converged), far (the camera 3x farther away), fxaa (ParaView's FXAA
+on, as in a new view; off otherwise), custom (the opacity array's custom range 1-3.5), metaballs,
 neighbours (metaballs' Maximum Neighbours 255, the largest: no neighbour list cut), rotated (the
 actor turned 35 degrees about z and 20 about x: the boxes are cut in data coordinates)}: the rows of the
 outside report of issue 42 (opaque, each AO, metaballs, translucent, translucent with AO).
@@ -30,7 +34,7 @@ This pvbatch script renders one rank count; Benchmarks/run_mpi_partition_accurac
 np 1, 2, 3 and compares (mpi_partition_accuracy_compare.py).
 usage: PYTHONPATH=<build>/lib/python3/dist-packages
        mpiexec -np N pvbatch mpi_partition_accuracy.py --plugin SO --out DIR [--size W H]
-           [--cases scene:settings:compositing,...]
+           [--cases scene:settings:compositing,... | reproducer]
 """
 import argparse
 import os
@@ -67,6 +71,13 @@ CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:A
          "mixed:two-same:Automatic", "mixed:merged:Automatic",
          "mixed:two-opaque-dvao:Automatic", "mixed:merged-opaque-dvao:Automatic",
          "mixed:two-opaque-vcao:Automatic", "mixed:merged-opaque-vcao:Automatic"]
+# issue 61's reproducer (480 x 360: REPRODUCER_CASES, run by run_mpi_partition_accuracy.sh)
+REPRODUCER_CASES = ["reproducer:speed-custom-squared:Automatic",
+                    "reproducer:speed-custom-squared-fxaa:Automatic",
+                    "reproducer:speed-custom-fxaa:Exact Overlap",
+                    "reproducer:speed-custom-squared-dvao-fxaa:Automatic",
+                    "reproducer:speed-custom-squared-vcao-fxaa:Automatic",
+                    "reproducer:opaque-vcao:Automatic", "reproducer:opaque-vcao-fxaa:Automatic"]
 
 
 def split_source(path):
@@ -119,8 +130,11 @@ def main():
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--size", type=int, nargs=2, default=(400, 300))
-    parser.add_argument("--cases", default=",".join(CASES), help="a comma-separated subset")
+    parser.add_argument("--cases", default=",".join(CASES),
+                        help="a comma-separated subset ('reproducer': REPRODUCER_CASES)")
     args, _ = parser.parse_known_args()
+    if args.cases == "reproducer":
+        args.cases = ",".join(REPRODUCER_CASES)
     simple.LoadPlugin(args.plugin, remote=False)
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     os.makedirs(args.out, exist_ok=True)
@@ -157,7 +171,14 @@ def main():
             display.OpacityReference = 0 if "one" in settings else 1
             display.UseOpacityArray = 1 if "speed" in settings else 0
             display.ParticleOpacityArray = ["POINTS", "speed"]
-            display.Opacity = 1.0 if "opaque" in settings else (0.5 if "one" in settings else 0.7)
+            display.OpacityArrayRangeMode = 1 if "custom" in settings else 0
+            display.OpacityArrayRange = [1.0, 3.5]
+            display.Opacity = (1.0 if "opaque" in settings or "custom" in settings else
+                               0.5 if "one" in settings else 0.7)
+            # (UseFXAA is linked to the settings: both)
+            fxaa = 1 if "fxaa" in settings else 0
+            simple.GetSettingsProxy("RenderViewSettings").UseFXAA = fxaa
+            view.UseFXAA = fxaa
             display.Technique = "Metaballs" if "metaballs" in settings else "Spheres"
             if "neighbours" in settings:
                 display.MaximumNumberOfNeighbors = 255

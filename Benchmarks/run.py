@@ -323,6 +323,22 @@ SUITES = [
           lambda c: [bash("run_mpi_partition_accuracy.sh", c, env={
               "CASES": "gas:speed-squared:Exact Overlap,gas:metaballs:Automatic"})],
           "two gas cases (exact translucency, metaballs)", needs=[PLUGIN], time_text="~6 min"),
+    Suite("mpi-reproducer", "pvbatch (mpiexec; bash run_mpi_partition_accuracy.sh)",
+          "run_mpi_partition_accuracy.sh -> mpi_partition_accuracy.py (REPRODUCER_CASES)",
+          "issue 61's reproducer (100 000 atoms, opacity from an array, 480x360), np 2 and 3 "
+          "against np 1, with and without FXAA: pixels over 2/255 and 3/255",
+          "one rank (the same pipeline without distribution)",
+          ["mpi_partition_accuracy_reproducer.csv", "mpi_partition_accuracy_reproducer.png"],
+          "mpi_partition_accuracy_compare.py",
+          lambda c: [bash("run_mpi_partition_accuracy.sh", c, env={
+              "CASES": "reproducer", "SIZE": "480 360",
+              "RESULTS_NAME": "mpi_partition_accuracy_reproducer",
+              "IMAGE_DIR": os.path.join(c.build, "mpi_partition_accuracy_reproducer")})],
+          lambda c: [bash("run_mpi_partition_accuracy.sh", c, env={
+              "CASES": "reproducer:speed-custom-squared-fxaa:Automatic", "SIZE": "480 360",
+              "RESULTS_NAME": "mpi_partition_accuracy_reproducer",
+              "IMAGE_DIR": os.path.join(c.build, "mpi_partition_accuracy_reproducer")})],
+          "one case (squared density with FXAA)", needs=[PLUGIN], time_text="~4 min"),
     Suite("view-overhead", "pvpython", "view_overhead.py",
           "Particles representation in the Render View and the Particle Render View (AO off), alone and alternating",
           "Point Gaussian (Sphere) in a view of the same data",

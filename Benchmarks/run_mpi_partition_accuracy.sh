@@ -4,7 +4,9 @@
 # for all ranks. Writes mpi_partition_accuracy.csv and .png to RESULTS_DIR and prints the table.
 # usage: Benchmarks/run_mpi_partition_accuracy.sh [BUILD_DIR]
 # env: RESULTS_DIR (default Benchmarks/results), IMAGE_DIR (default BUILD_DIR/mpi_partition_accuracy),
-#      CASES (a comma-separated subset of the cases, scene:settings:compositing; default all)
+#      CASES (a comma-separated subset of the cases, scene:settings:compositing; default all),
+#      RESULTS_NAME (default mpi_partition_accuracy; the CSV and PNG names),
+#      SIZE (default "400 300"; issue 61's reproducer: "480 360")
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-${BUILD_DIR:-$top/build}}
@@ -20,7 +22,8 @@ for np in 1 2 3; do
   "$top/Scripts/with_xvfb.sh" mpiexec -np "$np" --oversubscribe -x DISPLAY -x PYTHONPATH \
     pvbatch "$top/Benchmarks/mpi_partition_accuracy.py" \
     --plugin "$build/lib/paraview-plugins/ParticleRendering/ParticleRendering.so" \
-    --out "$images" "${cases[@]}"
+    --out "$images" --size ${SIZE:-400 300} "${cases[@]}"
 done
 /usr/bin/python3 "$top/Benchmarks/mpi_partition_accuracy_compare.py" "$images" \
-  "$results/mpi_partition_accuracy.csv" "$results/mpi_partition_accuracy.png"
+  "$results/${RESULTS_NAME:-mpi_partition_accuracy}.csv" \
+  "$results/${RESULTS_NAME:-mpi_partition_accuracy}.png"

@@ -1,7 +1,9 @@
 #include "vtkParticleOrderedCompositePass.h"
 
+#include "vtkActor.h"
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
+#include "vtkCommunicator.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -11,11 +13,13 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOrderedCompositingHelper.h"
+#include "vtkParticleFrontToBackTarget.h"
 #include "vtkParticleGBufferExchange.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkTextureObject.h"
+#include "vtkTransparentSphereMapper.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +29,7 @@ vtkStandardNewMacro(vtkParticleOrderedCompositePass);
 //------------------------------------------------------------------------------
 vtkParticleOrderedCompositePass::vtkParticleOrderedCompositePass()
   : Helper(vtkSmartPointer<vtkOrderedCompositingHelper>::New())
+  , Compositor(vtkSmartPointer<vtkParticleFrontToBackTarget>::New())
 {
 }
 
@@ -103,6 +108,96 @@ std::vector<int> vtkParticleOrderedCompositePass::ComputeOrder(vtkCamera* camera
 }
 
 //------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->LastBlended = false;
+  if (this->DelegatePass == nullptr)
+  {
+    vtkWarningMacro(<< "No delegate pass: nothing is drawn.");
+    return;
+  }
+  const std::vector<int> order = this->ComputeOrder(s->GetRenderer()->GetActiveCamera());
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  const int* size = context ? context->GetActualSize() : nullptr;
+  const int width = size ? size[0] : 0;
+  const int height = size ? size[1] : 0;
+  const bool blend = order.size() >= 2 && context && this->SizesAgree(width, height);
+
+  // 1. the process's own image, its translucent particles' composite deferred to the blend
+  vtkParticleFrontToBackTarget* target = blend ? this->DeferredTarget(s, width, height) : nullptr;
+  if (target)
+  {
+    target->ClearRetainedAccumulation();
+    target->SetDeferComposite(true);
+  }
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  if (target)
+  {
+    target->SetDeferComposite(false);
+  }
+  if (!blend)
+  {
+    return;
+  }
+
+  // 2. every process's image (and deferred accumulation) on the first process in the order,
+  // which blends them front to back; 3. the result there, transparent black elsewhere
+  const int destination = order.front();
+  const bool first = this->Controller->GetLocalProcessId() == destination;
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->ReadImage(width, height);
+  const bool accumulations = this->GatherAccumulations(target, pixels, destination);
+  if (!this->GatherImages(width, height, destination))
+  {
+    if (target && target->GetLastDeferred() && !this->LocalAccumulation.empty())
+    {
+      // (the gather failed: this process's own deferred particles, composited here)
+      this->Compositor->CompositeOver(context, width, height, this->LocalAccumulation.data());
+    }
+    return;
+  }
+  if (first && accumulations)
+  {
+    // the 8-bit image under the translucent particles (the first opaque one, or the
+    // background) and the particles' accumulation in front of it, blended as one process's
+    // End() blends them
+    this->Blended.resize(static_cast<size_t>(pixels) * 4);
+    this->Over.resize(static_cast<size_t>(pixels) * 4);
+    vtkParticleOrderedCompositePass::SplitInOrder(this->Gathered.data(),
+      this->GatheredAccumulations.data(), this->Controller->GetNumberOfProcesses(), pixels, order,
+      this->BackgroundValid ? this->Background : nullptr, this->Blended.data(), this->Over.data());
+    this->WriteImage(s, width, height);
+    this->Compositor->CompositeOver(context, width, height, this->Over.data());
+  }
+  else if (first)
+  {
+    this->Blended.assign(static_cast<size_t>(pixels) * 4, 0);
+    vtkParticleOrderedCompositePass::BlendInOrder(this->Gathered.data(),
+      this->Controller->GetNumberOfProcesses(), pixels, order, this->Blended.data());
+    this->WriteImage(s, width, height);
+  }
+  else
+  {
+    this->ClearImage(s);
+  }
+  this->LastBlended = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::SetBackground(const double rgb[3], bool valid)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    // the 8-bit value a single process clears its framebuffer to
+    const double value = std::round(std::min(1.0, std::max(0.0, rgb[c])) * 255.0);
+    this->Background[c] = static_cast<unsigned char>(std::isfinite(value) ? value : 0.0);
+  }
+  this->BackgroundValid = valid;
+}
+
+//------------------------------------------------------------------------------
 void vtkParticleOrderedCompositePass::BlendInOrder(const unsigned char* images, int processes,
   vtkIdType pixels, const std::vector<int>& order, unsigned char* result)
 {
@@ -136,57 +231,136 @@ void vtkParticleOrderedCompositePass::BlendInOrder(const unsigned char* images, 
 }
 
 //------------------------------------------------------------------------------
-void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
+void vtkParticleOrderedCompositePass::SplitInOrder(const unsigned char* images,
+  const float* accumulations, int processes, vtkIdType pixels, const std::vector<int>& order,
+  const unsigned char* background, unsigned char* under, float* over)
 {
-  this->NumberOfRenderedProps = 0;
-  this->LastBlended = false;
-  if (this->DelegatePass == nullptr)
-  {
-    vtkWarningMacro(<< "No delegate pass: nothing is drawn.");
-    return;
-  }
-  // 1. the process's own image
-  this->DelegatePass->Render(s);
-  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-
-  const std::vector<int> order = this->ComputeOrder(s->GetRenderer()->GetActiveCamera());
-  if (order.size() < 2)
-  {
-    return;
-  }
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  if (context == nullptr)
-  {
-    return;
-  }
-  const int* size = context->GetActualSize();
-  const int width = size[0];
-  const int height = size[1];
-
-  // 2. every process's image on the first process in the order, which blends them front to
-  // back; 3. the result there, transparent black elsewhere
-  const bool first = this->Controller->GetLocalProcessId() == order.front();
-  if (!this->ReadImage(width, height) || !this->GatherImages(width, height, order.front()))
-  {
-    return;
-  }
-  if (first)
-  {
-    const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-    this->Blended.assign(static_cast<size_t>(pixels) * 4, 0);
-    vtkParticleOrderedCompositePass::BlendInOrder(this->Gathered.data(),
-      this->Controller->GetNumberOfProcesses(), pixels, order, this->Blended.data());
-    this->WriteImage(s, width, height);
-  }
-  else
-  {
-    this->ClearImage(s);
-  }
-  this->LastBlended = true;
+  vtkSMPTools::For(0, pixels,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        // front to back, premultiplied: C += (1 - A) c, A += (1 - A) a, until the first
+        // opaque pixel
+        double accumulated[4] = { 0.0, 0.0, 0.0, 0.0 };
+        auto add = [&accumulated](const double pixel[4])
+        {
+          const double remaining = 1.0 - accumulated[3];
+          for (int c = 0; c < 4; ++c)
+          {
+            accumulated[c] += remaining * pixel[c];
+          }
+        };
+        const unsigned char none[4] = { 0, 0, 0, 0 };
+        const unsigned char backdrop[4] = { background ? background[0]
+                                                       : static_cast<unsigned char>(0),
+          background ? background[1] : static_cast<unsigned char>(0),
+          background ? background[2] : static_cast<unsigned char>(0),
+          background ? static_cast<unsigned char>(255) : static_cast<unsigned char>(0) };
+        const unsigned char* opaque = background ? backdrop : none;
+        for (int process : order)
+        {
+          if (process < 0 || process >= processes)
+          {
+            continue;
+          }
+          const vtkIdType offset = (static_cast<vtkIdType>(process) * pixels + i) * 4;
+          double pixel[4];
+          // the process's translucent particles (no NaN and nothing beyond opaque reaches the
+          // picture), then its 8-bit image
+          for (int c = 0; c < 4; ++c)
+          {
+            const double value = accumulations[offset + c];
+            pixel[c] = std::isfinite(value) ? std::min(1.0, std::max(0.0, value)) : 0.0;
+          }
+          add(pixel);
+          const unsigned char* image = images + offset;
+          if (image[3] == 255)
+          {
+            opaque = image;
+            break;
+          }
+          for (int c = 0; c < 4; ++c)
+          {
+            pixel[c] = image[c] / 255.0;
+          }
+          add(pixel);
+        }
+        for (int c = 0; c < 4; ++c)
+        {
+          under[i * 4 + c] = opaque[c];
+          over[i * 4 + c] = static_cast<float>(accumulated[c]);
+        }
+      }
+    });
 }
 
 //------------------------------------------------------------------------------
-bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
+vtkParticleFrontToBackTarget* vtkParticleOrderedCompositePass::DeferredTarget(
+  const vtkRenderState* s, int width, int height)
+{
+  // the accumulation must cover the whole image (IceT's tile: the window)
+  int size[2];
+  int origin[2];
+  s->GetRenderer()->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  if (size[0] != width || size[1] != height || origin[0] != 0 || origin[1] != 0)
+  {
+    return nullptr;
+  }
+  // one translucent particle prop and no other translucent geometry (which the renderer
+  // composites over the particles, after them)
+  vtkParticleFrontToBackTarget* found = nullptr;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!prop || !prop->GetVisibility() ||
+      !(prop->HasTranslucentPolygonalGeometry() || prop->IsA("vtkVolume")))
+    {
+      continue;
+    }
+    auto* actor = vtkActor::SafeDownCast(prop);
+    auto* mapper = actor ? vtkTransparentSphereMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+    if (!mapper || found)
+    {
+      return nullptr;
+    }
+    found = mapper->GetFrontToBackTarget();
+  }
+  return found;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOrderedCompositePass::GatherAccumulations(
+  vtkParticleFrontToBackTarget* target, vtkIdType pixels, int destination)
+{
+  // whether any process deferred its translucent particles (then every one sends its
+  // accumulation, zero where it drew none)
+  this->LocalAccumulation.clear();
+  const bool deferred = target && target->GetLastDeferred() &&
+    target->GetAccumulation(this->LocalAccumulation) &&
+    static_cast<vtkIdType>(this->LocalAccumulation.size()) == 4 * pixels;
+  int local = deferred ? 1 : 0;
+  int any = 0;
+  this->Controller->AllReduce(&local, &any, 1, vtkCommunicator::MAX_OP);
+  if (!any)
+  {
+    this->LocalAccumulation.clear();
+    this->GatheredAccumulations.clear();
+    return false;
+  }
+  if (!deferred)
+  {
+    this->LocalAccumulation.assign(static_cast<size_t>(4 * pixels), 0.0f);
+  }
+  const bool receives = this->Controller->GetLocalProcessId() == destination;
+  this->GatheredAccumulations.resize(
+    receives ? static_cast<size_t>(4 * pixels) * this->Controller->GetNumberOfProcesses() : 0);
+  return this->Controller->Gather(this->LocalAccumulation.data(),
+           receives ? this->GatheredAccumulations.data() : nullptr, 4 * pixels, destination) != 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkParticleOrderedCompositePass::SizesAgree(int width, int height)
 {
   // the processes agree on the size first, or none blends (the gather needs equal lengths)
   const double sizes[2] = { static_cast<double>(width), static_cast<double>(height) };
@@ -197,12 +371,17 @@ bool vtkParticleOrderedCompositePass::ReadImage(int width, int height)
                        "composited by IceT alone.");
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleOrderedCompositePass::ReadImage(int width, int height)
+{
   this->Local.resize(static_cast<size_t>(width) * height * 4);
   // the image IceT would read, from the same framebuffer
   glFinish();
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, this->Local.data());
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -289,6 +468,7 @@ void vtkParticleOrderedCompositePass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);
   }
+  this->Compositor->ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
@@ -298,4 +478,7 @@ void vtkParticleOrderedCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Controller: " << this->Controller.GetPointer() << "\n";
   os << indent << "Boxes: " << this->Helper->GetBoundingBoxes().size() << "\n";
   os << indent << "LastBlended: " << this->LastBlended << "\n";
+  os << indent << "Background: " << static_cast<int>(this->Background[0]) << " "
+     << static_cast<int>(this->Background[1]) << " " << static_cast<int>(this->Background[2])
+     << (this->BackgroundValid ? "" : " (not used)") << "\n";
 }

@@ -19,6 +19,20 @@
  * loss (x + 0 = x and x * 255 / 255 = x), so the picture carries one rounding per process image
  * and one for the blend instead of one truncation per blend.
  *
+ * Translucent particles are composited as one process composites them: when a process draws
+ * one translucent particle prop (vtkTransparentSphereMapper) and no other translucent geometry,
+ * the pass has the mapper's front-to-back target defer its composite
+ * (vtkParticleFrontToBackTarget::SetDeferComposite), so that the process's image holds its
+ * opaque geometry only, and gathers the float accumulation too (16 more bytes per pixel). The
+ * first process takes, per pixel, the accumulations in front of the first opaque pixel
+ * (composited front to back in double) and that 8-bit pixel, or the view's plain background
+ * (SetBackground), and blends the one over the other on the GPU with the target's own blend
+ * (vtkParticleFrontToBackTarget::CompositeOver): the single 8-bit write one process makes, with
+ * the same rounding on any GPU. The picture then equals the single-process one up to float
+ * associativity, where 8-bit images blended per process differed by their rounding, and an
+ * image filter after compositing (ParaView's FXAA, on by default) amplified that rounding into
+ * single pixels far off (measured: Documentation/Using.md, Distributed rendering).
+ *
  * Every process must draw whenever one does (the gather is collective): the view shows its
  * vtkParticleBoundsProp while this pass is on, as for distributed PointAO. Processes whose windows
  * differ in size skip the blend together, with a warning. Without a controller, with one process
@@ -41,6 +55,7 @@ class vtkMatrix4x4;
 class vtkMultiProcessController;
 class vtkOpenGLFramebufferObject;
 class vtkOrderedCompositingHelper;
+class vtkParticleFrontToBackTarget;
 class vtkTextureObject;
 
 class VTKPARTICLERENDERINGPARAVIEW_EXPORT vtkParticleOrderedCompositePass
@@ -91,6 +106,26 @@ public:
     const std::vector<int>& order, unsigned char* result);
 
   /**
+   * Split the gathered images for the one blend of the translucent particles: front to back,
+   * each process's deferred accumulation (`accumulations`, RGBA float premultiplied, `processes`
+   * images of `pixels` each; zero where it drew none) and then its 8-bit image, up to the first
+   * opaque pixel. `under` gets that pixel (or the 8-bit `background`, RGB 0-255, opaque; nullptr:
+   * transparent black), `over` everything in front of it (RGBA float premultiplied). Public for
+   * the tests.
+   */
+  static void SplitInOrder(const unsigned char* images, const float* accumulations, int processes,
+    vtkIdType pixels, const std::vector<int>& order, const unsigned char* background,
+    unsigned char* under, float* over);
+
+  /**
+   * The view's background, composited by the first process when the translucent particles are
+   * blended at float precision (see the class documentation): a plain colour (valid; RGB in
+   * [0, 1]); not valid (the default) for a gradient, textured or transparent background, which
+   * ParaView adds after compositing.
+   */
+  void SetBackground(const double rgb[3], bool valid);
+
+  /**
    * Whether the last render blended the processes' images.
    */
   vtkGetMacro(LastBlended, bool);
@@ -100,10 +135,15 @@ protected:
   ~vtkParticleOrderedCompositePass() override;
 
   // the stages of Render()
-  bool ReadImage(int width, int height);
+  bool SizesAgree(int width, int height);
+  void ReadImage(int width, int height);
   bool GatherImages(int width, int height, int destination);
   void WriteImage(const vtkRenderState* s, int width, int height);
   void ClearImage(const vtkRenderState* s);
+  // the one translucent particle prop whose composite this process defers (nullptr: none)
+  vtkParticleFrontToBackTarget* DeferredTarget(const vtkRenderState* s, int width, int height);
+  // the deferred accumulation of every process on the destination (empty: none deferred)
+  bool GatherAccumulations(vtkParticleFrontToBackTarget* target, vtkIdType pixels, int destination);
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
   vtkSmartPointer<vtkOrderedCompositingHelper> Helper;
@@ -113,6 +153,13 @@ protected:
   std::vector<unsigned char> Local;
   std::vector<unsigned char> Gathered;
   std::vector<unsigned char> Blended;
+  std::vector<float> LocalAccumulation;
+  std::vector<float> GatheredAccumulations;
+  std::vector<float> Over;
+  // blends the translucent particles' accumulation over the first process's image
+  vtkSmartPointer<vtkParticleFrontToBackTarget> Compositor;
+  unsigned char Background[3] = { 0, 0, 0 };
+  bool BackgroundValid = false;
   bool LastBlended = false;
 
 private:

@@ -441,6 +441,11 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
   {
     this->OrderedComposite->SetController(controller);
     this->OrderedComposite->SetBoundingBoxes(delivery->GetCuts());
+    // (before IceT swaps it for a transparent one, which ParaView fills in after compositing)
+    vtkRenderer* renderer = this->GetRenderer();
+    this->OrderedComposite->SetBackground(renderer->GetBackground(),
+      !renderer->GetGradientBackground() && !renderer->GetTexturedBackground() &&
+        renderer->GetBackgroundAlpha() >= 1.0);
     this->OrderWithTransformedPartition(controller->GetNumberOfProcesses());
     if (this->ParticlePassChain->GetNumberOfPasses() == 0 ||
       this->ParticlePassChain->GetPass(0) != this->OrderedComposite.GetPointer())

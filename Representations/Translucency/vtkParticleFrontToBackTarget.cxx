@@ -52,6 +52,8 @@ public:
   int ResolveFormat = 0;
   // downsampled accumulation: the opaque depth at full resolution, reduced into OpaqueDepth
   vtkNew<vtkTextureObject> FullDepth;
+  // CompositeOver: the image to blend, uploaded
+  vtkNew<vtkTextureObject> Upload;
   vtkNew<vtkOpenGLFramebufferObject> ReduceFBO;
   bool ReduceAllocated = false;
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
@@ -159,6 +161,29 @@ public:
       this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
     }
     return quad->Program ? quad.get() : nullptr;
+  }
+
+  // Blend `source` (premultiplied RGBA) over the bound framebuffer within the viewport:
+  // C = C_source + (1 - A_source) C_framebuffer, float until the framebuffer's one write.
+  // Changes the blending and depth state (the callers restore it).
+  void BlendOver(vtkTextureObject* source)
+  {
+    vtkOpenGLQuadHelper* quad = this->Quad(this->BlendQuad, "uniform sampler2D accumulation;\n",
+      "  gl_FragData[0] = texture(accumulation, texCoord);\n");
+    if (!quad)
+    {
+      return;
+    }
+    this->State->vtkglEnable(GL_BLEND);
+    this->State->vtkglBlendEquation(GL_FUNC_ADD);
+    this->State->vtkglBlendFuncSeparate(
+      GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    this->State->vtkglDisable(GL_DEPTH_TEST);
+    this->State->vtkglDepthMask(GL_FALSE);
+    source->Activate();
+    quad->Program->SetUniformi("accumulation", source->GetTextureUnit());
+    quad->Render();
+    source->Deactivate();
   }
 };
 
@@ -466,7 +491,8 @@ void vtkParticleFrontToBackTarget::End()
   }
   internals.Active = false;
   vtkOpenGLState* ostate = internals.State;
-  if (this->KeepAccumulation)
+  this->LastDeferred = this->DeferComposite && this->Downsampling == 1;
+  if (this->KeepAccumulation || this->LastDeferred)
   {
     internals.Retained.resize(4 * static_cast<size_t>(this->Size[0]) * this->Size[1]);
     internals.AccumulationFBO->Bind();
@@ -475,27 +501,65 @@ void vtkParticleFrontToBackTarget::End()
     glReadPixels(0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_FLOAT, internals.Retained.data());
   }
 
-  vtkOpenGLQuadHelper* quad = internals.Quad(internals.BlendQuad,
-    "uniform sampler2D accumulation;\n", "  gl_FragData[0] = texture(accumulation, texCoord);\n");
-  if (quad)
+  if (!this->LastDeferred)
   {
     // over the opaque image: C = C_acc + (1 - A_acc) C_opaque
     ostate->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, internals.OuterFramebuffer);
     const int* vp = internals.OuterViewport;
     ostate->vtkglViewport(vp[0], vp[1], vp[2], vp[3]);
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendEquation(GL_FUNC_ADD);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDepthMask(GL_FALSE);
-    internals.Accumulation->Activate();
-    quad->Program->SetUniformi("accumulation", internals.Accumulation->GetTextureUnit());
-    quad->Render();
-    internals.Accumulation->Deactivate();
+    internals.BlendOver(internals.Accumulation);
   }
   ostate->Pop();
   // the pass's framebuffer is bound again; resynchronise the state's draw-buffer cache with it
   ostate->vtkglDrawBuffers(MaxSavedDrawBuffers, internals.InnerDrawBuffers);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticleFrontToBackTarget::CompositeOver(
+  vtkOpenGLRenderWindow* context, int width, int height, const float* rgba)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.Active || !context || width <= 0 || height <= 0 || !rgba)
+  {
+    return;
+  }
+  if (internals.Context != context)
+  {
+    if (internals.Context)
+    {
+      this->ReleaseGraphicsResources(internals.Context);
+    }
+    internals.Context = context;
+    internals.State = context->GetState();
+  }
+  vtkTextureObject* upload = internals.Upload;
+  if (upload->GetHandle() == 0 || upload->GetWidth() != static_cast<unsigned int>(width) ||
+    upload->GetHeight() != static_cast<unsigned int>(height))
+  {
+    upload->SetContext(context);
+    upload->SetInternalFormat(GL_RGBA32F);
+    upload->SetFormat(GL_RGBA);
+    upload->SetDataType(GL_FLOAT);
+    upload->SetMinificationFilter(vtkTextureObject::Nearest);
+    upload->SetMagnificationFilter(vtkTextureObject::Nearest);
+    upload->Allocate2D(width, height, 4, VTK_FLOAT);
+  }
+  upload->Activate();
+  internals.State->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);
+  upload->Deactivate();
+  vtkOpenGLState* ostate = internals.State;
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMask(ostate);
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglViewport(0, 0, width, height);
+  internals.BlendOver(upload);
 }
 
 //------------------------------------------------------------------------------
@@ -509,6 +573,7 @@ bool vtkParticleFrontToBackTarget::GetAccumulation(std::vector<float>& rgba)
 void vtkParticleFrontToBackTarget::ClearRetainedAccumulation()
 {
   this->Internals->Retained.clear();
+  this->LastDeferred = false;
 }
 
 //------------------------------------------------------------------------------
@@ -538,6 +603,7 @@ void vtkParticleFrontToBackTarget::ReleaseGraphicsResources(vtkWindow* window)
     internals.ReduceQuad.reset();
   }
   internals.FullDepth->ReleaseGraphicsResources(window);
+  internals.Upload->ReleaseGraphicsResources(window);
   internals.ReduceFBO->ReleaseGraphicsResources(window);
   internals.ReduceAllocated = false;
   internals.Accumulation->ReleaseGraphicsResources(window);
@@ -566,4 +632,6 @@ void vtkParticleFrontToBackTarget::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CountMaskedPixels: " << this->CountMaskedPixels << "\n";
   os << indent << "NumberOfMaskedPixels: " << this->NumberOfMaskedPixels << "\n";
   os << indent << "KeepAccumulation: " << this->KeepAccumulation << "\n";
+  os << indent << "DeferComposite: " << this->DeferComposite << "\n";
+  os << indent << "LastDeferred: " << this->LastDeferred << "\n";
 }

@@ -35,6 +35,7 @@
 
 #include <vector> // for std::vector
 
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkTextureObject;
 class vtkWindow;
@@ -118,6 +119,28 @@ public:
   vtkSetMacro(KeepAccumulation, bool);
   vtkGetMacro(KeepAccumulation, bool);
 
+  ///@{
+  /**
+   * DeferComposite: End() of a full-resolution frame leaves the image as it is and keeps the
+   * accumulation (GetAccumulation) for the caller to composite: distributed rendering, whose
+   * ordered compositing (vtkParticleOrderedCompositePass) blends every process's float
+   * accumulation with one rounding, as one process's End() does. A downsampled frame is
+   * composited as usual. GetLastDeferred: whether the last End() deferred (false after
+   * ClearRetainedAccumulation()).
+   */
+  vtkSetMacro(DeferComposite, bool);
+  vtkGetMacro(DeferComposite, bool);
+  vtkGetMacro(LastDeferred, bool);
+  ///@}
+
+  /**
+   * Blend `rgba` (width x height premultiplied RGBA floats, bottom-up) over the bound draw
+   * framebuffer at (0, 0) exactly as End() blends the accumulation over the opaque image (the
+   * same shader and blending: the same rounding on any GPU). For a deferred composite
+   * (DeferComposite) made elsewhere; not between Begin() and End().
+   */
+  void CompositeOver(vtkOpenGLRenderWindow* context, int width, int height, const float* rgba);
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:
@@ -129,6 +152,8 @@ protected:
   bool CountMaskedPixels = false;
   long long NumberOfMaskedPixels = 0;
   bool KeepAccumulation = false;
+  bool DeferComposite = false;
+  bool LastDeferred = false;
 
 private:
   // reduce the full-resolution opaque depth into the accumulation-sized one (Downsampling > 1)

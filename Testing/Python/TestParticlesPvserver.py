@@ -3,7 +3,8 @@ and gets the picture of the built-in (single-process) connection.
 
 The test first renders the LAMMPS film (Testing/Data/lj_film.vtp, split into interleaved pieces,
 see prMPITesting) as translucent Particles (opacity 0.7) with density-volume AO in a Particle
-Render View over the built-in connection. It then starts `mpiexec -np 2 pvserver` on a free
+Render View over the built-in connection (also opaque with PointAO, with S-NDF, and translucent
+with FXAA on; CASES). It then starts `mpiexec -np 2 pvserver` on a free
 port, connects, loads the plugin on both sides, forces rendering on the server (remote render
 threshold 0, so both ranks render and IceT composites) and renders the same scene: the image
 must equal the built-in one within 2/255 (then again with the client rendering: the server
@@ -31,8 +32,10 @@ from prMPITesting import (apply_case, compare_with_single_process,  # noqa: E402
 from paraview import simple  # noqa: E402
 
 # translucent with the summed AO volume, opaque with PointAO and converged S-NDF shading (the
-# ranks' G-buffers are composited inside IceT's draw: every rank must draw)
-CASES = ("ao-translucent", "pointao", "sndf")
+# ranks' G-buffers are composited inside IceT's draw: every rank must draw), and translucent
+# with ParaView's FXAA on (+fxaa: FXAA filters the composited picture, so the ranks' translucent
+# particles must be composited as one process composites them, issue 61)
+CASES = ("ao-translucent", "pointao", "sndf", "translucent-squared+fxaa")
 
 
 def parse_extra():
@@ -83,9 +86,15 @@ def start_server(extra, port):
 def render_case(args, case, name):
     source = make_film_pieces(args)
     view, display = show_film(source, pr)
-    apply_case(view, display, case)
+    base, _, fxaa = case.partition("+")
+    apply_case(view, display, base)
+    if fxaa:
+        # (UseFXAA is linked to the settings: both)
+        simple.GetSettingsProxy("RenderViewSettings").UseFXAA = 1
+        view.UseFXAA = 1
     path = os.path.join(args.temp_dir, "TestParticlesPvserver_%s_%s.png" % (case, name))
     image = pr.capture(view, path)
+    simple.GetSettingsProxy("RenderViewSettings").UseFXAA = 0
     simple.Delete(display)
     simple.Delete(source)
     simple.Delete(view)

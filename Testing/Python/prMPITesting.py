@@ -41,6 +41,16 @@ SNDF_SAMPLES = 64
 OVER_TOLERANCE_SHARE = 1e-4
 
 
+def single_process_criteria(pr, tolerance=2.0):
+    """The distributed criterion against the single-process picture (pr.Criteria): at most
+    OVER_TOLERANCE_SHARE of the pixels over `tolerance` (8-bit steps), none more than one step
+    over it, mean 0.5/255. pr: prParaViewTesting."""
+    # 8-bit images: errors are whole steps; half a step above each bound keeps float rounding
+    # of k/255 away from them ("over 2" means 3 or more)
+    return pr.Criteria(tolerance=tolerance + 0.5, max_share=OVER_TOLERANCE_SHARE, max_mean=0.5,
+                       max_error=tolerance + 1.5)
+
+
 def compare_with_single_process(pr, image, reference_path, temp_dir, name, tolerance=2.0):
     """Compare a distributed rendering with the single-process image at reference_path through
     the suite's comparison (vtkParticleImageComparison.TestImage, which also checks that the
@@ -54,10 +64,7 @@ def compare_with_single_process(pr, image, reference_path, temp_dir, name, toler
     if worst is None:
         print("FAIL: %s: the image cannot be compared with %s" % (name, reference_path))
         return False, 0.0
-    # 8-bit images: errors are whole steps; half a step above each bound keeps float rounding
-    # of k/255 away from them ("over 2" means 3 or more)
-    criteria = pr.Criteria(tolerance=tolerance + 0.5, max_share=OVER_TOLERANCE_SHARE,
-                           max_mean=0.5, max_error=tolerance + 1.5)
+    criteria = single_process_criteria(pr, tolerance)
     counter = criteria.comparison()
     counter.CompareImages(image, reference)
     print("%s: max %.0f/255, mean %.3f/255, %d of %d pixels over %.0f/255"
@@ -129,19 +136,22 @@ self.GetOutputInformation(0).Set(vtkAlgorithm.CAN_HANDLE_PIECE_REQUEST(), 1)
 
 SCENE_CAMERAS = {  # position, focal point: the slab obliquely; the deep block from the front
     "gas": ((80.0, -40.0, 30.0), (16.0, 16.0, 4.0)),
+    "reproducer": ((110.0, -70.0, 60.0), (25.0, 25.0, 22.0)),
     "deep": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
     "ellipsoids": ((12.0, -40.0, 22.0), (12.0, 12.0, 5.0)),
 }
 
 
-def write_scene(name, path):
+def write_scene(name, path, seed=1):
     """Write the seeded scene `name` (points, radius, type, speed) to the .vtp file `path`:
     gas (a dense fcc slab of 8 000 atoms, radius 0.5, in 16 000 atoms of hot gas), deep (6 000
     spheres of radius 0.9-1.5 at mean spacing 0.9), mixed (gas, and also its slab and its gas
     alone in <path>_type1.vtp and <path>_type2.vtp), ellipsoids (3 000 oriented ellipsoids of
     semi-axes 0.25-1.2 in the deep scene's box, point arrays semi_axes and orientation as the
-    LAMMPS Dump Reader writes them). Benchmarks/mpi_partition_accuracy.py and TestParticlesMPI
-    --deep / --ellipsoids."""
+    LAMMPS Dump Reader writes them), reproducer (issue 61's: 100 000 atoms uniformly at random
+    in a 30 x 30 x 40 box from z = -5, radius 0.5, speed uniform in [0.5, 4), type 2 within 6 of
+    (15, 15, 15); numpy's default_rng(seed), default 1). Benchmarks/mpi_partition_accuracy.py,
+    TestParticlesMPI --deep / --ellipsoids, TestTranslucencyMPIExact."""
     import numpy
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
     vtk_python = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
@@ -149,6 +159,18 @@ def write_scene(name, path):
     if vtk_python not in sys.path:
         sys.path.append(vtk_python)
     from prVTKTesting import particles_from
+    if name == "reproducer":
+        rng = numpy.random.default_rng(seed)
+        xyz = rng.random((100000, 3)) * [30.0, 30.0, 40.0] - [0.0, 0.0, 5.0]
+        speed = 0.5 + 3.5 * rng.random(100000)
+        kind = numpy.where(numpy.linalg.norm(xyz - [15.0, 15.0, 15.0], axis=1) < 6.0, 2.0, 1.0)
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(path)
+        writer.SetInputData(particles_from(
+            xyz.astype(numpy.float32), radius=numpy.full(100000, 0.5, numpy.float32),
+            type=kind.astype(numpy.float32), speed=speed.astype(numpy.float32)))
+        writer.Write()
+        return
     rng = numpy.random.default_rng(20261127)
     if name in ("gas", "mixed"):
         a = 1.5874  # fcc at number density 1
