@@ -71,13 +71,18 @@ CASES = ["gas:opaque:Automatic", "gas:opaque-dvao:Automatic", "gas:opaque-vcao:A
          "mixed:two-same:Automatic", "mixed:merged:Automatic",
          "mixed:two-opaque-dvao:Automatic", "mixed:merged-opaque-dvao:Automatic",
          "mixed:two-opaque-vcao:Automatic", "mixed:merged-opaque-vcao:Automatic"]
-# issue 61's reproducer (480 x 360: REPRODUCER_CASES, run by run_mpi_partition_accuracy.sh)
+# issue 61's reproducer and its variants with ParaView's FXAA (--cases reproducer, 480 x 360:
+# Benchmarks/run.py mpi-reproducer): every AO method, and the ellipsoids scene
 REPRODUCER_CASES = ["reproducer:speed-custom-squared:Automatic",
                     "reproducer:speed-custom-squared-fxaa:Automatic",
                     "reproducer:speed-custom-fxaa:Exact Overlap",
                     "reproducer:speed-custom-squared-dvao-fxaa:Automatic",
                     "reproducer:speed-custom-squared-vcao-fxaa:Automatic",
-                    "reproducer:opaque-vcao:Automatic", "reproducer:opaque-vcao-fxaa:Automatic"]
+                    "reproducer:speed-custom-squared-pointao:Automatic",
+                    "reproducer:speed-custom-squared-pointao-fxaa:Automatic",
+                    "reproducer:opaque-vcao:Automatic", "reproducer:opaque-vcao-fxaa:Automatic",
+                    "ellipsoids:speed-squared-fxaa:Automatic",
+                    "ellipsoids:speed-squared-dvao-fxaa:Automatic"]
 
 
 def split_source(path):

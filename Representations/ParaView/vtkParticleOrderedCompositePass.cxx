@@ -125,7 +125,8 @@ void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
   const bool blend = order.size() >= 2 && context && this->SizesAgree(width, height);
 
   // 1. the process's own image, its translucent particles' composite deferred to the blend
-  vtkParticleFrontToBackTarget* target = blend ? this->DeferredTarget(s, width, height) : nullptr;
+  vtkParticleFrontToBackTarget* target =
+    blend && this->DeferTranslucentParticles ? this->DeferredTarget(s, width, height) : nullptr;
   if (target)
   {
     target->ClearRetainedAccumulation();
@@ -478,6 +479,7 @@ void vtkParticleOrderedCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Controller: " << this->Controller.GetPointer() << "\n";
   os << indent << "Boxes: " << this->Helper->GetBoundingBoxes().size() << "\n";
   os << indent << "LastBlended: " << this->LastBlended << "\n";
+  os << indent << "DeferTranslucentParticles: " << this->DeferTranslucentParticles << "\n";
   os << indent << "Background: " << static_cast<int>(this->Background[0]) << " "
      << static_cast<int>(this->Background[1]) << " " << static_cast<int>(this->Background[2])
      << (this->BackgroundValid ? "" : " (not used)") << "\n";

@@ -125,6 +125,17 @@ public:
    */
   void SetBackground(const double rgb[3], bool valid);
 
+  ///@{
+  /**
+   * Whether the translucent particles' composite may be deferred to the blend (see the class
+   * documentation). Default on. Off when a pass between this one and the particles works on the
+   * finished colour image (PointAO darkens it, S-NDF re-shades it): it must see the translucent
+   * particles in it, as in one process.
+   */
+  vtkSetMacro(DeferTranslucentParticles, bool);
+  vtkGetMacro(DeferTranslucentParticles, bool);
+  ///@}
+
   /**
    * Whether the last render blended the processes' images.
    */
@@ -160,6 +171,7 @@ protected:
   vtkSmartPointer<vtkParticleFrontToBackTarget> Compositor;
   unsigned char Background[3] = { 0, 0, 0 };
   bool BackgroundValid = false;
+  bool DeferTranslucentParticles = true;
   bool LastBlended = false;
 
 private:

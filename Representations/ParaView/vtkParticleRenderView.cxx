@@ -446,6 +446,9 @@ void vtkParticleRenderView::UpdateDistributedCompositing(bool interactive)
     this->OrderedComposite->SetBackground(renderer->GetBackground(),
       !renderer->GetGradientBackground() && !renderer->GetTexturedBackground() &&
         renderer->GetBackgroundAlpha() >= 1.0);
+    // PointAO and S-NDF work on the finished colour image, translucent particles included
+    this->OrderedComposite->SetDeferTranslucentParticles(
+      this->AmbientOcclusion != POINT_AO && !this->ScaleConsistentShading);
     this->OrderWithTransformedPartition(controller->GetNumberOfProcesses());
     if (this->ParticlePassChain->GetNumberOfPasses() == 0 ||
       this->ParticlePassChain->GetPass(0) != this->OrderedComposite.GetPointer())
