@@ -127,6 +127,21 @@ void vtkParticleOrderedCompositePass::Render(const vtkRenderState* s)
   // 1. the process's own image, its translucent particles' composite deferred to the blend
   vtkParticleFrontToBackTarget* target =
     blend && this->DeferTranslucentParticles ? this->DeferredTarget(s, width, height) : nullptr;
+  const double gatherBytes = 20.0 * width * height * this->Controller->GetNumberOfProcesses();
+  if (target && gatherBytes > this->MaximumGatherBytes)
+  {
+    if (!this->WarnedGatherBytes)
+    {
+      vtkWarningMacro(<< "The translucent particles of " << this->Controller->GetNumberOfProcesses()
+                      << " processes at " << width << " x " << height << " would gather "
+                      << gatherBytes / 1048576.0 << " MiB on one process (MaximumGatherBytes "
+                      << this->MaximumGatherBytes / 1048576.0
+                      << " MiB): they are blended from 8-bit images, within about 1/255 per "
+                         "process of the single-process picture.");
+      this->WarnedGatherBytes = true;
+    }
+    target = nullptr;
+  }
   if (target)
   {
     target->ClearRetainedAccumulation();
@@ -480,6 +495,7 @@ void vtkParticleOrderedCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Boxes: " << this->Helper->GetBoundingBoxes().size() << "\n";
   os << indent << "LastBlended: " << this->LastBlended << "\n";
   os << indent << "DeferTranslucentParticles: " << this->DeferTranslucentParticles << "\n";
+  os << indent << "MaximumGatherBytes: " << this->MaximumGatherBytes << "\n";
   os << indent << "Background: " << static_cast<int>(this->Background[0]) << " "
      << static_cast<int>(this->Background[1]) << " " << static_cast<int>(this->Background[2])
      << (this->BackgroundValid ? "" : " (not used)") << "\n";

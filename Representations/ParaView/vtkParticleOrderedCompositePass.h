@@ -136,6 +136,17 @@ public:
   vtkGetMacro(DeferTranslucentParticles, bool);
   ///@}
 
+  ///@{
+  /**
+   * The most bytes the first process may gather for the deferred composite (20 per pixel and
+   * process: the 8-bit image and the float accumulation). Above it the processes blend 8-bit
+   * images only (4 bytes per pixel and process), with a warning. Default 1 GiB (e.g. 16
+   * processes at 1920 x 1080 need 663 MB).
+   */
+  vtkSetMacro(MaximumGatherBytes, double);
+  vtkGetMacro(MaximumGatherBytes, double);
+  ///@}
+
   /**
    * Whether the last render blended the processes' images.
    */
@@ -172,6 +183,8 @@ protected:
   unsigned char Background[3] = { 0, 0, 0 };
   bool BackgroundValid = false;
   bool DeferTranslucentParticles = true;
+  double MaximumGatherBytes = 1073741824.0;
+  bool WarnedGatherBytes = false;
   bool LastBlended = false;
 
 private:
