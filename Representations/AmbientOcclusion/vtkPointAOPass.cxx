@@ -764,6 +764,7 @@ void vtkPointAOPass::Composite()
   vtkOpenGLQuadHelper* composite = internals.Quad(internals.CompositeQuad,
     vtkParticleShaders::Get("PointAOBlur") +
       "uniform sampler2D prColour;\nuniform sampler2D prCompositeDepth;\n"
+      "uniform sampler2D prFrontDepth;\nuniform int prDistributed;\n"
       "uniform float prStrength;\nuniform float prBackgroundAlpha;\nuniform int prVerticalBlur;\n"
       "uniform int prStep;\nuniform mat4 prCompositeInverseProjection;\n"
       // half resolution: the 2 x 2 occlusion texels around the pixel, bilinear and weighted by
@@ -794,22 +795,36 @@ void vtkPointAOPass::Composite()
     // the drawn geometry (see the G-buffer's clear)
     "vec4 colour = texture(prColour, texCoord);\n"
     "  float depth = texture(prCompositeDepth, texCoord).r;\n"
+    // the picture's front surface: this process's own, or under MPI the processes' nearest
+    "  float front = texture(prFrontDepth, texCoord).r;\n"
     "  ivec2 pixel = ivec2(texCoord * vec2(textureSize(prCompositeDepth, 0)));\n"
-    "  float occlusion = prStep > 1 ? (depth < 1.0 ? prUpsample(pixel, depth) : 0.0) :\n"
+    "  float occlusion = prStep > 1 ? (front < 1.0 ? prUpsample(pixel, front) : 0.0) :\n"
     "    (prVerticalBlur != 0 ? prBlurOcclusion(pixel).x : texelFetch(prOcclusion, pixel, 0).x);\n"
-    "  float a = depth < 1.0 ? clamp(1.0 - prStrength * occlusion, 0.0, 1.0) : 1.0;\n"
+    "  float a = front < 1.0 ? clamp(1.0 - prStrength * occlusion, 0.0, 1.0) : 1.0;\n"
     "  float coverage = clamp(colour.a, 0.0, 1.0);\n"
-    "  gl_FragData[0] = vec4(colour.rgb * (1.0 - coverage * (1.0 - a)),\n"
-    "    coverage + (1.0 - coverage) * prBackgroundAlpha);\n"
+    // under MPI every process's premultiplied colour, translucent particles in front of another
+    // process's surface too, times the front surface's A: the images composite to one process's
+    // picture times A, as one process darkens its whole colour there
+    "  vec3 shaded = prDistributed != 0 ? colour.rgb * a\n"
+    "    : colour.rgb * (1.0 - coverage * (1.0 - a));\n"
+    "  gl_FragData[0] = vec4(shaded, coverage + (1.0 - coverage) * prBackgroundAlpha);\n"
     "  gl_FragDepth = depth;\n");
   if (composite)
   {
     vtkShaderProgram* program = composite->Program;
+    const bool exchanged = internals.OcclusionDepth && internals.OcclusionDepth != internals.Depth;
     internals.Colour->Activate();
     internals.Depth->Activate();
     internals.Result->Activate();
+    if (exchanged)
+    {
+      internals.OcclusionDepth->Activate();
+    }
     program->SetUniformi("prColour", internals.Colour->GetTextureUnit());
     program->SetUniformi("prCompositeDepth", internals.Depth->GetTextureUnit());
+    program->SetUniformi("prFrontDepth",
+      (exchanged ? internals.OcclusionDepth : internals.Depth.Get())->GetTextureUnit());
+    program->SetUniformi("prDistributed", exchanged ? 1 : 0);
     program->SetUniformi("prOcclusion", internals.Result->GetTextureUnit());
     program->SetUniformi("prVerticalBlur", internals.VerticalBlur ? 1 : 0);
     program->SetUniformi("prStep", internals.Step);
@@ -830,6 +845,10 @@ void vtkPointAOPass::Composite()
     internals.Colour->Deactivate();
     internals.Depth->Deactivate();
     internals.Result->Deactivate();
+    if (exchanged)
+    {
+      internals.OcclusionDepth->Deactivate();
+    }
   }
   else
   {

@@ -244,7 +244,10 @@ public:
    * (IceT in ParaView; the Particle Render View sets it for each distributed render). With more
    * than one, every process's G-buffer depth and normals are composited over all of them before
    * the occlusion (vtkParticleGBufferExchange), so each process sees the occluders the others
-   * draw, and the automatic Radius is the mean over all processes' particles. Collective: every
+   * draw, and the automatic Radius is the mean over all processes' particles; each process
+   * darkens its whole premultiplied colour by the occlusion of that composited front surface
+   * (so translucent particles in front of another process's surface are darkened as one process
+   * darkens them) and writes its own depth. Collective: every
    * process must render the pass each frame. nullptr (default): this process's G-buffer only.
    */
   void SetController(vtkMultiProcessController* controller);
