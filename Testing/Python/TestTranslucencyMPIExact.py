@@ -23,6 +23,10 @@ Cases:
   opaque-vcao      opaque atoms with Voxel Cone Tracing AO, FXAA off: the distributed volume is
                    summed in another order than one process's (1/255 on a few hundred pixels),
                    which FXAA would amplify (Limitations.md)
+  squared-vcao     squared with Voxel Cone Tracing AO, FXAA off (the same)
+  squared-pointao  squared with PointAO, FXAA off: PointAO works on the finished colour image, so
+                   the translucent particles take the 8-bit blend (within 2/255); every process
+                   darkens its whole colour by the composited front surface's occlusion
 With N = 1 the images are written to <temp-dir>/TestTranslucencyMPIExact_<case>_np1.png (the
 reference of the other runs; each drawn twice and identical); with N > 1 each is compared with
 its single-process image. Must-fail (N > 1, every case): the single-process image with one pixel
@@ -55,6 +59,8 @@ CASES = {
     "squared-tiles": (True, 1, "Automatic", "None", 1, (720, 540)),
     "squared-smaller": (True, 1, "Automatic", "None", 1, (320, 240)),
     "opaque-vcao": (False, 1, "Automatic", "Voxel Cone Tracing", 0, VIEW_SIZE),
+    "squared-vcao": (True, 1, "Automatic", "Voxel Cone Tracing", 0, VIEW_SIZE),
+    "squared-pointao": (True, 1, "Automatic", "PointAO", 0, VIEW_SIZE),
 }
 
 
