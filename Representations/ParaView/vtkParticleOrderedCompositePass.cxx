@@ -26,6 +26,19 @@
 
 vtkStandardNewMacro(vtkParticleOrderedCompositePass);
 
+namespace
+{
+// One step of the front-to-back blend of premultiplied RGBA: C += (1 - A) c, A += (1 - A) a.
+void Under(double accumulated[4], const double pixel[4])
+{
+  const double remaining = 1.0 - accumulated[3];
+  for (int c = 0; c < 4; ++c)
+  {
+    accumulated[c] += remaining * pixel[c];
+  }
+}
+}
+
 //------------------------------------------------------------------------------
 vtkParticleOrderedCompositePass::vtkParticleOrderedCompositePass()
   : Helper(vtkSmartPointer<vtkOrderedCompositingHelper>::New())
@@ -222,7 +235,6 @@ void vtkParticleOrderedCompositePass::BlendInOrder(const unsigned char* images, 
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        // front to back, premultiplied: C += (1 - A) c, A += (1 - A) a
         double accumulated[4] = { 0.0, 0.0, 0.0, 0.0 };
         for (int process : order)
         {
@@ -230,12 +242,10 @@ void vtkParticleOrderedCompositePass::BlendInOrder(const unsigned char* images, 
           {
             continue;
           }
-          const unsigned char* pixel = images + (static_cast<vtkIdType>(process) * pixels + i) * 4;
-          const double remaining = 1.0 - accumulated[3];
-          for (int c = 0; c < 4; ++c)
-          {
-            accumulated[c] += remaining * (pixel[c] / 255.0);
-          }
+          const unsigned char* image = images + (static_cast<vtkIdType>(process) * pixels + i) * 4;
+          const double pixel[4] = { image[0] / 255.0, image[1] / 255.0, image[2] / 255.0,
+            image[3] / 255.0 };
+          Under(accumulated, pixel);
         }
         for (int c = 0; c < 4; ++c)
         {
@@ -256,24 +266,15 @@ void vtkParticleOrderedCompositePass::SplitInOrder(const unsigned char* images,
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        // front to back, premultiplied: C += (1 - A) c, A += (1 - A) a, until the first
-        // opaque pixel
+        // front to back until the first opaque pixel (or the background, opaque; or none)
         double accumulated[4] = { 0.0, 0.0, 0.0, 0.0 };
-        auto add = [&accumulated](const double pixel[4])
+        unsigned char backdrop[4] = { 0, 0, 0, 0 };
+        if (background)
         {
-          const double remaining = 1.0 - accumulated[3];
-          for (int c = 0; c < 4; ++c)
-          {
-            accumulated[c] += remaining * pixel[c];
-          }
-        };
-        const unsigned char none[4] = { 0, 0, 0, 0 };
-        const unsigned char backdrop[4] = { background ? background[0]
-                                                       : static_cast<unsigned char>(0),
-          background ? background[1] : static_cast<unsigned char>(0),
-          background ? background[2] : static_cast<unsigned char>(0),
-          background ? static_cast<unsigned char>(255) : static_cast<unsigned char>(0) };
-        const unsigned char* opaque = background ? backdrop : none;
+          std::copy(background, background + 3, backdrop);
+          backdrop[3] = 255;
+        }
+        const unsigned char* opaque = backdrop;
         for (int process : order)
         {
           if (process < 0 || process >= processes)
@@ -289,7 +290,7 @@ void vtkParticleOrderedCompositePass::SplitInOrder(const unsigned char* images,
             const double value = accumulations[offset + c];
             pixel[c] = std::isfinite(value) ? std::min(1.0, std::max(0.0, value)) : 0.0;
           }
-          add(pixel);
+          Under(accumulated, pixel);
           const unsigned char* image = images + offset;
           if (image[3] == 255)
           {
@@ -300,7 +301,7 @@ void vtkParticleOrderedCompositePass::SplitInOrder(const unsigned char* images,
           {
             pixel[c] = image[c] / 255.0;
           }
-          add(pixel);
+          Under(accumulated, pixel);
         }
         for (int c = 0; c < 4; ++c)
         {

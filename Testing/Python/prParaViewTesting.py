@@ -234,16 +234,18 @@ def particle_mapper(view, visible=True):
     raise RuntimeError("no particle mapper in the view")
 
 
-def capture(view, path, repeat=True):
+def capture(view, path, repeat=True, size=None):
     """Render the view, save it to `path` (PNG, the view's size) and return the image read back
     (vtkImageData). With repeat (the default: every image test of the suite) the view is saved
     once more and the two pictures must be identical, bit for bit
     (vtkParticleImageComparison.TestIdentical), with no OpenGL error reported by the context's
     debug output while the second is drawn (vtkParticleGLDebugLog); finish() fails otherwise.
     repeat=False only for a progressive view whose next frame refines the picture (S-NDF while
-    it converges)."""
+    it converges). size: the saved image's size (default the view's; larger ones ParaView draws
+    in tiles)."""
+    size = list(size or view.ViewSize)
     simple.Render(view)
-    simple.SaveScreenshot(path, view, ImageResolution=list(view.ViewSize), TransparentBackground=0)
+    simple.SaveScreenshot(path, view, ImageResolution=size, TransparentBackground=0)
     image = read_png(path)
     if repeat:
         again = os.path.splitext(path)[0] + "_repeat.png"
@@ -251,8 +253,7 @@ def capture(view, path, repeat=True):
         # the second frame under the context's debug output (as TestRepeatable)
         log = particlerendering.vtkParticleGLDebugLog.GetInstance()
         log.StartFrame(view.GetRenderWindow())
-        simple.SaveScreenshot(again, view, ImageResolution=list(view.ViewSize),
-                              TransparentBackground=0)
+        simple.SaveScreenshot(again, view, ImageResolution=size, TransparentBackground=0)
         if not log.EndFrame(name):
             REPEAT_FAILURES.append(name)
         if not particlerendering.vtkParticleImageComparison.TestIdentical(
