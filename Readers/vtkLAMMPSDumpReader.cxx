@@ -1183,7 +1183,7 @@ void vtkLAMMPSDumpReader::AllocateOutputs(vtkRequestState& state)
   vtkPoints* points = state.Points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(n));
-  out.Points = static_cast<double*>(points->GetVoidPointer(0));
+  out.Points = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
   AdviseHugePages(out.Points, sizeof(double) * 3 * static_cast<size_t>(n));
   if (plan.PointFlavour < 0)
   {
@@ -1193,37 +1193,38 @@ void vtkLAMMPSDumpReader::AllocateOutputs(vtkRequestState& state)
   for (size_t a = 0; a < plan.Arrays.size(); ++a)
   {
     const ArrayPlan& ap = plan.Arrays[a];
+    // a numeric array of N tuples, parsed straight into its contiguous storage
+    auto numeric = [&](auto typed)
+    {
+      typed->SetNumberOfComponents(ap.Components);
+      typed->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      void* storage = typed->GetPointer(0);
+      out.Arrays.push_back(storage);
+      AdviseHugePages(storage,
+        static_cast<size_t>(typed->GetDataTypeSize()) * ap.Components * static_cast<size_t>(n));
+      return vtkSmartPointer<vtkAbstractArray>(typed);
+    };
     vtkSmartPointer<vtkAbstractArray> array;
     switch (ap.Type)
     {
       case Kind::Float:
-        array = vtkSmartPointer<vtkFloatArray>::New();
+        array = numeric(vtkSmartPointer<vtkFloatArray>::New());
         break;
       case Kind::Int:
-        array = vtkSmartPointer<vtkIntArray>::New();
+        array = numeric(vtkSmartPointer<vtkIntArray>::New());
         break;
       case Kind::IdType:
-        array = vtkSmartPointer<vtkIdTypeArray>::New();
+        array = numeric(vtkSmartPointer<vtkIdTypeArray>::New());
         break;
       case Kind::String:
       case Kind::Point:
         array = vtkSmartPointer<vtkStringArray>::New();
+        array->SetNumberOfComponents(ap.Components);
+        out.Strings[a].resize(static_cast<size_t>(n));
+        out.Arrays.push_back(&out.Strings[a]);
         break;
     }
     array->SetName(ap.Name.c_str());
-    array->SetNumberOfComponents(ap.Components);
-    if (ap.Type == Kind::String)
-    {
-      out.Strings[a].resize(static_cast<size_t>(n));
-      out.Arrays.push_back(&out.Strings[a]);
-    }
-    else
-    {
-      array->SetNumberOfTuples(static_cast<vtkIdType>(n));
-      out.Arrays.push_back(array->GetVoidPointer(0));
-      AdviseHugePages(array->GetVoidPointer(0),
-        static_cast<size_t>(array->GetDataTypeSize()) * ap.Components * static_cast<size_t>(n));
-    }
     out.Objects.push_back(array);
   }
 }

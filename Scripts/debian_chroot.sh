@@ -95,7 +95,7 @@ bind "$top" "$top"
 # A clean environment: the host's PATH, Python and library variables mean nothing inside.
 env_vars=(HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin
   LANG=C.UTF-8 TERM="${TERM:-dumb}" PR_CHROOT_RELEASE="$release")
-for v in CI BUILD_DIR OUT_DIR MESA_DEBUG PR_XVFB_SCREEN CTEST_PARALLEL_LEVEL; do
+for v in CI BUILD_DIR OUT_DIR MESA_DEBUG PR_XVFB_SCREEN CTEST_PARALLEL_LEVEL PR_CMAKE_ARGS; do
   [ -n "${!v:-}" ] && env_vars+=("$v=${!v}")
 done
 status=0

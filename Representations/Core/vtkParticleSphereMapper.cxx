@@ -4,10 +4,12 @@
 #include "vtkParticleOcclusionCuller.h"
 
 #include "vtkActor.h"
+#include "vtkArrayDispatch.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
@@ -1846,17 +1848,27 @@ vtkDataArray* vtkParticleSphereMapper::StrideForUpload(vtkDataArray* array)
   subset->SetNumberOfComponents(components);
   subset->SetNumberOfTuples(m);
   subset->SetName(array->GetName());
-  const int size = array->GetDataTypeSize() * components;
-  const char* from = static_cast<const char*>(array->GetVoidPointer(0));
-  char* to = static_cast<char*>(subset->GetVoidPointer(0));
-  vtkSMPTools::For(0, m,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
+  // every stride-th tuple, in the arrays' own value type (any memory layout)
+  auto strideCopy = [&](auto* from, auto* to)
+  {
+    const auto in = vtk::DataArrayValueRange(from);
+    auto out = vtk::DataArrayValueRange(to);
+    vtkSMPTools::For(0, m,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        std::copy(from + i * stride * size, from + (i * stride + 1) * size, to + i * size);
-      }
-    });
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          for (int c = 0; c < components; ++c)
+          {
+            out[i * components + c] = in[i * stride * components + c];
+          }
+        }
+      });
+  };
+  if (!vtkArrayDispatch::Dispatch2SameValueType::Execute(array, subset.Get(), strideCopy))
+  {
+    strideCopy(array, subset.Get()); // a value type outside the dispatch list: through double
+  }
   internals.StrideArrays.push_back(subset);
   return subset;
 }

@@ -730,16 +730,16 @@ void vtkMetaballMapper::CacheParticleAttributes(vtkRenderer* ren, vtkActor* act)
   // colours of the drawn particles (RGBA8, r in the low byte), when scalars colour them
   vtkUnsignedCharArray* colors = this->Colors;
   const vtkIdType n = this->GetUploadedRadii() ? this->GetUploadedRadii()->GetNumberOfTuples() : 0;
-  vtkDataArray* strided = nullptr;
+  vtkUnsignedCharArray* strided = nullptr;
   vtkPolyData* input = this->GetInput();
   if (colors && input && colors->GetNumberOfTuples() == input->GetNumberOfPoints() &&
     colors->GetNumberOfComponents() == 4)
   {
-    strided = this->StrideForUpload(colors);
+    strided = vtkUnsignedCharArray::SafeDownCast(this->StrideForUpload(colors));
   }
   if (strided && strided->GetNumberOfTuples() == n)
   {
-    upload(internals.ColorBuffer, strided->GetVoidPointer(0), static_cast<size_t>(n) * 4);
+    upload(internals.ColorBuffer, strided->GetPointer(0), static_cast<size_t>(n) * 4);
   }
   else
   {
