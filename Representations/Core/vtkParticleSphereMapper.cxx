@@ -1844,7 +1844,10 @@ vtkDataArray* vtkParticleSphereMapper::StrideForUpload(vtkDataArray* array)
   const vtkIdType n = array->GetNumberOfTuples();
   const vtkIdType m = (n + stride - 1) / stride;
   const int components = array->GetNumberOfComponents();
-  vtkSmartPointer<vtkDataArray> subset = vtk::TakeSmartPointer(array->NewInstance());
+  // (the same value type in VTK's plain layout: a new instance of an implicit input array would
+  // be implicit too, and not writable)
+  vtkSmartPointer<vtkDataArray> subset =
+    vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(array->GetDataType()));
   subset->SetNumberOfComponents(components);
   subset->SetNumberOfTuples(m);
   subset->SetName(array->GetName());
