@@ -1870,7 +1870,8 @@ vtkDataArray* vtkParticleSphereMapper::StrideForUpload(vtkDataArray* array)
   };
   if (!vtkArrayDispatch::Dispatch2SameValueType::Execute(array, subset.Get(), strideCopy))
   {
-    strideCopy(array, subset.Get()); // a value type outside the dispatch list: through double
+    strideCopy(array, subset.Get()); // an array outside the dispatch list (implicit, or another
+                                     // value type): through double
   }
   internals.StrideArrays.push_back(subset);
   return subset;
